@@ -1,0 +1,41 @@
+#pragma once
+
+#include "callbacks/GlObject.h"
+#include "image/Image.h"
+
+#include <string>
+
+namespace ivshadow {
+
+struct GlFramebufferRelease {
+  void operator()(unsigned int name) const;
+};
+struct GlRenderbufferRelease {
+  void operator()(unsigned int name) const;
+};
+
+// An off-screen render target: RGBA8 colour plus a 24-bit depth / 8-bit stencil buffer.
+class GlFramebufferTarget {
+ public:
+  // Builds the target in the current context; on failure returns an empty target and says
+  // why in `error`.
+  static GlFramebufferTarget create(int width, int height, std::string& error);
+
+  GlFramebufferTarget() = default;
+  explicit operator bool() const { return static_cast<bool>(framebuffer_); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // Binds the target for drawing and reading, sets the viewport and clears it.
+  void bindAndClear(float red, float green, float blue, float alpha);
+  Image read() const;
+
+ private:
+  int width_ = 0;
+  int height_ = 0;
+  GlObject<GlFramebufferRelease> framebuffer_;
+  GlObject<GlRenderbufferRelease> colour_;
+  GlObject<GlRenderbufferRelease> depthStencil_;
+};
+
+}  // namespace ivshadow

@@ -1,0 +1,24 @@
+#pragma once
+
+#include "callbacks/GlObject.h"
+
+namespace ivshadow {
+
+struct GlQueryRelease {
+  void operator()(unsigned int name) const;
+};
+
+// GPU time of the commands between begin() and end(), from a GL_TIME_ELAPSED query.
+// One measurement at a time; elapsedMs() waits for the result.
+class GlTimerQuery {
+ public:
+  GlTimerQuery();
+  void begin();
+  void end();
+  double elapsedMs() const;
+
+ private:
+  GlObject<GlQueryRelease> query_;
+};
+
+}  // namespace ivshadow

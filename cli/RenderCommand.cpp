@@ -1,0 +1,116 @@
+#include "cli/RenderCommand.h"
+
+#include "callbacks/GlCapabilities.h"
+#include "headless/FrameStatistics.h"
+#include "headless/OffscreenRenderer.h"
+#include "image/AtomicFile.h"
+#include "image/ImageSize.h"
+#include "image/PngFile.h"
+#include "nodes/IvShadowInit.h"
+#include "scene/FieldAssignment.h"
+#include "scene/InputError.h"
+#include "scene/SceneLoader.h"
+#include "scene/TransparencyType.h"
+#include "scene/ViewSetup.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <optional>
+
+namespace ivshadow {
+namespace {
+
+nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer& renderer,
+                          const std::vector<double>& wallMs, const std::vector<double>& gpuMs,
+                          const std::string& transparency) {
+  nlohmann::json stats;
+  stats["scene"] = options.scene;
+  stats["width"] = renderer.width();
+  stats["height"] = renderer.height();
+  stats["frames"] = wallMs.size();
+  stats["frame_ms_median"] = FrameStatistics::median(wallMs);
+  stats["frame_ms_min"] = FrameStatistics::minimum(wallMs);
+  stats["gpu_ms_median"] = FrameStatistics::median(gpuMs);
+  stats["gpu_ms_min"] = FrameStatistics::minimum(gpuMs);
+  stats["frame_ms"] = wallMs;
+  stats["gpu_ms"] = gpuMs;
+  stats["transparency"] = transparency;
+  stats["gl_renderer"] = renderer.capabilities().renderer;
+  stats["gl_version"] = renderer.capabilities().version;
+  stats["egl_platform"] = renderer.platform();
+  // One entry per GL pass; the plain Coin traversal is the only pass so far.
+  stats["passes"] = {{"scene_ms", FrameStatistics::median(gpuMs)}};
+  return stats;
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& options) {
+  try {
+    const ImageSize size = ImageSize::parse(options.size, "--size");
+    if (options.frames < 1) {
+      throw InputError("--frames " + std::to_string(options.frames) +
+                       ": error: expected a whole number of at least 1");
+    }
+    std::optional<SoGLRenderAction::TransparencyType> transparency;
+    if (!options.transparency.empty()) {
+      transparency = transparencyTypeFromName(options.transparency);
+    }
+    std::vector<FieldAssignment> assignments;
+    for (const std::string& text : options.assignments) {
+      assignments.push_back(FieldAssignment::parse(text));
+    }
+    AtomicFile::checkWritable(options.output, "the image");
+    if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
+
+    init();
+    LoadedScene scene = loadScene(options.scene);
+    for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
+    for (const FieldAssignment& assignment : assignments) {
+      assignment.apply(scene.root.get(), options.scene);
+    }
+
+    std::string error;
+    std::unique_ptr<OffscreenRenderer> renderer =
+        OffscreenRenderer::create(size.width, size.height, error);
+    if (!renderer) {
+      std::cerr << "ivshadow: error: no GL context for headless rendering: " << error << '\n';
+      return 3;
+    }
+    if (transparency) renderer->action().setTransparencyType(*transparency);
+    const ViewSetup view = ViewSetup::prepare(
+        scene.root.get(), SbViewportRegion(static_cast<short>(size.width),
+                                           static_cast<short>(size.height)));
+
+    std::vector<double> wallMs, gpuMs;
+    for (int frame = 0; frame < options.frames; ++frame) {
+      const OffscreenRenderer::FrameTiming timing = renderer->render(view.root.get());
+      wallMs.push_back(timing.wallMs);
+      gpuMs.push_back(timing.gpuMs);
+    }
+    writePng(options.output, renderer->read());
+    if (!options.statsPath.empty()) {
+      const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
+      writeTextFileAtomically(options.statsPath,
+                              statistics(options, *renderer, wallMs, gpuMs, name).dump(2) + "\n");
+    }
+    std::cout << "wrote " << options.output << " (" << size.toString() << ", " << options.frames
+              << (options.frames == 1 ? " frame, " : " frames, median ")
+              << FrameStatistics::median(wallMs) << " ms on " << renderer->capabilities().renderer
+              << ")\n";
+    return 0;
+  } catch (const InputError& error) {
+    std::cerr << error.what() << '\n';
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "ivshadow: error: " << error.what() << '\n';
+    return 1;
+  }
+}
+
+}  // namespace ivshadow

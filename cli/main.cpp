@@ -1,0 +1,60 @@
+#include "cli/RenderCommand.h"
+#include "nodes/IvShadowInit.h"
+#include "viewer/ViewerApplication.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+namespace {
+
+const char* kExamples = R"(Examples:
+  ivshadow render iv_scenes/glass_over_floor.iv -o glass.png
+  ivshadow render scene.iv -o big.png --size 1920x1080 --frames 20 --stats stats.json
+  ivshadow render scene.iv -o red.png --set Glass.diffuseColor="1 0 0" --set Lamp.intensity=0.5
+  ivshadow render scene.iv -o coin.png --transparency SORTED_LAYERS_BLEND
+  ivshadow view iv_scenes/glass_over_floor.iv
+
+Exit status: 0 success, 2 bad input (file, field, option), 3 no GL context or display,
+1 any other failure. No output file is written unless the command succeeds.)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ivshadow: render Open Inventor scenes with transparent, coloured shadows",
+               "ivshadow"};
+  app.footer(kExamples);
+  app.set_version_flag("--version", std::string("ivshadow ") + ivshadow::version());
+  app.require_subcommand(1);
+
+  ivshadow::RenderOptions render;
+  CLI::App* renderCommand = app.add_subcommand("render", "Render an .iv file to a PNG headlessly");
+  renderCommand->add_option("scene", render.scene, "Open Inventor scene file (.iv)")->required();
+  renderCommand->add_option("-o,--output", render.output, "PNG file to write")->required();
+  renderCommand->add_option("--size", render.size, "Image size WIDTHxHEIGHT")
+      ->capture_default_str();
+  renderCommand->add_option("--frames", render.frames, "Frames to render and time")
+      ->capture_default_str();
+  renderCommand->add_option("--stats", render.statsPath, "Write timing statistics as JSON");
+  renderCommand->add_option("--set", render.assignments,
+                            "Assign NAME.field=VALUE (Inventor syntax) to DEF-named nodes")
+      ->allow_extra_args(false);
+  renderCommand->add_option("--transparency", render.transparency,
+                            "Coin transparency type, e.g. BLEND, SORTED_LAYERS_BLEND");
+
+  ivshadow::ViewerOptions view;
+  CLI::App* viewCommand = app.add_subcommand("view", "Open an .iv file in the viewer");
+  viewCommand->add_option("scene", view.scene, "Open Inventor scene file (.iv)");
+  viewCommand->add_option("--screenshot", view.screenshot,
+                          "Save the first frame to this PNG and quit");
+  viewCommand->add_option("--size", view.size, "Viewer area WIDTHxHEIGHT")->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int status = app.exit(error);
+    return status == 0 ? 0 : 2;
+  }
+  if (renderCommand->parsed()) return ivshadow::runRender(render);
+  return ivshadow::runViewer(view, argv[0]);
+}

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+
+namespace ivshadow {
+
+// Writes go to a temporary file beside `path`; commit() renames it over `path`. A file that
+// is not committed (an error, an exception, Ctrl-C handled by the caller) is removed, so no
+// partial output is ever left under the final name.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  const std::string& temporaryPath() const { return temporary_; }
+  // Throws std::runtime_error when the rename fails.
+  void commit();
+
+  // Throws InputError when `path` cannot be created (missing directory, no permission), so
+  // bad output paths are reported before any work is done.
+  static void checkWritable(const std::string& path, const std::string& what);
+
+ private:
+  std::string path_;
+  std::string temporary_;
+  bool committed_ = false;
+};
+
+// Writes `text` to `path` through an AtomicFile.
+void writeTextFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace ivshadow

@@ -1,0 +1,17 @@
+#pragma once
+
+#include "image/Image.h"
+
+#include <string>
+
+namespace ivshadow {
+
+// Writes an RGBA PNG atomically (no partial file under `path` on failure). Throws
+// std::runtime_error naming the file on failure.
+void writePng(const std::string& path, const Image& image);
+
+// Reads any PNG libpng understands, converted to 8-bit RGBA. Throws InputError naming the file
+// when it is missing or not a PNG.
+Image readPng(const std::string& path);
+
+}  // namespace ivshadow

@@ -1,0 +1,12 @@
+#pragma once
+
+namespace ivshadow {
+
+// Initialises Coin (SoDB::init) if needed and registers every node class of the plugin with
+// Coin's type system. Safe to call more than once; call it after SoQt::init in GUI programs.
+void init();
+
+// The plugin's version, "MAJOR.MINOR.PATCH".
+const char* version();
+
+}  // namespace ivshadow

@@ -1,0 +1,106 @@
+#include "scene/FieldAssignment.h"
+
+#include "scene/CoinMessageCapture.h"
+#include "scene/InputError.h"
+
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/fields/SoField.h>
+#include <Inventor/lists/SoFieldList.h>
+#include <Inventor/lists/SoPathList.h>
+#include <Inventor/nodes/SoNode.h>
+
+#include <set>
+#include <vector>
+
+namespace ivshadow {
+namespace {
+
+std::string joined(const std::set<std::string>& names) {
+  std::string out;
+  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out.empty() ? "(none)" : out;
+}
+
+std::vector<SoNode*> nodesNamed(SoNode* root, const std::string& name) {
+  SoSearchAction search;
+  search.setName(SbName(name.c_str()));
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(TRUE);
+  search.apply(root);
+  std::vector<SoNode*> nodes;
+  const SoPathList& paths = search.getPaths();
+  for (int i = 0; i < paths.getLength(); ++i) nodes.push_back(paths[i]->getTail());
+  return nodes;
+}
+
+std::set<std::string> namesInScene(SoNode* root) {
+  SoSearchAction search;
+  search.setType(SoNode::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(TRUE);
+  search.apply(root);
+  std::set<std::string> names;
+  const SoPathList& paths = search.getPaths();
+  for (int i = 0; i < paths.getLength(); ++i) {
+    const SbName name = paths[i]->getTail()->getName();
+    if (name.getLength() > 0) names.insert(name.getString());
+  }
+  return names;
+}
+
+std::set<std::string> fieldNames(const SoNode* node) {
+  SoFieldList fields;
+  node->getFields(fields);
+  std::set<std::string> names;
+  for (int i = 0; i < fields.getLength(); ++i) {
+    SbName name;
+    node->getFieldName(fields[i], name);
+    names.insert(name.getString());
+  }
+  return names;
+}
+
+}  // namespace
+
+FieldAssignment FieldAssignment::parse(const std::string& text) {
+  const std::size_t equals = text.find('=');
+  const std::size_t dot = text.find('.');
+  if (equals == std::string::npos || dot == std::string::npos || dot > equals || dot == 0 ||
+      dot + 1 == equals) {
+    throw InputError("--set '" + text +
+                     "': error: expected NAME.field=VALUE, e.g. Glass.transparency=0.5");
+  }
+  FieldAssignment assignment;
+  assignment.text = text;
+  assignment.node = text.substr(0, dot);
+  assignment.field = text.substr(dot + 1, equals - dot - 1);
+  assignment.value = text.substr(equals + 1);
+  return assignment;
+}
+
+void FieldAssignment::apply(SoNode* root, const std::string& sceneName) const {
+  const std::string where = "--set '" + text + "': error: ";
+  const std::vector<SoNode*> nodes = nodesNamed(root, node);
+  if (nodes.empty()) {
+    throw InputError(where + "no node named '" + node + "' in " + sceneName +
+                     " (DEF names there: " + joined(namesInScene(root)) + ")");
+  }
+  for (SoNode* target : nodes) {
+    SoField* fieldPtr = target->getField(SbName(field.c_str()));
+    if (fieldPtr == nullptr) {
+      throw InputError(where + "node '" + node + "' (" + target->getTypeId().getName().getString() +
+                       ") has no field '" + field + "' (its fields: " +
+                       joined(fieldNames(target)) + ")");
+    }
+    CoinMessageCapture capture;
+    if (!fieldPtr->set(value.c_str())) {
+      const std::string detail = capture.firstError().text;
+      throw InputError(where + "cannot parse '" + value + "' as " +
+                       fieldPtr->getTypeId().getName().getString() + " for " + node + "." +
+                       field + (detail.empty() ? "" : " (" + detail + ")"));
+    }
+  }
+}
+
+}  // namespace ivshadow

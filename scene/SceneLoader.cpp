@@ -1,0 +1,64 @@
+#include "scene/SceneLoader.h"
+
+#include "scene/CoinMessageCapture.h"
+#include "scene/InputError.h"
+
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace ivshadow {
+
+std::string locationPrefix(const std::string& file, int line) {
+  return line > 0 ? file + ":" + std::to_string(line) + ": " : file + ": ";
+}
+
+LoadedScene loadScene(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) {
+    throw InputError(path + ": error: no such file (expected an Open Inventor .iv file)");
+  }
+  if (fs::is_directory(status)) {
+    throw InputError(path + ": error: is a directory (expected an Open Inventor .iv file)");
+  }
+  if (::access(path.c_str(), R_OK) != 0) {
+    throw InputError(path + ": error: cannot read: " + std::strerror(errno));
+  }
+
+  CoinMessageCapture capture;
+  SoInput input;
+  if (!input.openFile(path.c_str(), TRUE)) {
+    throw InputError(path + ": error: cannot open: " + capture.firstError().text);
+  }
+  if (!input.isValidFile()) {
+    throw InputError(path +
+                     ": error: not an Open Inventor or VRML file (expected a header such as "
+                     "'#Inventor V2.1 ascii' on line 1)");
+  }
+  SoSeparator* root = SoDB::readAll(&input);
+  LoadedScene scene;
+  scene.root = CoinRef<SoSeparator>(root);
+  const CoinMessageCapture::Message error = capture.firstError();
+  if (root == nullptr || !error.text.empty()) {
+    const std::string text = error.text.empty() ? "could not be read" : error.text;
+    throw InputError(locationPrefix(path, error.line) + "error: " + text);
+  }
+  if (root->getNumChildren() == 0) {
+    throw InputError(path + ": error: the file holds no nodes (expected at least one node "
+                            "after the header)");
+  }
+  for (const CoinMessageCapture::Message& message : capture.messages()) {
+    scene.warnings.push_back(locationPrefix(path, message.line) + "warning: " + message.text);
+  }
+  return scene;
+}
+
+}  // namespace ivshadow

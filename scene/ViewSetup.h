@@ -1,0 +1,23 @@
+#pragma once
+
+#include "scene/CoinRef.h"
+
+class SbViewportRegion;
+class SoNode;
+class SoSeparator;
+
+namespace ivshadow {
+
+// A scene made ready to render the way Coin's viewers show it: when the scene has no active
+// camera, a perspective camera is added and viewAll() fits it to the scene; when it has no
+// active light, a headlight (a directional light fixed to the camera, as SoQt viewers add)
+// is put first in the graph.
+struct ViewSetup {
+  CoinRef<SoSeparator> root;
+  bool addedCamera = false;
+  bool addedHeadlight = false;
+
+  static ViewSetup prepare(SoNode* scene, const SbViewportRegion& viewport);
+};
+
+}  // namespace ivshadow

@@ -1,0 +1,169 @@
+#include "image/PngFile.h"
+#include "tests/gl/LitPlane.h"
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace ivshadow {
+namespace {
+
+using test::run;
+
+std::string scene(const std::string& name) { return test::scenesDir() + "/" + name; }
+
+TEST(RenderCommand, SetAssignsMaterialAndLightFieldsAsTheAnalyticPictureExpects) {
+  const std::string out = test::outputDir() + "/set.png";
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", out, "--size", "240x240",
+           "--set", "FloorMaterial.diffuseColor=1 0 0.5", "--set", "Lamp.location=0.5 -0.25 1",
+           "--set", "Lamp.intensity=0.8"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("wrote " + out), std::string::npos) << result.out;
+  test::LitPlane expected;
+  expected.lightX = 0.5;
+  expected.lightY = -0.25;
+  expected.intensity = 0.8;
+  expected.diffuse = {1.0, 0.0, 0.5};
+  const std::string failure =
+      test::compareWithExpectation(readPng(out), expected, test::kLitPlaneTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST(RenderCommand, StatsJsonHasTheDocumentedKeys) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", scene("coloured_glasses.iv"), "-o", dir + "/g.png",
+           "--size", "160x120", "--frames", "3", "--stats", dir + "/stats.json", "--transparency",
+           "SORTED_LAYERS_BLEND"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  std::ifstream in(dir + "/stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  EXPECT_EQ(stats.at("frames"), 3);
+  EXPECT_EQ(stats.at("width"), 160);
+  EXPECT_EQ(stats.at("height"), 120);
+  EXPECT_EQ(stats.at("frame_ms").size(), 3u);
+  EXPECT_GT(stats.at("frame_ms_min").get<double>(), 0.0);
+  EXPECT_LE(stats.at("frame_ms_min").get<double>(), stats.at("frame_ms_median").get<double>());
+  EXPECT_GE(stats.at("gpu_ms_median").get<double>(), 0.0);
+  EXPECT_TRUE(stats.at("passes").is_object());
+  EXPECT_TRUE(stats.at("passes").contains("scene_ms"));
+  EXPECT_EQ(stats.at("transparency"), "SORTED_LAYERS_BLEND");
+}
+
+// no_camera.iv has neither camera nor light. The added perspective camera looks down -z, so
+// the cube's front face (normal +z) faces it squarely and the headlight, direction (1,-1,-10)
+// in eye space as in SoQt's viewers, lights it with cos = 10 / sqrt(102). Each channel is then
+// diffuse * cos + 0.2 (Coin's default ambient intensity) * 0.2 (default material ambient),
+// uniform over the face, which is the picture's most common non-black colour.
+TEST(RenderCommand, SceneWithoutCameraOrLightGetsViewAllCameraAndHeadlight) {
+  const std::string out = test::outputDir() + "/nc.png";
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", scene("no_camera.iv"), "-o", out, "--size", "400x300"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const Image image = readPng(out);
+  std::map<std::array<int, 3>, int> counts;
+  bool touchesLeft = false, touchesRight = false;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[0] + p[1] + p[2] == 0) continue;
+      ++counts[{p[0], p[1], p[2]}];
+      touchesLeft |= x < image.width() / 4;
+      touchesRight |= x >= 3 * image.width() / 4;
+    }
+  }
+  ASSERT_FALSE(counts.empty()) << "blank picture";
+  const auto mode = std::max_element(counts.begin(), counts.end(), [](auto& a, auto& b) {
+                      return a.second < b.second;
+                    })->first;
+  const double cosine = 10.0 / std::sqrt(102.0);
+  const double diffuse[3] = {0.2, 0.5, 0.9};
+  for (int c = 0; c < 3; ++c) {
+    // One 8-bit step: rounding plus single-precision lighting.
+    EXPECT_NEAR(mode[c], 255.0 * (diffuse[c] * cosine + 0.04), 1.0) << "channel " << c;
+  }
+  // viewAll frames both objects: something is drawn in the left and in the right quarter.
+  EXPECT_TRUE(touchesLeft && touchesRight);
+}
+
+TEST(RenderCommand, EveryMalformedSceneExitsTwoWithOneLineAndNoOutput) {
+  const std::string dir = test::outputDir();
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(scene("malformed"))) {
+    ++files;
+    const std::string out = dir + "/" + entry.path().stem().string() + ".png";
+    const test::ProcessResult result =
+        run({test::ivshadowExe(), "render", entry.path().string(), "-o", out});
+    EXPECT_EQ(result.exitCode, 2) << entry.path() << "\n" << result.err;
+    const auto errorLines = test::lines(result.err);
+    ASSERT_EQ(errorLines.size(), 1u) << entry.path() << "\n" << result.err;
+    EXPECT_EQ(errorLines[0].rfind(entry.path().string() + ":", 0), 0u) << errorLines[0];
+    EXPECT_FALSE(test::fileExists(out)) << out;
+  }
+  EXPECT_GE(files, 6);
+}
+
+struct BadArguments {
+  std::vector<std::string> arguments;  // after "render"
+  std::string expected;                // part of the one error line
+};
+
+TEST(RenderCommand, BadArgumentsExitTwoWithOneLineAndNoOutput) {
+  const std::string dir = test::outputDir();
+  const std::string out = dir + "/out.png";
+  const std::string lit = scene("lit_plane.iv");
+  const std::vector<BadArguments> cases = {
+      {{"/nonexistent/scene.iv", "-o", out}, "/nonexistent/scene.iv: error: no such file"},
+      {{scene("malformed"), "-o", out}, "is a directory"},
+      {{lit, "-o", out, "--size", "800"}, "--size '800': error: expected WIDTHxHEIGHT"},
+      {{lit, "-o", out, "--size", "0x600"}, "--size '0x600'"},
+      {{lit, "-o", out, "--frames", "0"}, "--frames 0: error"},
+      {{lit, "-o", out, "--set", "Nobody.intensity=1"}, "no node named 'Nobody'"},
+      {{lit, "-o", out, "--set", "Lamp.brightness=1"}, "has no field 'brightness'"},
+      {{lit, "-o", out, "--set", "Lamp.location=up"}, "cannot parse 'up' as SFVec3f"},
+      {{lit, "-o", out, "--set", "Lamp"}, "expected NAME.field=VALUE"},
+      {{lit, "-o", out, "--transparency", "GLASS"}, "--transparency 'GLASS'"},
+      {{lit, "-o", dir + "/missing/out.png"}, "does not exist"},
+      {{lit, "-o", out, "--stats", dir + "/missing/s.json"}, "does not exist"},
+  };
+  for (const BadArguments& c : cases) {
+    std::vector<std::string> arguments = {test::ivshadowExe(), "render"};
+    arguments.insert(arguments.end(), c.arguments.begin(), c.arguments.end());
+    const test::ProcessResult result = run(arguments);
+    EXPECT_EQ(result.exitCode, 2) << c.expected << "\n" << result.err;
+    const auto errorLines = test::lines(result.err);
+    ASSERT_EQ(errorLines.size(), 1u) << result.err;
+    EXPECT_NE(errorLines[0].find(c.expected), std::string::npos) << errorLines[0];
+    EXPECT_FALSE(test::fileExists(out));
+  }
+}
+
+TEST(RenderCommand, NoGlContextSaysWhichEglStepFailedAndExitsThree) {
+  const std::string out = test::outputDir() + "/out.png";
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", out},
+          {"IVSHADOW_EGL_PLATFORM=nowhere"});
+  EXPECT_EQ(result.exitCode, 3) << result.err;
+  EXPECT_NE(result.err.find("IVSHADOW_EGL_PLATFORM=nowhere is not available"), std::string::npos)
+      << result.err;
+  EXPECT_FALSE(test::fileExists(out));
+}
+
+TEST(RenderCommand, VersionAndHelp) {
+  const test::ProcessResult version = run({test::ivshadowExe(), "--version"});
+  EXPECT_EQ(version.exitCode, 0);
+  EXPECT_EQ(version.out.rfind("ivshadow ", 0), 0u) << version.out;
+  const test::ProcessResult help = run({test::ivshadowExe(), "--help"});
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("Examples:"), std::string::npos);
+  EXPECT_NE(help.out.find("render"), std::string::npos);
+  EXPECT_NE(help.out.find("view"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ivshadow

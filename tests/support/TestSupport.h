@@ -1,0 +1,48 @@
+#pragma once
+
+#include "image/Image.h"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace ivshadow::test {
+
+// Paths fixed at build time by tests/CMakeLists.txt.
+std::string scenesDir();
+std::string ivshadowExe();
+std::string viewerExe();
+// A fresh, empty directory for the current test's files:
+// <build>/test-output/<suite>.<test>/.
+std::string outputDir();
+
+struct ProcessResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+// Runs `arguments` (no shell) and captures its exit status, stdout and stderr.
+ProcessResult run(const std::vector<std::string>& arguments,
+                  const std::vector<std::string>& environment = {});
+
+bool fileExists(const std::string& path);
+
+// Non-empty lines of `text`.
+std::vector<std::string> lines(const std::string& text);
+
+// Expected linear RGB in 0..255 for a pixel, or nothing for a pixel that is not checked.
+struct Expectation {
+  bool checked = false;
+  std::array<double, 3> rgb{};
+};
+using ExpectedImage = std::function<Expectation(int x, int y)>;
+
+// Compares every checked pixel with its expectation; a pixel fails when any channel differs
+// by more than `tolerance`. On failure writes actual.png, expected.png and diff.png (failing
+// pixels red, passing ones dimmed grey) to outputDir() and returns a message naming them and
+// the worst pixel; returns an empty string when every pixel passes.
+std::string compareWithExpectation(const Image& actual, const ExpectedImage& expected,
+                                   double tolerance);
+
+}  // namespace ivshadow::test

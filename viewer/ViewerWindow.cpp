@@ -1,0 +1,155 @@
+#include "viewer/ViewerWindow.h"
+
+#include "image/AtomicFile.h"
+#include "image/PngFile.h"
+#include "scene/InputError.h"
+#include "scene/SceneLoader.h"
+#include "viewer/TimedExaminerViewer.h"
+
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTimer>
+
+#include <iostream>
+
+namespace ivshadow {
+
+ViewerWindow::ViewerWindow() {
+  setWindowTitle("ivshadow viewer");
+  frameLabel_ = new QLabel(this);
+  statusBar()->addPermanentWidget(frameLabel_);
+  // Editors save by writing several times or by replacing the file; a short delay lets the
+  // file settle before it is read again.
+  connect(&watcher_, &QFileSystemWatcher::fileChanged, this,
+          [this] { QTimer::singleShot(250, this, [this] { reload(); }); });
+  buildMenus();
+}
+
+ViewerWindow::~ViewerWindow() { delete viewer_; }
+
+void ViewerWindow::createViewer() {
+  auto* area = new QWidget(this);
+  setCentralWidget(area);
+  viewer_ = new TimedExaminerViewer(area);
+  viewer_->onFrameTimed([this](double ms) {
+    frameLabel_->setText(QString("frame %1 ms").arg(ms, 0, 'f', 1));
+  });
+}
+
+void ViewerWindow::buildMenus() {
+  QMenu* file = menuBar()->addMenu("&File");
+  file->addAction("&Open...", this, [this] { chooseAndOpen(); }, QKeySequence::Open);
+  file->addAction("&Reload", this, [this] { reload(); }, QKeySequence(Qt::Key_F5));
+  file->addAction("Save &Screenshot...", this, [this] { chooseAndSaveScreenshot(); },
+                  QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+  file->addSeparator();
+  file->addAction("&Quit", this, [this] { close(); }, QKeySequence::Quit);
+}
+
+void ViewerWindow::setViewerSize(int width, int height) {
+  if (interactive_) {
+    // The examiner's thumbwheels and buttons come on top of the 3D area; the window stays
+    // resizable.
+    viewer_->setSize(SbVec2s(static_cast<short>(width), static_cast<short>(height)));
+    centralWidget()->resize(width, height);
+    resize(sizeHint().expandedTo(QSize(width, height)));
+  } else {
+    // Screenshots are exactly width x height: no decorations, fixed 3D area.
+    viewer_->setDecoration(FALSE);
+    centralWidget()->setFixedSize(width, height);
+    viewer_->setSize(SbVec2s(static_cast<short>(width), static_cast<short>(height)));
+    adjustSize();
+  }
+}
+
+std::string ViewerWindow::openScene(const QString& path) {
+  try {
+    LoadedScene loaded = loadScene(path.toStdString());
+    const bool sameFile = path_ == path;
+    // On reload of a scene without its own camera, keep where the user was looking.
+    CoinRef<SoCamera> previousCamera;
+    if (sameFile && viewer_->getCamera()) {
+      previousCamera = CoinRef<SoCamera>(static_cast<SoCamera*>(viewer_->getCamera()->copy()));
+    }
+    viewer_->setSceneGraph(loaded.root.get());
+    SoCamera* camera = viewer_->getCamera();
+    if (previousCamera && camera && camera->getTypeId() == previousCamera->getTypeId()) {
+      camera->copyFieldValues(previousCamera.get());
+    }
+    scene_ = loaded.root;
+    if (!path_.isEmpty()) watcher_.removePath(path_);
+    path_ = path;
+    watcher_.addPath(path_);
+    setWindowTitle(QFileInfo(path_).fileName() + " - ivshadow viewer");
+    showMessage(loaded.warnings.empty() ? "Loaded " + path_
+                                        : QString::fromStdString(loaded.warnings.front()));
+    return {};
+  } catch (const InputError& error) {
+    reportError(error.what());
+    return error.what();
+  }
+}
+
+void ViewerWindow::reload() {
+  if (path_.isEmpty()) return;
+  // Files replaced by rename drop out of the watch list; openScene adds them back.
+  if (!QFileInfo::exists(path_)) return;
+  openScene(path_);
+}
+
+void ViewerWindow::saveScreenshot(const QString& path,
+                                  std::function<void(const std::string&)> done) {
+  try {
+    AtomicFile::checkWritable(path.toStdString(), "the screenshot");
+  } catch (const InputError& error) {
+    done(error.what());
+    return;
+  }
+  viewer_->captureNextFrame([path, done](const Image& image) {
+    try {
+      writePng(path.toStdString(), image);
+      done({});
+    } catch (const std::exception& error) {
+      done(error.what());
+    }
+  });
+}
+
+void ViewerWindow::chooseAndOpen() {
+  const QString path = QFileDialog::getOpenFileName(this, "Open scene", QFileInfo(path_).path(),
+                                                    "Open Inventor (*.iv *.wrl);;All files (*)");
+  if (!path.isEmpty()) openScene(path);
+}
+
+void ViewerWindow::chooseAndSaveScreenshot() {
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Save screenshot", "screenshot.png", "PNG (*.png)");
+  if (path.isEmpty()) return;
+  saveScreenshot(path, [this, path](const std::string& error) {
+    if (error.empty()) {
+      showMessage("Saved " + path);
+    } else {
+      reportError(error);
+    }
+  });
+}
+
+void ViewerWindow::showMessage(const QString& text) { statusBar()->showMessage(text, 10000); }
+
+void ViewerWindow::reportError(const std::string& message) {
+  showMessage(QString::fromStdString(message));
+  if (interactive_) {
+    QMessageBox::warning(this, "ivshadow viewer", QString::fromStdString(message));
+  } else {
+    std::cerr << message << '\n';
+  }
+}
+
+}  // namespace ivshadow
