@@ -29,8 +29,8 @@ void renderScene(benchmark::State& state, const std::string& sceneName,
     return;
   }
   renderer->action().setTransparencyType(transparency);
-  ivshadow::LoadedScene scene = ivshadow::loadScene(std::string(IVSHADOW_SCENES_DIR) + "/" +
-                                                    sceneName);
+  ivshadow::LoadedScene scene =
+      ivshadow::loadScene(std::string(IVSHADOW_SCENES_DIR) + "/" + sceneName);
   const ivshadow::ViewSetup view = ivshadow::ViewSetup::prepare(
       scene.root.get(), SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
   renderer->render(view.root.get());  // first frame builds Coin's caches

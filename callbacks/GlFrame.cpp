@@ -21,6 +21,8 @@ Image captureReadFramebuffer(int width, int height) {
   return image;
 }
 
-void waitForGpu() { glFinish(); }
+void waitForGpu() {
+  glFinish();
+}
 
 }  // namespace ivshadow

@@ -18,7 +18,9 @@ GLuint makeRenderbuffer(GLenum format, int width, int height) {
 
 }  // namespace
 
-void GlFramebufferRelease::operator()(unsigned int name) const { glDeleteFramebuffers(1, &name); }
+void GlFramebufferRelease::operator()(unsigned int name) const {
+  glDeleteFramebuffers(1, &name);
+}
 void GlRenderbufferRelease::operator()(unsigned int name) const {
   glDeleteRenderbuffers(1, &name);
 }
@@ -64,6 +66,10 @@ void GlFramebufferTarget::bindAndClear(float red, float green, float blue, float
   glClearDepth(1.0);
   glClearStencil(0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  // Coin assumes its caller enabled depth testing (SoGLDepthBufferElement only records it;
+  // SoOffscreenRenderer and the SoQt widgets enable it before rendering). Without it, back
+  // faces drawn later overwrite front faces.
+  glEnable(GL_DEPTH_TEST);
 }
 
 Image GlFramebufferTarget::read() const {

@@ -26,7 +26,8 @@ class GlFramebufferTarget {
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // Binds the target for drawing and reading, sets the viewport and clears it.
+  // Binds the target for drawing and reading, sets the viewport, clears it and enables depth
+  // testing, as Coin expects of whoever applies a SoGLRenderAction.
   void bindAndClear(float red, float green, float blue, float alpha);
   Image read() const;
 

@@ -4,7 +4,9 @@
 
 namespace ivshadow {
 
-void GlQueryRelease::operator()(unsigned int name) const { glDeleteQueries(1, &name); }
+void GlQueryRelease::operator()(unsigned int name) const {
+  glDeleteQueries(1, &name);
+}
 
 GlTimerQuery::GlTimerQuery() {
   GLuint name = 0;
@@ -12,9 +14,13 @@ GlTimerQuery::GlTimerQuery() {
   query_ = GlObject<GlQueryRelease>(name);
 }
 
-void GlTimerQuery::begin() { glBeginQuery(GL_TIME_ELAPSED, query_.get()); }
+void GlTimerQuery::begin() {
+  glBeginQuery(GL_TIME_ELAPSED, query_.get());
+}
 
-void GlTimerQuery::end() { glEndQuery(GL_TIME_ELAPSED); }
+void GlTimerQuery::end() {
+  glEndQuery(GL_TIME_ELAPSED);
+}
 
 double GlTimerQuery::elapsedMs() const {
   GLuint64 nanoseconds = 0;

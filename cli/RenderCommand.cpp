@@ -84,8 +84,8 @@ int runRender(const RenderOptions& options) {
     }
     if (transparency) renderer->action().setTransparencyType(*transparency);
     const ViewSetup view = ViewSetup::prepare(
-        scene.root.get(), SbViewportRegion(static_cast<short>(size.width),
-                                           static_cast<short>(size.height)));
+        scene.root.get(),
+        SbViewportRegion(static_cast<short>(size.width), static_cast<short>(size.height)));
 
     std::vector<double> wallMs, gpuMs;
     for (int frame = 0; frame < options.frames; ++frame) {

@@ -36,8 +36,9 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--frames", render.frames, "Frames to render and time")
       ->capture_default_str();
   renderCommand->add_option("--stats", render.statsPath, "Write timing statistics as JSON");
-  renderCommand->add_option("--set", render.assignments,
-                            "Assign NAME.field=VALUE (Inventor syntax) to DEF-named nodes")
+  renderCommand
+      ->add_option("--set", render.assignments,
+                   "Assign NAME.field=VALUE (Inventor syntax) to DEF-named nodes")
       ->allow_extra_args(false);
   renderCommand->add_option("--transparency", render.transparency,
                             "Coin transparency type, e.g. BLEND, SORTED_LAYERS_BLEND");

@@ -17,6 +17,29 @@
 
 #include <iostream>
 
+namespace {
+
+// A square slab `size` wide and `thickness` high centred at `centre`, in its own separator.
+void addSlab(SoSeparator* scene, const SbVec3f& centre, float size, float thickness,
+             const SbColor& colour, float transparency) {
+  auto* slab = new SoSeparator;
+  auto* place = new SoTranslation;
+  place->translation.setValue(centre);
+  auto* material = new SoMaterial;
+  material->diffuseColor.setValue(colour);
+  material->transparency = transparency;
+  auto* box = new SoCube;
+  box->width = size;
+  box->height = thickness;
+  box->depth = size;
+  slab->addChild(place);
+  slab->addChild(material);
+  slab->addChild(box);
+  scene->addChild(slab);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::cerr << "usage: render_scene_graph OUT.png\n";
@@ -38,27 +61,8 @@ int main(int argc, char** argv) {
   light->location.setValue(0.0f, 3.0f, 0.0f);
   scene->addChild(light);
 
-  auto* floorMaterial = new SoMaterial;
-  floorMaterial->diffuseColor.setValue(1.0f, 1.0f, 1.0f);
-  auto* floor = new SoCube;
-  floor->width = 6.0f;
-  floor->height = 0.1f;
-  floor->depth = 6.0f;
-  scene->addChild(floorMaterial);
-  scene->addChild(floor);
-
-  auto* lift = new SoTranslation;
-  lift->translation.setValue(0.0f, 1.0f, 0.0f);
-  auto* glass = new SoMaterial;
-  glass->diffuseColor.setValue(1.0f, 0.0f, 0.0f);
-  glass->transparency = 0.5f;
-  auto* pane = new SoCube;
-  pane->width = 1.5f;
-  pane->height = 0.05f;
-  pane->depth = 1.5f;
-  scene->addChild(lift);
-  scene->addChild(glass);
-  scene->addChild(pane);
+  addSlab(scene, SbVec3f(0.0f, 0.0f, 0.0f), 6.0f, 0.1f, SbColor(1.0f, 1.0f, 1.0f), 0.0f);
+  addSlab(scene, SbVec3f(0.0f, 1.0f, 0.0f), 1.5f, 0.05f, SbColor(1.0f, 0.0f, 0.0f), 0.5f);
 
   std::string error;
   auto renderer = ivshadow::OffscreenRenderer::create(640, 480, error);
@@ -68,8 +72,7 @@ int main(int argc, char** argv) {
     return 3;
   }
   // ViewSetup adds a camera or headlight only where a scene lacks them; this one has both.
-  const ivshadow::ViewSetup view =
-      ivshadow::ViewSetup::prepare(scene, SbViewportRegion(640, 480));
+  const ivshadow::ViewSetup view = ivshadow::ViewSetup::prepare(scene, SbViewportRegion(640, 480));
   renderer->render(view.root.get());
   ivshadow::writePng(argv[1], renderer->read());
   scene->unref();

@@ -34,16 +34,16 @@ std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(int width, int heig
   if (!impl->context) return nullptr;
   impl->capabilities = GlCapabilities::queryCurrent();
   if (!impl->capabilities.framebufferObjects) {
-    error = "the GL context (" + impl->capabilities.version + ", " +
-            impl->capabilities.renderer + ") has no framebuffer objects";
+    error = "the GL context (" + impl->capabilities.version + ", " + impl->capabilities.renderer +
+            ") has no framebuffer objects";
     return nullptr;
   }
   impl->target = GlFramebufferTarget::create(width, height, error);
   if (!impl->target) return nullptr;
   if (impl->capabilities.timerQueries) impl->timer.emplace();
   impl->cacheContext = SoGLCacheContextElement::getUniqueCacheContext();
-  impl->action = std::make_unique<SoGLRenderAction>(SbViewportRegion(
-      static_cast<short>(width), static_cast<short>(height)));
+  impl->action = std::make_unique<SoGLRenderAction>(
+      SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
   impl->action->setCacheContext(impl->cacheContext);
   return std::unique_ptr<OffscreenRenderer>(new OffscreenRenderer(std::move(impl)));
 }
@@ -82,10 +82,20 @@ Image OffscreenRenderer::read() const {
   return impl_->target.read();
 }
 
-SoGLRenderAction& OffscreenRenderer::action() { return *impl_->action; }
-const GlCapabilities& OffscreenRenderer::capabilities() const { return impl_->capabilities; }
-const std::string& OffscreenRenderer::platform() const { return impl_->context->platform(); }
-int OffscreenRenderer::width() const { return impl_->target.width(); }
-int OffscreenRenderer::height() const { return impl_->target.height(); }
+SoGLRenderAction& OffscreenRenderer::action() {
+  return *impl_->action;
+}
+const GlCapabilities& OffscreenRenderer::capabilities() const {
+  return impl_->capabilities;
+}
+const std::string& OffscreenRenderer::platform() const {
+  return impl_->context->platform();
+}
+int OffscreenRenderer::width() const {
+  return impl_->target.width();
+}
+int OffscreenRenderer::height() const {
+  return impl_->target.height();
+}
 
 }  // namespace ivshadow

@@ -43,8 +43,8 @@ void AtomicFile::checkWritable(const std::string& path, const std::string& what)
   const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(directory, ec)) {
-    throw InputError(path + ": error: cannot write " + what + ": directory '" +
-                     directory.string() + "' does not exist");
+    throw InputError(path + ": error: cannot write " + what + ": directory '" + directory.string() +
+                     "' does not exist");
   }
   if (fs::is_directory(target, ec)) {
     throw InputError(path + ": error: cannot write " + what + ": it is a directory");

@@ -26,7 +26,8 @@ class Image {
  private:
   std::size_t index(int x, int y) const {
     return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-            static_cast<std::size_t>(x)) * 4u;
+            static_cast<std::size_t>(x)) *
+           4u;
   }
 
   int width_ = 0;

@@ -35,8 +35,8 @@ void writePng(const std::string& path, const Image& image) {
   {
     FilePtr file(std::fopen(output.temporaryPath().c_str(), "wb"));
     if (!file) throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, const_cast<std::string*>(&path),
-                                              throwPngError, ignorePngWarning);
+    png_structp png = png_create_write_struct(
+        PNG_LIBPNG_VER_STRING, const_cast<std::string*>(&path), throwPngError, ignorePngWarning);
     png_infop info = png_create_info_struct(png);
     try {
       png_init_io(png, file.get());

@@ -4,8 +4,12 @@
 
 namespace ivshadow {
 
-void init() { SoDB::init(); }
+void init() {
+  SoDB::init();
+}
 
-const char* version() { return IVSHADOW_VERSION; }
+const char* version() {
+  return IVSHADOW_VERSION;
+}
 
 }  // namespace ivshadow

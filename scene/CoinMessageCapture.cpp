@@ -39,7 +39,8 @@ CoinMessageCapture::Message parse(const SoError* error, bool isError) {
     message.file = match[2].str();
     text = text.substr(0, static_cast<std::size_t>(match.position(0)));
   }
-  static const std::regex preamble(R"(^Coin (read error|error|warning|info) in [^:]*:\s*|^Coin read error:\s*)");
+  static const std::regex preamble(
+      R"(^Coin (read error|error|warning|info) in [^:]*:\s*|^Coin read error:\s*)");
   text = std::regex_replace(text, preamble, "");
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
   message.text = printable(text);
@@ -68,10 +69,8 @@ CoinMessageCapture::CoinMessageCapture() {
 }
 
 CoinMessageCapture::~CoinMessageCapture() {
-  SoReadError::setHandlerCallback(previousReadHandler_,
-                                  previousReadData_);
-  SoDebugError::setHandlerCallback(previousDebugHandler_,
-                                   previousDebugData_);
+  SoReadError::setHandlerCallback(previousReadHandler_, previousReadData_);
+  SoDebugError::setHandlerCallback(previousDebugHandler_, previousDebugData_);
 }
 
 CoinMessageCapture::Message CoinMessageCapture::firstError() const {

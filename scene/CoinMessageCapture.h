@@ -14,11 +14,11 @@ namespace ivshadow {
 class CoinMessageCapture {
  public:
   struct Message {
-    bool isError = false;      // SoReadError or SoDebugError::ERROR; otherwise a warning/info
-    std::string text;          // Coin's message without its "Coin read error:" preamble
-    std::string file;          // where Coin said it occurred, if it did
-    int line = 0;              // 1-based line, 0 when unknown
-    std::string raw;           // Coin's whole message as it would have printed it
+    bool isError = false;  // SoReadError or SoDebugError::ERROR; otherwise a warning/info
+    std::string text;      // Coin's message without its "Coin read error:" preamble
+    std::string file;      // where Coin said it occurred, if it did
+    int line = 0;          // 1-based line, 0 when unknown
+    std::string raw;       // Coin's whole message as it would have printed it
   };
 
   CoinMessageCapture();

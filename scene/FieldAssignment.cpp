@@ -90,15 +90,15 @@ void FieldAssignment::apply(SoNode* root, const std::string& sceneName) const {
     SoField* fieldPtr = target->getField(SbName(field.c_str()));
     if (fieldPtr == nullptr) {
       throw InputError(where + "node '" + node + "' (" + target->getTypeId().getName().getString() +
-                       ") has no field '" + field + "' (its fields: " +
-                       joined(fieldNames(target)) + ")");
+                       ") has no field '" + field + "' (its fields: " + joined(fieldNames(target)) +
+                       ")");
     }
     CoinMessageCapture capture;
     if (!fieldPtr->set(value.c_str())) {
       const std::string detail = capture.firstError().text;
       throw InputError(where + "cannot parse '" + value + "' as " +
-                       fieldPtr->getTypeId().getName().getString() + " for " + node + "." +
-                       field + (detail.empty() ? "" : " (" + detail + ")"));
+                       fieldPtr->getTypeId().getName().getString() + " for " + node + "." + field +
+                       (detail.empty() ? "" : " (" + detail + ")"));
     }
   }
 }

@@ -52,8 +52,9 @@ LoadedScene loadScene(const std::string& path) {
     throw InputError(locationPrefix(path, error.line) + "error: " + text);
   }
   if (root->getNumChildren() == 0) {
-    throw InputError(path + ": error: the file holds no nodes (expected at least one node "
-                            "after the header)");
+    throw InputError(path +
+                     ": error: the file holds no nodes (expected at least one node "
+                     "after the header)");
   }
   for (const CoinMessageCapture::Message& message : capture.messages()) {
     scene.warnings.push_back(locationPrefix(path, message.line) + "warning: " + message.text);

@@ -32,25 +32,30 @@ ViewerWindow::ViewerWindow() {
   buildMenus();
 }
 
-ViewerWindow::~ViewerWindow() { delete viewer_; }
+ViewerWindow::~ViewerWindow() {
+  delete viewer_;
+}
 
 void ViewerWindow::createViewer() {
   auto* area = new QWidget(this);
   setCentralWidget(area);
   viewer_ = new TimedExaminerViewer(area);
-  viewer_->onFrameTimed([this](double ms) {
-    frameLabel_->setText(QString("frame %1 ms").arg(ms, 0, 'f', 1));
-  });
+  viewer_->onFrameTimed(
+      [this](double ms) { frameLabel_->setText(QString("frame %1 ms").arg(ms, 0, 'f', 1)); });
 }
 
 void ViewerWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
-  file->addAction("&Open...", this, [this] { chooseAndOpen(); }, QKeySequence::Open);
-  file->addAction("&Reload", this, [this] { reload(); }, QKeySequence(Qt::Key_F5));
-  file->addAction("Save &Screenshot...", this, [this] { chooseAndSaveScreenshot(); },
-                  QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+  file->addAction(
+      "&Open...", this, [this] { chooseAndOpen(); }, QKeySequence::Open);
+  file->addAction(
+      "&Reload", this, [this] { reload(); }, QKeySequence(Qt::Key_F5));
+  file->addAction(
+      "Save &Screenshot...", this, [this] { chooseAndSaveScreenshot(); },
+      QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
   file->addSeparator();
-  file->addAction("&Quit", this, [this] { close(); }, QKeySequence::Quit);
+  file->addAction(
+      "&Quit", this, [this] { close(); }, QKeySequence::Quit);
 }
 
 void ViewerWindow::setViewerSize(int width, int height) {
@@ -141,7 +146,9 @@ void ViewerWindow::chooseAndSaveScreenshot() {
   });
 }
 
-void ViewerWindow::showMessage(const QString& text) { statusBar()->showMessage(text, 10000); }
+void ViewerWindow::showMessage(const QString& text) {
+  statusBar()->showMessage(text, 10000);
+}
 
 void ViewerWindow::reportError(const std::string& message) {
   showMessage(QString::fromStdString(message));

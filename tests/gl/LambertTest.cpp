@@ -22,8 +22,8 @@ TEST(HeadlessRendering, PointLitPlaneMatchesLambertEverywhere) {
   EXPECT_FALSE(view.addedCamera);
   EXPECT_FALSE(view.addedHeadlight);
   renderer->render(view.root.get());
-  const std::string failure = test::compareWithExpectation(renderer->read(), test::LitPlane{},
-                                                           test::kLitPlaneTolerance);
+  const std::string failure =
+      test::compareWithExpectation(renderer->read(), test::LitPlane{}, test::kLitPlaneTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }
 

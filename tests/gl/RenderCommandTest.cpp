@@ -14,7 +14,9 @@ namespace {
 
 using test::run;
 
-std::string scene(const std::string& name) { return test::scenesDir() + "/" + name; }
+std::string scene(const std::string& name) {
+  return test::scenesDir() + "/" + name;
+}
 
 TEST(RenderCommand, SetAssignsMaterialAndLightFieldsAsTheAnalyticPictureExpects) {
   const std::string out = test::outputDir() + "/set.png";

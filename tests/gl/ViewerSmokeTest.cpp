@@ -18,9 +18,8 @@ test::ProcessResult runUnderXvfb(const std::vector<std::string>& arguments) {
 
 TEST(ViewerSmoke, LoadsASceneAndSavesANonBlankScreenshot) {
   const std::string out = test::outputDir() + "/viewer.png";
-  const test::ProcessResult result =
-      runUnderXvfb({test::viewerExe(), "--screenshot", out, "--size", "320x240",
-                    test::scenesDir() + "/no_camera.iv"});
+  const test::ProcessResult result = runUnderXvfb({test::viewerExe(), "--screenshot", out, "--size",
+                                                   "320x240", test::scenesDir() + "/no_camera.iv"});
   ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
   const Image image = readPng(out);
   ASSERT_EQ(image.width(), 320);

@@ -29,9 +29,15 @@ std::string readAll(const std::string& path) {
 
 }  // namespace
 
-std::string scenesDir() { return IVSHADOW_SCENES_DIR; }
-std::string ivshadowExe() { return IVSHADOW_EXE; }
-std::string viewerExe() { return IVSHADOW_VIEWER_EXE; }
+std::string scenesDir() {
+  return IVSHADOW_SCENES_DIR;
+}
+std::string ivshadowExe() {
+  return IVSHADOW_EXE;
+}
+std::string viewerExe() {
+  return IVSHADOW_VIEWER_EXE;
+}
 
 std::string outputDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -52,8 +58,8 @@ std::string outputDir() {
 
 ProcessResult run(const std::vector<std::string>& arguments,
                   const std::vector<std::string>& environment) {
-  const std::string base = std::filesystem::temp_directory_path() /
-                           ("ivshadow-test-" + std::to_string(::getpid()));
+  const std::string base =
+      std::filesystem::temp_directory_path() / ("ivshadow-test-" + std::to_string(::getpid()));
   const std::string outPath = base + ".out", errPath = base + ".err";
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -93,7 +99,9 @@ ProcessResult run(const std::vector<std::string>& arguments,
   return result;
 }
 
-bool fileExists(const std::string& path) { return std::filesystem::exists(path); }
+bool fileExists(const std::string& path) {
+  return std::filesystem::exists(path);
+}
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
@@ -144,9 +152,8 @@ std::string compareWithExpectation(const Image& actual, const ExpectedImage& exp
   writePng(dir + "/expected.png", expectedImage);
   writePng(dir + "/diff.png", diff);
   std::ostringstream message;
-  message << failures << " of " << checked << " checked pixels differ by more than "
-          << tolerance << "; worst " << worst << " at (" << worstX << ", " << worstY
-          << "); images in " << dir;
+  message << failures << " of " << checked << " checked pixels differ by more than " << tolerance
+          << "; worst " << worst << " at (" << worstX << ", " << worstY << "); images in " << dir;
   return message.str();
 }
 

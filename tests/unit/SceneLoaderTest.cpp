@@ -41,8 +41,8 @@ TEST_P(MalformedScene, IsRejectedWithFileAndLine) {
   const int line = expectedLine(path);
   ASSERT_GE(line, 0) << path << " lacks its '# expect-error: LINE' annotation";
   const std::string error = loadError(path);
-  const std::string location = line > 0 ? path + ":" + std::to_string(line) + ": error: "
-                                        : path + ": error: ";
+  const std::string location =
+      line > 0 ? path + ":" + std::to_string(line) + ": error: " : path + ": error: ";
   EXPECT_EQ(error.rfind(location, 0), 0u) << "expected '" << location << "...', got: " << error;
   EXPECT_EQ(error.find('\n'), std::string::npos) << "one line expected: " << error;
 }
