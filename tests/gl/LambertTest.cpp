@@ -36,11 +36,9 @@ TEST(HeadlessRendering, RepeatedFramesAreIdentical) {
   const ViewSetup view = ViewSetup::prepare(scene.root.get(), SbViewportRegion(64, 48));
   renderer->render(view.root.get());
   const Image first = renderer->read();
-  const OffscreenRenderer::FrameTiming timing = renderer->render(view.root.get());
+  renderer->render(view.root.get());
   const Image second = renderer->read();
   EXPECT_TRUE(std::equal(first.data(), first.data() + 64 * 48 * 4, second.data()));
-  EXPECT_GT(timing.wallMs, 0.0);
-  EXPECT_GE(timing.gpuMs, 0.0);
 }
 
 }  // namespace
