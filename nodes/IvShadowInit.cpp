@@ -1,11 +1,16 @@
 #include "nodes/IvShadowInit.h"
 
+#include "nodes/SoDeepShadowLight.h"
+#include "nodes/SoTransparentShadowGroup.h"
+
 #include <Inventor/SoDB.h>
 
 namespace ivshadow {
 
 void init() {
   SoDB::init();
+  SoDeepShadowLight::initClass();
+  SoTransparentShadowGroup::initClass();
 }
 
 const char* version() {

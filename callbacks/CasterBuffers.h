@@ -1,0 +1,43 @@
+#pragma once
+
+#include "callbacks/GlHandles.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace ivshadow {
+
+class GlProgram;
+struct SceneTriangles;
+
+// The shadow casters of one group in GPU memory: one vertex buffer (position, colour and
+// opacity, texture coordinate) and the textures, drawn batch by batch.
+class CasterBuffers {
+ public:
+  void upload(const SceneTriangles& triangles);
+  // Draws every batch with `program` current, binding each batch's texture to `textureUnit`
+  // and setting the program's uTexture* uniforms.
+  void draw(const GlProgram& program, int textureUnit) const;
+  std::size_t bytes() const { return bytes_; }
+  std::size_t triangles() const { return triangles_; }
+
+ private:
+  struct Batch {
+    int texture;
+    int firstVertex;
+    int vertexCount;
+  };
+  struct Texture {
+    GlTexture name;
+    int model;
+    float blendColour[3];
+  };
+  GlVertexArray vertexArray_;
+  GlBuffer vertexBuffer_;
+  std::vector<Batch> batches_;
+  std::vector<Texture> textures_;
+  std::size_t bytes_ = 0;
+  std::size_t triangles_ = 0;
+};
+
+}  // namespace ivshadow

@@ -1,0 +1,81 @@
+#include "callbacks/DeepShadowPass.h"
+
+#include "GlslSources.h"
+#include "callbacks/GlStateScope.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+
+std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
+  if (epoxy_gl_version() < 45) {
+    whyNot = "OpenGL 4.5 is needed (clip control, direct state access, texture clears); "
+             "this context offers " + std::to_string(epoxy_gl_version() / 10) + "." +
+             std::to_string(epoxy_gl_version() % 10);
+    return nullptr;
+  }
+  GLint units = 0, drawBuffers = 0, textureSize = 0, layers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+  glGetIntegerv(GL_MAX_DRAW_BUFFERS, &drawBuffers);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &textureSize);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+  // Coin's own textures use the low units; the maps take the top 2 * kMaxSlots.
+  if (units < 2 * kMaxSlots + 4) {
+    whyNot = "at least " + std::to_string(2 * kMaxSlots + 4) +
+             " fragment texture units are needed; this context offers " + std::to_string(units);
+    return nullptr;
+  }
+  if (drawBuffers < 4 || layers < 6 * 64) {
+    whyNot = "4 draw buffers and 384 array texture layers are needed";
+    return nullptr;
+  }
+  std::unique_ptr<DeepShadowPass> pass(new DeepShadowPass);
+  pass->program_ = GlProgram::link(composeShader(glsl::kDsmBuildVert),
+                                   composeShader(glsl::kDsmBuildFrag), whyNot);
+  if (!pass->program_) {
+    whyNot = "the deep shadow map program failed: " + whyNot;
+    return nullptr;
+  }
+  pass->maxTextureSize_ = textureSize;
+  pass->firstMapUnit_ = units - 2 * kMaxSlots;
+  pass->flags_ = createBuffer();
+  glNamedBufferData(pass->flags_.get(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
+  return pass;
+}
+
+void DeepShadowPass::uploadCasters(const SceneTriangles& triangles) {
+  GlStateScope scope(GlStateScope::Extent::WholePass, {});
+  casters_.upload(triangles);
+}
+
+MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
+  if (int(maps_.size()) <= slot) maps_.resize(std::size_t(slot) + 1);
+  auto& map = maps_[std::size_t(slot)];
+  if (!map) map = std::make_unique<DeepShadowMap>();
+  GlStateScope scope(GlStateScope::Extent::WholePass, {0, 1, 2});
+  scope.disableFragmentTests();
+  return map->build(request, program_, casters_, flags_.get());
+}
+
+std::uint64_t DeepShadowPass::mapBytes(int slot) const {
+  if (slot >= int(maps_.size()) || !maps_[std::size_t(slot)]) return 0;
+  return maps_[std::size_t(slot)]->bytes();
+}
+
+void DeepShadowPass::keepSlots(int count) {
+  if (int(maps_.size()) > count) maps_.resize(std::size_t(count));
+}
+
+std::unique_ptr<GlStateScope> DeepShadowPass::bindMaps(int count) const {
+  std::vector<int> units;
+  for (int slot = 0; slot < kMaxSlots; ++slot) {
+    units.push_back(depthUnit(slot));
+    units.push_back(visibilityUnit(slot));
+  }
+  auto scope = std::make_unique<GlStateScope>(GlStateScope::Extent::TextureUnits, units);
+  for (int slot = 0; slot < count && slot < int(maps_.size()); ++slot)
+    if (maps_[std::size_t(slot)]) maps_[std::size_t(slot)]->bind(depthUnit(slot), visibilityUnit(slot));
+  return scope;
+}
+
+}  // namespace ivshadow

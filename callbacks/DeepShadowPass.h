@@ -1,0 +1,55 @@
+#pragma once
+
+#include "callbacks/CasterBuffers.h"
+#include "callbacks/DeepShadowMap.h"
+#include "callbacks/GlProgram.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ivshadow {
+
+class GlStateScope;
+struct SceneTriangles;
+
+// The GL side of one SoTransparentShadowGroup in one GL context: its casters in GPU memory,
+// the map-building program and one deep shadow map per light slot. Everything here is made,
+// used and freed with that context current.
+class DeepShadowPass {
+ public:
+  static constexpr int kMaxSlots = 8;  // one per GL light
+
+  // Checks what the current context offers and builds the program; null with the reason in
+  // `whyNot` when the context cannot run the pass.
+  static std::unique_ptr<DeepShadowPass> create(std::string& whyNot);
+
+  int maxTextureSize() const { return maxTextureSize_; }
+  // Units the camera pass samples slot s's maps from: depthUnit(s), visibilityUnit(s).
+  int depthUnit(int slot) const { return firstMapUnit_ + slot; }
+  int visibilityUnit(int slot) const { return firstMapUnit_ + kMaxSlots + slot; }
+
+  void uploadCasters(const SceneTriangles& triangles);
+  // Builds slot `slot`'s map, saving and restoring the GL state it changes.
+  MapBuildResult build(int slot, const MapRequest& request);
+  std::uint64_t mapBytes(int slot) const;
+  std::size_t casterBytes() const { return casters_.bytes(); }
+  // Drops the maps of slots >= `count` (their lights are gone).
+  void keepSlots(int count);
+
+  // Binds the maps of slots [0, count) to their units until the returned scope ends, which
+  // restores what was bound there.
+  std::unique_ptr<GlStateScope> bindMaps(int count) const;
+
+ private:
+  DeepShadowPass() = default;
+
+  int maxTextureSize_ = 0;
+  int firstMapUnit_ = 0;
+  GlProgram program_;
+  GlBuffer flags_;
+  CasterBuffers casters_;
+  std::vector<std::unique_ptr<DeepShadowMap>> maps_;
+};
+
+}  // namespace ivshadow

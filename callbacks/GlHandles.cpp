@@ -1,0 +1,46 @@
+#include "callbacks/GlHandles.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+
+void GlTextureRelease::operator()(unsigned int name) const { glDeleteTextures(1, &name); }
+void GlBufferRelease::operator()(unsigned int name) const { glDeleteBuffers(1, &name); }
+void GlVertexArrayRelease::operator()(unsigned int name) const {
+  glDeleteVertexArrays(1, &name);
+}
+void GlProgramRelease::operator()(unsigned int name) const { glDeleteProgram(name); }
+void GlFramebufferObjectRelease::operator()(unsigned int name) const {
+  glDeleteFramebuffers(1, &name);
+}
+void GlRenderbufferObjectRelease::operator()(unsigned int name) const {
+  glDeleteRenderbuffers(1, &name);
+}
+
+GlTexture createTexture(unsigned int target) {
+  GLuint name = 0;
+  glCreateTextures(target, 1, &name);
+  return GlTexture(name);
+}
+GlBuffer createBuffer() {
+  GLuint name = 0;
+  glCreateBuffers(1, &name);
+  return GlBuffer(name);
+}
+GlVertexArray createVertexArray() {
+  GLuint name = 0;
+  glCreateVertexArrays(1, &name);
+  return GlVertexArray(name);
+}
+GlFramebuffer createFramebuffer() {
+  GLuint name = 0;
+  glCreateFramebuffers(1, &name);
+  return GlFramebuffer(name);
+}
+GlRenderbuffer createRenderbuffer() {
+  GLuint name = 0;
+  glCreateRenderbuffers(1, &name);
+  return GlRenderbuffer(name);
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "callbacks/GlObject.h"
+
+namespace ivshadow {
+
+// Release functors for the GL object kinds the passes own, and the owners built from them.
+struct GlTextureRelease {
+  void operator()(unsigned int name) const;
+};
+struct GlBufferRelease {
+  void operator()(unsigned int name) const;
+};
+struct GlVertexArrayRelease {
+  void operator()(unsigned int name) const;
+};
+struct GlProgramRelease {
+  void operator()(unsigned int name) const;
+};
+struct GlFramebufferObjectRelease {
+  void operator()(unsigned int name) const;
+};
+struct GlRenderbufferObjectRelease {
+  void operator()(unsigned int name) const;
+};
+
+using GlTexture = GlObject<GlTextureRelease>;
+using GlBuffer = GlObject<GlBufferRelease>;
+using GlVertexArray = GlObject<GlVertexArrayRelease>;
+using GlProgramObject = GlObject<GlProgramRelease>;
+using GlFramebuffer = GlObject<GlFramebufferObjectRelease>;
+using GlRenderbuffer = GlObject<GlRenderbufferObjectRelease>;
+
+// Creators (DSA, GL 4.5): each returns a new owner of one object of the given kind.
+GlTexture createTexture(unsigned int target);
+GlBuffer createBuffer();
+GlVertexArray createVertexArray();
+GlFramebuffer createFramebuffer();
+GlRenderbuffer createRenderbuffer();
+
+}  // namespace ivshadow

@@ -1,0 +1,87 @@
+#include "callbacks/GlProgram.h"
+
+#include "GlslSources.h"
+
+#include <epoxy/gl.h>
+
+#include <vector>
+
+namespace ivshadow {
+namespace {
+
+std::string infoLog(GLuint object, bool program) {
+  GLint length = 0;
+  if (program)
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  else
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> text(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+  if (program)
+    glGetProgramInfoLog(object, length, nullptr, text.data());
+  else
+    glGetShaderInfoLog(object, length, nullptr, text.data());
+  return std::string(text.data());
+}
+
+GLuint compile(GLenum stage, const std::string& source, std::string& error) {
+  const GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    error = std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+            " shader does not compile: " + infoLog(shader, false);
+    glDeleteShader(shader);
+    return 0;
+  }
+  return shader;
+}
+
+}  // namespace
+
+std::string composeShader(const char* body) {
+  return std::string("#version 450 compatibility\n") + glsl::kDeepShadowCommonGlsl + body;
+}
+
+GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fragmentSource,
+                          std::string& error) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexSource, error);
+  if (vertex == 0) return {};
+  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragmentSource, error);
+  if (fragment == 0) {
+    glDeleteShader(vertex);
+    return {};
+  }
+  GlProgram result;
+  result.program_ = GlProgramObject(glCreateProgram());
+  const GLuint program = result.program_.get();
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  glLinkProgram(program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    error = "program does not link: " + infoLog(program, true);
+    return {};
+  }
+  return result;
+}
+
+int GlProgram::location(const char* uniform) const {
+  return glGetUniformLocation(program_.get(), uniform);
+}
+void GlProgram::setInt(const char* uniform, int value) const {
+  glProgramUniform1i(program_.get(), location(uniform), value);
+}
+void GlProgram::setVec3(const char* uniform, const float* value) const {
+  glProgramUniform3fv(program_.get(), location(uniform), 1, value);
+}
+void GlProgram::setMat4(const char* uniform, const float* columnMajor) const {
+  glProgramUniformMatrix4fv(program_.get(), location(uniform), 1, GL_FALSE, columnMajor);
+}
+
+}  // namespace ivshadow

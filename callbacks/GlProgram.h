@@ -1,0 +1,34 @@
+#pragma once
+
+#include "callbacks/GlHandles.h"
+
+#include <string>
+
+namespace ivshadow {
+
+// A linked GLSL program of our own (not one Coin manages), with uniform setters by name.
+class GlProgram {
+ public:
+  // Compiles and links in the current context; on failure returns an empty program and puts
+  // the info log in `error`.
+  static GlProgram link(const std::string& vertexSource, const std::string& fragmentSource,
+                        std::string& error);
+
+  GlProgram() = default;
+  explicit operator bool() const { return static_cast<bool>(program_); }
+  unsigned int name() const { return program_.get(); }
+
+  int location(const char* uniform) const;
+  void setInt(const char* uniform, int value) const;
+  void setVec3(const char* uniform, const float* value) const;
+  void setMat4(const char* uniform, const float* columnMajor) const;
+
+ private:
+  GlProgramObject program_;
+};
+
+// "#version 450 compatibility", the shared declarations, then `body`: how every program of
+// the plugin is assembled from the embedded .glsl files.
+std::string composeShader(const char* body);
+
+}  // namespace ivshadow

@@ -1,0 +1,87 @@
+#include "callbacks/GlStateScope.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+namespace {
+
+int getInt(GLenum name) {
+  GLint value = 0;
+  glGetIntegerv(name, &value);
+  return value;
+}
+
+// Switches that change which fragments of the pass survive or where they land.
+std::vector<GLenum> fragmentSwitches() {
+  std::vector<GLenum> list = {GL_BLEND,           GL_ALPHA_TEST,          GL_CULL_FACE,
+                              GL_SCISSOR_TEST,    GL_STENCIL_TEST,        GL_POLYGON_STIPPLE,
+                              GL_POLYGON_OFFSET_FILL, GL_COLOR_LOGIC_OP,  GL_FRAMEBUFFER_SRGB,
+                              GL_DEPTH_CLAMP,     GL_RASTERIZER_DISCARD,  GL_SAMPLE_ALPHA_TO_COVERAGE,
+                              GL_DEPTH_TEST};
+  const int clipPlanes = getInt(GL_MAX_CLIP_DISTANCES);
+  for (int i = 0; i < clipPlanes; ++i) list.push_back(GL_CLIP_DISTANCE0 + GLenum(i));
+  return list;
+}
+
+}  // namespace
+
+GlStateScope::GlStateScope(Extent extent, const std::vector<int>& textureUnits)
+    : extent_(extent) {
+  activeTexture_ = getInt(GL_ACTIVE_TEXTURE);
+  for (int unit : textureUnits) {
+    glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+    units_.push_back({unit, getInt(GL_TEXTURE_BINDING_2D), getInt(GL_TEXTURE_BINDING_2D_ARRAY),
+                      getInt(GL_SAMPLER_BINDING)});
+  }
+  glActiveTexture(GLenum(activeTexture_));
+  if (extent_ != Extent::WholePass) return;
+  drawFramebuffer_ = getInt(GL_DRAW_FRAMEBUFFER_BINDING);
+  readFramebuffer_ = getInt(GL_READ_FRAMEBUFFER_BINDING);
+  glGetIntegerv(GL_VIEWPORT, viewport_.data());
+  program_ = getInt(GL_CURRENT_PROGRAM);
+  vertexArray_ = getInt(GL_VERTEX_ARRAY_BINDING);
+  arrayBuffer_ = getInt(GL_ARRAY_BUFFER_BINDING);
+  storageBuffer_ = getInt(GL_SHADER_STORAGE_BUFFER_BINDING);
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &storageBufferZero_);
+  depthFunc_ = getInt(GL_DEPTH_FUNC);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
+  glGetBooleanv(GL_COLOR_WRITEMASK, colourMask_.data());
+  clipOrigin_ = getInt(GL_CLIP_ORIGIN);
+  clipDepthMode_ = getInt(GL_CLIP_DEPTH_MODE);
+  for (GLenum cap : fragmentSwitches()) enables_.emplace_back(cap, glIsEnabled(cap) == GL_TRUE);
+}
+
+void GlStateScope::disableFragmentTests() const {
+  for (const auto& entry : enables_) glDisable(entry.first);
+}
+
+GlStateScope::~GlStateScope() {
+  for (const UnitBinding& unit : units_) {
+    glActiveTexture(GL_TEXTURE0 + GLenum(unit.unit));
+    glBindTexture(GL_TEXTURE_2D, GLuint(unit.texture2D));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(unit.texture2DArray));
+    glBindSampler(GLuint(unit.unit), GLuint(unit.sampler));
+  }
+  glActiveTexture(GLenum(activeTexture_));
+  if (extent_ != Extent::WholePass) return;
+  for (const auto& [cap, on] : enables_) {
+    if (on)
+      glEnable(cap);
+    else
+      glDisable(cap);
+  }
+  glClipControl(GLenum(clipOrigin_), GLenum(clipDepthMode_));
+  glColorMask(colourMask_[0], colourMask_[1], colourMask_[2], colourMask_[3]);
+  glDepthMask(depthMask_);
+  glDepthFunc(GLenum(depthFunc_));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, GLuint(storageBufferZero_));
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(storageBuffer_));
+  glBindBuffer(GL_ARRAY_BUFFER, GLuint(arrayBuffer_));
+  glBindVertexArray(GLuint(vertexArray_));
+  glUseProgram(GLuint(program_));
+  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
+}
+
+}  // namespace ivshadow

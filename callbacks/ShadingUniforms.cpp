@@ -1,0 +1,36 @@
+#include "callbacks/ShadingUniforms.h"
+
+#include "callbacks/DeepShadowPass.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+
+void ShadingUniforms::apply(unsigned int program, const DeepShadowPass& pass) const {
+  auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
+  std::array<int, kMaxLights> depthUnits{}, visibilityUnits{};
+  for (int slot = 0; slot < kMaxLights; ++slot) {
+    depthUnits[std::size_t(slot)] = pass.depthUnit(slot);
+    visibilityUnits[std::size_t(slot)] = pass.visibilityUnit(slot);
+  }
+  glProgramUniform1i(program, at("textureMap0"), 0);
+  glProgramUniform1i(program, at("uLightCount"), lightCount);
+  glProgramUniform1iv(program, at("uShadowSlot"), kMaxLights, shadowSlot.data());
+  glProgramUniformMatrix4fv(program, at("uEyeToLocal"), 1, GL_FALSE, eyeToLocal);
+  glProgramUniform1i(program, at("uFogType"), fogType);
+  // Every sampler of the arrays gets its own unit even when its slot is unused: two
+  // samplers of different types on one unit make the draw call invalid.
+  glProgramUniform1iv(program, at("uMapDepth"), kMaxLights, depthUnits.data());
+  glProgramUniform1iv(program, at("uMapVisibility"), kMaxLights, visibilityUnits.data());
+  glProgramUniform3fv(program, at("uMapLight"), kMaxLights, mapLight.data());
+  glProgramUniform4fv(program, at("uMapParams"), kMaxLights, mapParams.data());
+  glProgramUniform1iv(program, at("uMapColoured"), kMaxLights, mapColoured.data());
+}
+
+unsigned int currentProgram() {
+  GLint program = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+  return static_cast<unsigned int>(program);
+}
+
+}  // namespace ivshadow

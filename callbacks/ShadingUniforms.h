@@ -1,0 +1,30 @@
+#pragma once
+
+#include <array>
+
+namespace ivshadow {
+
+class DeepShadowPass;
+
+// The uniforms of the camera-pass program (shading.frag) that Coin does not manage. Coin's
+// SoShaderParameter nodes cannot set them: Coin matches uniform names against
+// glGetActiveUniform, which reports arrays as "name[0]", and does not know sampler arrays.
+struct ShadingUniforms {
+  static constexpr int kMaxLights = 8;
+  int lightCount = 0;
+  std::array<int, kMaxLights> shadowSlot{};  // per GL light, -1 when it has no map
+  float eyeToLocal[16] = {};                 // column-major, as glUniformMatrix4fv reads it
+  int fogType = 0;
+  std::array<float, 3 * kMaxLights> mapLight{};
+  std::array<float, 4 * kMaxLights> mapParams{};
+  std::array<int, kMaxLights> mapColoured{};
+
+  // Sets the uniforms on `program` (the program Coin made current for this group).
+  void apply(unsigned int program, const DeepShadowPass& pass) const;
+};
+
+// The program object current in this context: the one Coin bound for the last
+// SoShaderProgram it traversed.
+unsigned int currentProgram();
+
+}  // namespace ivshadow

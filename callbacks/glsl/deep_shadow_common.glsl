@@ -1,0 +1,46 @@
+// Shared by the map build and the lookup, so that both agree on the cube layout and on how
+// a surface filters light. Included after the #version line.
+
+// Cube face f looks along kFaceAxis[f]; kFaceRight/kFaceUp span its image plane. The table
+// must match DeepShadowMap.cpp, which builds each face's view matrix from the same vectors.
+const vec3 kFaceAxis[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0),
+                                  vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1));
+const vec3 kFaceRight[6] = vec3[6](vec3(0, 0, -1), vec3(0, 0, 1), vec3(1, 0, 0),
+                                   vec3(1, 0, 0), vec3(1, 0, 0), vec3(-1, 0, 0));
+const vec3 kFaceUp[6] = vec3[6](vec3(0, 1, 0), vec3(0, 1, 0), vec3(0, 0, -1),
+                                vec3(0, 0, 1), vec3(0, 1, 0), vec3(0, 1, 0));
+
+int cubeFace(vec3 d) {
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
+  return d.z >= 0.0 ? 4 : 5;
+}
+
+const int kColourMonochrome = 0;  // seeds/000 eq. 5.1
+const int kColourSaturate = 1;    // eq. 5.3
+const int kColourPower = 2;       // eq. 5.2
+
+// Fraction of light (per channel) that passes a surface of colour c.rgb and opacity c.a.
+vec3 transmittance(vec4 c, int model) {
+  float clear = 1.0 - c.a;
+  if (model == kColourSaturate) return clear * clamp(vec3(clear) + c.rgb, 0.0, 1.0);
+  if (model == kColourPower) return pow(vec3(clear), 2.0 - c.rgb);
+  return vec3(clear);
+}
+
+// Coin's texture models (SoMultiTextureImageElement::Model, which are the GL enum values).
+const int kTextureNone = 0;
+const int kTextureBlend = 0x0BE2;
+const int kTextureModulate = 0x2100;
+const int kTextureDecal = 0x2101;
+const int kTextureReplace = 0x1E01;
+
+vec4 applyTextureModel(vec4 colour, vec4 texel, int model, vec3 blendColour) {
+  if (model == kTextureModulate) return colour * texel;
+  if (model == kTextureDecal) return vec4(mix(colour.rgb, texel.rgb, texel.a), colour.a);
+  if (model == kTextureReplace) return texel;
+  if (model == kTextureBlend)
+    return vec4(mix(colour.rgb, blendColour, texel.rgb), colour.a * texel.a);
+  return colour;
+}

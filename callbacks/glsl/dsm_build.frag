@@ -1,0 +1,49 @@
+// One peel of one cube face. The depth test keeps the nearest surface behind the previous
+// layer; this shader drops everything at or in front of that layer and multiplies the
+// visibility after it by the surface's transmittance (seeds/000 §5).
+in vec3 vPosition;
+in vec4 vColour;
+in vec2 vTexCoord;
+
+uniform sampler2D uPreviousDepth;
+uniform sampler2D uPreviousVisibility;
+uniform sampler2D uTexture;
+uniform int uTextureModel;
+uniform vec3 uTextureBlendColour;
+uniform int uColourModel;
+uniform vec3 uLightPosition;
+uniform int uFace;
+
+layout(std430, binding = 0) buffer PeelFlags {
+  uint anyFragment;
+  uint transparentFragment;
+};
+
+layout(location = 0) out float oDepth;
+layout(location = 1) out vec4 oVisibility;
+layout(location = 2) out float oPeelDepth;
+layout(location = 3) out vec4 oPeelVisibility;
+
+void main() {
+  vec4 colour = vColour;
+  if (uTextureModel != kTextureNone)
+    colour = applyTextureModel(colour, texture(uTexture, vTexCoord), uTextureModel,
+                               uTextureBlendColour);
+  // A fully clear surface changes nothing; dropping it keeps it from using up a layer.
+  if (colour.a <= 0.0) discard;
+
+  float depth = dot(vPosition - uLightPosition, kFaceAxis[uFace]);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  if (depth <= texelFetch(uPreviousDepth, texel, 0).r) discard;
+
+  vec3 visibility = texelFetch(uPreviousVisibility, texel, 0).rgb *
+                    transmittance(clamp(colour, 0.0, 1.0), uColourModel);
+  anyFragment = 1u;
+  // A surface that lets light through may have more surfaces behind it that matter.
+  if (colour.a < 1.0) transparentFragment = 1u;
+
+  oDepth = depth;
+  oVisibility = vec4(visibility, 1.0);
+  oPeelDepth = depth;
+  oPeelVisibility = vec4(visibility, 1.0);
+}

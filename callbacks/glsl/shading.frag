@@ -1,0 +1,123 @@
+// Coin's lighting (the fixed-function equations Coin programs through glLight/glMaterial)
+// evaluated per pixel, with each deep shadow light's contribution multiplied by the
+// visibility looked up in its cube deep shadow map.
+const int kMaxLights = 8;
+
+in vec3 vEyePosition;
+in vec3 vEyeNormal;
+
+// Kept up to date by Coin (SoShaderObject's coin_* parameters).
+uniform int coin_light_model;
+uniform int coin_two_sided_lighting;
+uniform int coin_texunit0_model;
+uniform sampler2D textureMap0;
+
+uniform int uLightCount;
+uniform int uShadowSlot[kMaxLights];  // per GL light: its map slot, or -1
+uniform mat4 uEyeToLocal;
+uniform int uFogType;  // SoEnvironmentElement::FogType
+
+uniform sampler2DArray uMapDepth[kMaxLights];
+uniform sampler2DArray uMapVisibility[kMaxLights];
+uniform vec3 uMapLight[kMaxLights];   // light position in the group's coordinates
+uniform vec4 uMapParams[kMaxLights];  // resolution, layers, bias (texels), filter radius
+uniform int uMapColoured[kMaxLights];
+
+vec3 visibilityAt(int slot, ivec2 texel, int face, int layers, float depth) {
+  vec3 visibility = vec3(1.0);
+  for (int k = 0; k < layers; ++k) {
+    int layer = face * layers + k;
+    // Layers are sorted by depth; a texel with fewer surfaces holds +huge beyond the last.
+    if (texelFetch(uMapDepth[slot], ivec3(texel, layer), 0).r >= depth) break;
+    vec4 stored = texelFetch(uMapVisibility[slot], ivec3(texel, layer), 0);
+    visibility = uMapColoured[slot] != 0 ? stored.rgb : stored.rrr;
+  }
+  return visibility;
+}
+
+vec3 deepShadowVisibility(int slot, vec3 localPosition, float cosTheta) {
+  vec3 d = localPosition - uMapLight[slot];
+  int face = cubeFace(d);
+  float depth = dot(d, kFaceAxis[face]);
+  if (depth <= 0.0) return vec3(1.0);
+  vec2 ndc = vec2(dot(d, kFaceRight[face]), dot(d, kFaceUp[face])) / depth;
+  int resolution = int(uMapParams[slot].x);
+  int layers = int(uMapParams[slot].y);
+  // Bias in texels of this face at the receiver's depth, growing with the slope of the
+  // receiver as seen from the light so grazing receivers do not shadow themselves.
+  float texelSize = 2.0 * depth / float(resolution);
+  float c = clamp(cosTheta, 1e-3, 1.0);
+  float tanTheta = sqrt(max(1.0 - c * c, 0.0)) / c;
+  float receiver = depth - uMapParams[slot].z * texelSize * (1.0 + min(tanTheta, 10.0));
+
+  ivec2 centre = clamp(ivec2(floor((ndc * 0.5 + 0.5) * float(resolution))), ivec2(0),
+                       ivec2(resolution - 1));
+  int radius = int(uMapParams[slot].w);
+  vec3 sum = vec3(0.0);
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx) {
+      ivec2 texel = clamp(centre + ivec2(dx, dy), ivec2(0), ivec2(resolution - 1));
+      sum += visibilityAt(slot, texel, face, layers, receiver);
+    }
+  float taps = float((2 * radius + 1) * (2 * radius + 1));
+  return sum / taps;
+}
+
+vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColour) {
+  gl_LightSourceParameters light = gl_LightSource[i];
+  vec3 toLight;
+  float attenuation = 1.0;
+  if (light.position.w == 0.0) {
+    toLight = normalize(light.position.xyz);
+  } else {
+    vec3 v = light.position.xyz / light.position.w - vEyePosition;
+    float distance = length(v);
+    toLight = v / distance;
+    attenuation = 1.0 / (light.constantAttenuation + light.linearAttenuation * distance +
+                         light.quadraticAttenuation * distance * distance);
+    if (light.spotCutoff <= 90.0) {
+      float spotCos = dot(-toLight, normalize(light.spotDirection));
+      attenuation *= spotCos < light.spotCosCutoff ? 0.0 : pow(spotCos, light.spotExponent);
+    }
+  }
+  float nDotL = dot(normal, toLight);
+  vec3 colour = light.ambient.rgb * gl_FrontMaterial.ambient.rgb;
+  if (nDotL > 0.0) {
+    // Coin leaves GL's non-local viewer: the eye direction is +z in eye space.
+    vec3 halfVector = normalize(toLight + vec3(0.0, 0.0, 1.0));
+    float nDotH = max(dot(normal, halfVector), 0.0);
+    vec3 direct = nDotL * light.diffuse.rgb * diffuseColour;
+    if (nDotH > 0.0)
+      direct += pow(nDotH, gl_FrontMaterial.shininess) * light.specular.rgb *
+                gl_FrontMaterial.specular.rgb;
+    int slot = uShadowSlot[i];
+    if (slot >= 0) direct *= deepShadowVisibility(slot, localPosition, nDotL);
+    colour += direct;
+  }
+  return attenuation * colour;
+}
+
+void main() {
+  vec4 colour = gl_Color;
+  if (coin_light_model != 0) {
+    vec3 normal = normalize(vEyeNormal);
+    if (coin_two_sided_lighting != 0 && !gl_FrontFacing) normal = -normal;
+    vec3 localPosition = (uEyeToLocal * vec4(vEyePosition, 1.0)).xyz;
+    vec3 lit = gl_FrontMaterial.emission.rgb +
+               gl_LightModel.ambient.rgb * gl_FrontMaterial.ambient.rgb;
+    for (int i = 0; i < uLightCount; ++i)
+      lit += lightContribution(i, normal, localPosition, gl_Color.rgb);
+    colour = vec4(clamp(lit, 0.0, 1.0), gl_Color.a);
+  }
+  if (coin_texunit0_model != kTextureNone)
+    colour = applyTextureModel(colour, texture(textureMap0, gl_TexCoord[0].st),
+                               coin_texunit0_model, gl_TextureEnvColor[0].rgb);
+  if (uFogType != 0) {
+    float z = gl_FogFragCoord;
+    float fog = uFogType == 1   ? (gl_Fog.end - z) * gl_Fog.scale
+                : uFogType == 2 ? exp(-gl_Fog.density * z)
+                                : exp(-gl_Fog.density * gl_Fog.density * z * z);
+    colour.rgb = mix(gl_Fog.color.rgb, colour.rgb, clamp(fog, 0.0, 1.0));
+  }
+  gl_FragColor = colour;
+}

@@ -1,0 +1,27 @@
+#pragma once
+
+class SoDeepShadowLight;
+
+namespace ivshadow {
+
+// The fields of a SoDeepShadowLight after clamping to what the map builder accepts.
+struct DeepShadowSettings {
+  int resolution = 512;
+  int maxLayers = 4;
+  float nearRadius = -1.0f;  // <= 0: fitted to the casters
+  float farRadius = -1.0f;   // <= 0: fitted to the casters
+  float bias = 1.0f;
+  int shadowColor = 0;  // SoDeepShadowLight::ShadowColor
+  int colorModel = 0;   // SoDeepShadowLight::ColorModel
+  bool halfPrecision = false;
+  int filterRadius = 0;  // 0 = nearest texel, r = (2r+1)^2 taps
+
+  bool operator==(const DeepShadowSettings& other) const;
+  bool operator!=(const DeepShadowSettings& other) const { return !(*this == other); }
+};
+
+// Reads and clamps the light's fields; each field that is out of range is reported once per
+// light through SoDebugError::postWarning, naming the node and the field.
+DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
+
+}  // namespace ivshadow

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <Inventor/fields/SoSFEnum.h>
+#include <Inventor/fields/SoSFFloat.h>
+#include <Inventor/fields/SoSFInt32.h>
+#include <Inventor/nodes/SoPointLight.h>
+
+/*!
+  \class SoDeepShadowLight
+  A point light whose shadows let light through transparent casters, tinted by their colour.
+
+  Inside a SoTransparentShadowGroup the light owns a cube deep shadow map: for each of the six
+  faces, up to `maxLayers` surfaces are peeled front to back from the light, and each layer
+  stores its distance and the visibility (1 or 3 channels) after it. Outside such a group it
+  behaves exactly like a SoPointLight.
+
+  FILE FORMAT/DEFAULTS:
+  \code
+    DeepShadowLight {
+        on TRUE
+        intensity 1
+        color 1 1 1
+        location 0 0 1
+        resolution 512       # cube face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
+        maxLayers 4          # peeled layers per face, 1 .. 64
+        nearRadius -1        # distances from the light covered by the map; -1 fits them
+        farRadius -1         #   to the bounding box of the group's shadow casters
+        bias 1               # in texels at the receiver, scaled up with the receiver's slope
+        shadowColor AUTO     # AUTO, MONOCHROME or COLORED
+        colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
+        precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
+        filter NONE          # NONE or PCF
+        filterSize 3         # PCF kernel width in texels, odd, 1 .. 9
+    }
+  \endcode
+
+  Out-of-range values are clamped when the map is built, with one warning naming the node and
+  the field.
+*/
+class SoDeepShadowLight : public SoPointLight {
+  typedef SoPointLight inherited;
+  SO_NODE_HEADER(SoDeepShadowLight);
+
+ public:
+  static void initClass();
+  SoDeepShadowLight();
+
+  enum ShadowColor {
+    AUTO,        //!< colour channels only when some transparent caster is not grey
+    MONOCHROME,  //!< one visibility channel (seeds/000 eq. 5.1)
+    COLORED      //!< three visibility channels
+  };
+  enum ColorModel {
+    SATURATE,  //!< V' (1 - a) clamp(1 - a + c, 0, 1), seeds/000 eq. 5.3
+    POWER      //!< V' (1 - a)^(2 - c), seeds/000 eq. 5.2
+  };
+  enum Precision {
+    FLOAT,  //!< 32-bit visibility
+    HALF    //!< 16-bit visibility, half the memory
+  };
+  enum Filter {
+    NONE,  //!< nearest texel
+    PCF    //!< average of filterSize x filterSize texels
+  };
+
+  SoSFInt32 resolution;
+  SoSFInt32 maxLayers;
+  SoSFFloat nearRadius;
+  SoSFFloat farRadius;
+  SoSFFloat bias;
+  SoSFEnum shadowColor;
+  SoSFEnum colorModel;
+  SoSFEnum precision;
+  SoSFEnum filter;
+  SoSFInt32 filterSize;
+
+ protected:
+  ~SoDeepShadowLight() override;
+};

@@ -1,0 +1,47 @@
+#include "nodes/SoTransparentShadowGroup.h"
+
+#include "nodes/SoDeepShadowLight.h"
+#include "nodes/TransparentShadowGroupImpl.h"
+
+#include <Inventor/actions/SoCallbackAction.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
+
+SO_NODE_SOURCE(SoTransparentShadowGroup);
+
+void SoTransparentShadowGroup::initClass() {
+  if (getClassTypeId() != SoType::badType()) return;
+  SoDeepShadowLight::initClass();
+  // Registered without the "So" prefix, as Coin registers its own nodes: Coin writes that
+  // name to files, and SoType::fromName finds "TransparentShadowGroup" from either spelling.
+  PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup", &SoTransparentShadowGroup::createInstance, SoSeparator);
+  // The casters are collected with a SoCallbackAction, which must track SoShadowStyle.
+  SO_ENABLE(SoCallbackAction, SoShadowStyleElement);
+}
+
+SoTransparentShadowGroup::SoTransparentShadowGroup()
+    : impl_(new ivshadow::TransparentShadowGroupImpl(this)) {
+  SO_NODE_CONSTRUCTOR(SoTransparentShadowGroup);
+  SO_NODE_ADD_FIELD(isActive, (TRUE));
+}
+
+SoTransparentShadowGroup::~SoTransparentShadowGroup() {
+  delete impl_;
+}
+
+const ivshadow::DeepShadowStatistics& SoTransparentShadowGroup::getStatistics() const {
+  return impl_->statistics();
+}
+
+void SoTransparentShadowGroup::GLRenderBelowPath(SoGLRenderAction* action) {
+  if (!isActive.getValue() || !impl_->render(action, false)) inherited::GLRenderBelowPath(action);
+}
+
+void SoTransparentShadowGroup::GLRenderInPath(SoGLRenderAction* action) {
+  if (!isActive.getValue() || !impl_->render(action, true)) inherited::GLRenderInPath(action);
+}
+
+void SoTransparentShadowGroup::notify(SoNotList* list) {
+  impl_->changed(list);
+  inherited::notify(list);
+}

@@ -1,0 +1,267 @@
+#include "nodes/TransparentShadowGroupImpl.h"
+
+#include "callbacks/DeepShadowPass.h"
+#include "callbacks/GlStateScope.h"
+#include "callbacks/ShadingUniforms.h"
+#include "nodes/SoDeepShadowLight.h"
+#include "nodes/SoTransparentShadowGroup.h"
+
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/actions/SoGetMatrixAction.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/elements/SoCacheElement.h>
+#include <Inventor/elements/SoEnvironmentElement.h>
+#include <Inventor/elements/SoGLCacheContextElement.h>
+#include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoLightElement.h>
+#include <Inventor/elements/SoModelMatrixElement.h>
+#include <Inventor/elements/SoShapeStyleElement.h>
+#include <Inventor/elements/SoViewingMatrixElement.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/misc/SoContextHandler.h>
+#include <Inventor/misc/SoNotification.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoShaderProgram.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace ivshadow {
+namespace {
+
+constexpr int kMaxLights = ShadingUniforms::kMaxLights;
+
+// Distance from `point` to the box (0 inside) and to its farthest corner.
+void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, float& farthest) {
+  const SbVec3f& low = box.getMin();
+  const SbVec3f& high = box.getMax();
+  float inside = 0.0f, outside = 0.0f;
+  for (int i = 0; i < 3; ++i) {
+    const float below = std::max(low[i] - point[i], 0.0f);
+    const float above = std::max(point[i] - high[i], 0.0f);
+    inside += (below + above) * (below + above);
+    const float corner = std::max(std::fabs(point[i] - low[i]), std::fabs(point[i] - high[i]));
+    outside += corner * corner;
+  }
+  nearest = std::sqrt(inside);
+  farthest = std::sqrt(outside);
+}
+
+}  // namespace
+
+TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoTransparentShadowGroup* owner)
+    : owner_(owner) {
+  SoContextHandler::addContextDestructionCallback(contextDestroyed, this);
+}
+
+TransparentShadowGroupImpl::~TransparentShadowGroupImpl() {
+  SoContextHandler::removeContextDestructionCallback(contextDestroyed, this);
+  // The GL objects of contexts that are still alive can only go while their context is
+  // current; Coin calls scheduled callbacks at that point.
+  for (auto& [id, context] : contexts_) {
+    if (!context.pass) continue;
+    SoGLCacheContextElement::scheduleDeleteCallback(
+        id, [](void* pass, std::uint32_t) { delete static_cast<DeepShadowPass*>(pass); },
+        context.pass.release());
+  }
+}
+
+void TransparentShadowGroupImpl::contextDestroyed(std::uint32_t context, void* closure) {
+  // Coin calls this with the dying context current, so the GL objects can go with it.
+  static_cast<TransparentShadowGroupImpl*>(closure)->contexts_.erase(context);
+}
+
+void TransparentShadowGroupImpl::changed(SoNotList* list) {
+  const SoNotRec* record = list->getFirstRecAtNode();
+  const SoBase* origin = record ? record->getBase() : nullptr;
+  if (origin == nullptr || origin == owner_) {
+    lightsValid_ = false;
+    castersValid_ = false;
+    ++mapsVersion_;
+    return;
+  }
+  if (!origin->isOfType(SoNode::getClassTypeId())) return;
+  const auto* node = static_cast<const SoNode*>(origin);
+  // Moving the camera or changing an ordinary light changes no shadow map.
+  if (node->isOfType(SoCamera::getClassTypeId())) return;
+  lightsValid_ = false;
+  if (node->isOfType(SoDeepShadowLight::getClassTypeId())) {
+    ++mapsVersion_;
+    return;
+  }
+  if (node->isOfType(SoLight::getClassTypeId())) return;
+  castersValid_ = false;
+  ++mapsVersion_;
+}
+
+void TransparentShadowGroupImpl::findLights() {
+  lights_.clear();
+  subgraphLightsOn_ = 0;
+  SoSearchAction search;
+  search.setType(SoLight::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(FALSE);
+  search.apply(owner_);
+  const SoPathList& paths = search.getPaths();
+  for (int i = 0; i < paths.getLength(); ++i) {
+    auto* light = static_cast<SoLight*>(paths[i]->getTail());
+    if (!light->on.getValue()) continue;
+    const int index = subgraphLightsOn_++;
+    if (light->isOfType(SoDeepShadowLight::getClassTypeId()) &&
+        int(lights_.size()) < DeepShadowPass::kMaxSlots) {
+      Light entry;
+      entry.path = CoinRef<SoPath>(paths[i]->copy());
+      entry.light = static_cast<SoDeepShadowLight*>(light);
+      entry.glIndex = index;
+      lights_.push_back(std::move(entry));
+    }
+  }
+  lightsValid_ = true;
+}
+
+void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& context) {
+  const auto start = std::chrono::steady_clock::now();
+  DeepShadowPass& pass = *context.pass;
+  maps_.assign(lights_.size(), MapState{});
+  statistics_.lights.clear();
+  SoGetMatrixAction matrixAction(action->getViewportRegion());
+  for (std::size_t slot = 0; slot < lights_.size(); ++slot) {
+    const Light& entry = lights_[slot];
+    MapState& map = maps_[slot];
+    map.settings = resolveSettings(*entry.light, pass.maxTextureSize());
+    matrixAction.apply(entry.path.get());
+    matrixAction.getMatrix().multVecMatrix(entry.light->location.getValue(), map.position);
+    float nearest = 0.0f, farthest = 1.0f;
+    if (!casters_.bounds.isEmpty()) distanceRange(casters_.bounds, map.position, nearest, farthest);
+    // The map must reach past the farthest caster; the near plane may not cut off any of
+    // them, and reversed floating-point depth keeps a 1e5 ratio precise.
+    const float far = farthest > 0.0f ? farthest * 1.01f : 1.0f;
+    map.farRadius = map.settings.farRadius > 0.0f ? map.settings.farRadius : far;
+    map.nearRadius = map.settings.nearRadius > 0.0f ? map.settings.nearRadius
+                                                    : std::max(nearest * 0.99f, far * 1e-5f);
+    if (map.nearRadius >= map.farRadius) map.nearRadius = map.farRadius * 1e-5f;
+    switch (map.settings.shadowColor) {
+      case SoDeepShadowLight::COLORED: map.coloured = true; break;
+      case SoDeepShadowLight::MONOCHROME: map.coloured = false; break;
+      default: map.coloured = casters_.hasColouredTransparent; break;
+    }
+
+    MapRequest request;
+    for (int i = 0; i < 3; ++i) request.light[i] = map.position[i];
+    request.nearRadius = map.nearRadius;
+    request.farRadius = map.farRadius;
+    request.resolution = map.settings.resolution;
+    request.layers = map.settings.maxLayers;
+    request.coloured = map.coloured;
+    request.halfPrecision = map.settings.halfPrecision;
+    request.colourModel =
+        !map.coloured ? 0 : map.settings.colorModel == SoDeepShadowLight::POWER ? 2 : 1;
+    const MapBuildResult built = pass.build(int(slot), request);
+
+    DeepShadowLightStatistics light;
+    light.name = entry.light->getName().getString();
+    light.layersUsed = built.layersUsed;
+    light.passes = built.passes;
+    light.bytes = pass.mapBytes(int(slot));
+    light.coloured = map.coloured;
+    light.resolution = request.resolution;
+    light.nearRadius = map.nearRadius;
+    light.farRadius = map.farRadius;
+    statistics_.lights.push_back(light);
+  }
+  pass.keepSlots(int(lights_.size()));
+  // The build restored every GL state it changed; the lazy element is told anyway, since the
+  // restored values are what GL holds and Coin must not skip sending its own.
+  SoGLLazyElement::getInstance(action->getState())
+      ->reset(action->getState(), SoLazyElement::ALL_MASK);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+          .count();
+  statistics_.lastBuildMs = ms;
+  statistics_.totalBuildMs += ms;
+  ++statistics_.rebuilds;
+  statistics_.casterTriangles = int(casters_.triangleCount());
+  context.mapsVersion = mapsVersion_;
+}
+
+bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
+  SoState* state = action->getState();
+  Context& context = contexts_[SoGLCacheContextElement::get(state)];
+  if (context.unsupported) return false;
+  if (!context.pass) {
+    std::string whyNot;
+    context.pass = DeepShadowPass::create(whyNot);
+    if (!context.pass) {
+      context.unsupported = true;
+      static bool warned = false;
+      if (!warned) {
+        warned = true;
+        SoDebugError::postWarning("SoTransparentShadowGroup",
+                                  "rendering without deep shadows: %s", whyNot.c_str());
+      }
+      return false;
+    }
+  }
+  // The maps, uniforms and texture bindings belong to this frame; a render cache above the
+  // group must not replay them.
+  SoCacheElement::invalidate(state);
+
+  if (!lightsValid_) findLights();
+  if (!castersValid_) {
+    casters_ = extractShadowCasters(owner_);
+    castersValid_ = true;
+    ++castersVersion_;
+  }
+  if (context.castersVersion != castersVersion_) {
+    context.pass->uploadCasters(casters_);
+    context.castersVersion = castersVersion_;
+  }
+  if (context.mapsVersion != mapsVersion_) buildMaps(action, context);
+
+  state->push();
+  program_.node()->GLRender(action);
+  const unsigned int program = currentProgram();
+  if (program == 0) {
+    state->pop();
+    return false;
+  }
+  ShadingUniforms uniforms;
+  const int outside = SoLightElement::getLights(state).getLength();
+  uniforms.lightCount = std::min(kMaxLights, outside + subgraphLightsOn_);
+  uniforms.shadowSlot.fill(-1);
+  for (std::size_t slot = 0; slot < lights_.size() && slot < maps_.size(); ++slot) {
+    const int index = outside + lights_[slot].glIndex;
+    if (index >= kMaxLights) continue;
+    const MapState& map = maps_[slot];
+    uniforms.shadowSlot[std::size_t(index)] = int(slot);
+    for (int i = 0; i < 3; ++i) uniforms.mapLight[slot * 3 + std::size_t(i)] = map.position[i];
+    uniforms.mapParams[slot * 4 + 0] = float(map.settings.resolution);
+    uniforms.mapParams[slot * 4 + 1] = float(map.settings.maxLayers);
+    uniforms.mapParams[slot * 4 + 2] = map.settings.bias;
+    uniforms.mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
+    uniforms.mapColoured[slot] = map.coloured ? 1 : 0;
+  }
+  const SbMatrix eyeToLocal =
+      (SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state)).inverse();
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column)
+      uniforms.eyeToLocal[row * 4 + column] = eyeToLocal[row][column];
+  uniforms.fogType = int(SoEnvironmentElement::getFogType(state));
+  uniforms.apply(program, *context.pass);
+
+  {
+    const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(maps_.size()));
+    SoShapeStyleElement::setShadowsRendering(state, TRUE);
+    if (inPath)
+      owner_->SoSeparator::GLRenderInPath(action);
+    else
+      owner_->SoSeparator::GLRenderBelowPath(action);
+    SoShapeStyleElement::setShadowsRendering(state, FALSE);
+    state->pop();
+  }
+  return true;
+}
+
+}  // namespace ivshadow

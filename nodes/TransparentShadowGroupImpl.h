@@ -1,0 +1,80 @@
+#pragma once
+
+#include "nodes/DeepShadowSettings.h"
+#include "nodes/DeepShadowStatistics.h"
+#include "nodes/ShadingProgram.h"
+#include "scene/CoinRef.h"
+#include "scene/SceneTriangles.h"
+
+#include <Inventor/SbVec3f.h>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+class SoDeepShadowLight;
+class SoGLRenderAction;
+class SoNotList;
+class SoPath;
+class SoTransparentShadowGroup;
+
+namespace ivshadow {
+
+class DeepShadowPass;
+
+// The work behind SoTransparentShadowGroup: finds the deep shadow lights, keeps the casters
+// and the maps up to date per GL context, and renders the children with the shading program.
+class TransparentShadowGroupImpl {
+ public:
+  explicit TransparentShadowGroupImpl(SoTransparentShadowGroup* owner);
+  ~TransparentShadowGroupImpl();
+  TransparentShadowGroupImpl(const TransparentShadowGroupImpl&) = delete;
+  TransparentShadowGroupImpl& operator=(const TransparentShadowGroupImpl&) = delete;
+
+  // Renders the group with shadows; returns false when this context cannot (the caller then
+  // renders it as a plain separator).
+  bool render(SoGLRenderAction* action, bool inPath);
+  void changed(SoNotList* list);
+  const DeepShadowStatistics& statistics() const { return statistics_; }
+
+ private:
+  struct Light {
+    CoinRef<SoPath> path;  // from the group to the light
+    SoDeepShadowLight* light = nullptr;
+    int glIndex = 0;  // among the lights the group's subgraph turns on
+  };
+  struct Context {
+    std::unique_ptr<DeepShadowPass> pass;
+    bool unsupported = false;
+    std::uint64_t castersVersion = 0;
+    std::uint64_t mapsVersion = 0;
+  };
+  struct MapState {
+    SbVec3f position;
+    DeepShadowSettings settings;
+    bool coloured = false;
+    float nearRadius = 0.0f;
+    float farRadius = 0.0f;
+  };
+
+  void findLights();
+  void buildMaps(SoGLRenderAction* action, Context& context);
+  static void contextDestroyed(std::uint32_t context, void* closure);
+
+  SoTransparentShadowGroup* owner_;
+  ShadingProgram program_;
+  std::map<std::uint32_t, Context> contexts_;
+  bool lightsValid_ = false;
+  std::vector<Light> lights_;
+  int subgraphLightsOn_ = 0;
+  bool castersValid_ = false;
+  SceneTriangles casters_;
+  std::uint64_t castersVersion_ = 0;
+  std::uint64_t mapsVersion_ = 1;
+  std::vector<MapState> maps_;
+  DeepShadowStatistics statistics_;
+};
+
+}  // namespace ivshadow

@@ -1,0 +1,140 @@
+#include "scene/SceneTriangles.h"
+
+#include <Inventor/SbMatrix.h>
+#include <Inventor/SoPrimitiveVertex.h>
+#include <Inventor/actions/SoCallbackAction.h>
+#include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
+#include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
+#include <Inventor/nodes/SoShape.h>
+#include <Inventor/nodes/SoTexture2.h>
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace ivshadow {
+namespace {
+
+struct Collector {
+  SceneTriangles result;
+  std::map<int, std::vector<TriangleVertex>> byTexture;
+  std::map<std::tuple<const unsigned char*, int, int, int, int>, int> textureIndex;
+};
+
+bool isGrey(float r, float g, float b) {
+  // Closer than one 8-bit step counts as grey: such a tint would not show.
+  constexpr float kStep = 1.0f / 255.0f;
+  return std::fabs(r - g) < kStep && std::fabs(g - b) < kStep;
+}
+
+int textureOf(Collector& collector, SoCallbackAction* action) {
+  SbVec2s size;
+  int components = 0;
+  const unsigned char* data = action->getTextureImage(size, components);
+  if (data == nullptr || size[0] <= 0 || size[1] <= 0 || components < 1 || components > 4)
+    return -1;
+  const int model = static_cast<int>(action->getTextureModel());
+  const auto key = std::make_tuple(data, int(size[0]), int(size[1]), components, model);
+  const auto found = collector.textureIndex.find(key);
+  if (found != collector.textureIndex.end()) return found->second;
+
+  TextureImage image;
+  image.width = size[0];
+  image.height = size[1];
+  image.model = model;
+  image.blendColour = action->getTextureBlendColor();
+  image.repeatS = action->getTextureWrapS() == SoTexture2::REPEAT;
+  image.repeatT = action->getTextureWrapT() == SoTexture2::REPEAT;
+  const std::size_t texels = std::size_t(image.width) * std::size_t(image.height);
+  image.rgba.resize(texels * 4);
+  for (std::size_t i = 0; i < texels; ++i) {
+    const unsigned char* in = data + i * std::size_t(components);
+    unsigned char* out = &image.rgba[i * 4];
+    const bool luminance = components <= 2;
+    out[0] = in[0];
+    out[1] = luminance ? in[0] : in[1];
+    out[2] = luminance ? in[0] : in[2];
+    out[3] = components == 2 ? in[1] : components == 4 ? in[3] : 255;
+    if (out[0] != out[1] || out[1] != out[2]) image.grey = false;
+    if (out[3] != 255) image.opaque = false;
+  }
+  const int index = static_cast<int>(collector.result.textures.size());
+  collector.result.textures.push_back(std::move(image));
+  collector.textureIndex.emplace(key, index);
+  return index;
+}
+
+SoCallbackAction::Response startGroup(void*, SoCallbackAction* action, const SoNode* node) {
+  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node),
+                            SoShadowStyleElement::CASTS_SHADOW_AND_SHADOWED);
+  return SoCallbackAction::CONTINUE;
+}
+
+SoCallbackAction::Response shadowStyle(void*, SoCallbackAction* action, const SoNode* node) {
+  const auto* style = static_cast<const SoShadowStyle*>(node);
+  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node),
+                            style->style.getValue());
+  return SoCallbackAction::CONTINUE;
+}
+
+void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
+              const SoPrimitiveVertex* v2, const SoPrimitiveVertex* v3) {
+  if (!(SoShadowStyleElement::get(action->getState()) & SoShadowStyleElement::CASTS_SHADOW))
+    return;
+  auto& collector = *static_cast<Collector*>(data);
+  const SbMatrix& model = action->getModelMatrix();
+  const int texture = textureOf(collector, action);
+  const SbMatrix& textureMatrix = action->getTextureMatrix();
+  auto& out = collector.byTexture[texture];
+  for (const SoPrimitiveVertex* v : {v1, v2, v3}) {
+    TriangleVertex vertex{};
+    SbVec3f p;
+    model.multVecMatrix(v->getPoint(), p);
+    collector.result.bounds.extendBy(p);
+    SbColor ambient, diffuse, specular, emission;
+    float shininess = 0.0f, transparency = 0.0f;
+    action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
+                        v->getMaterialIndex());
+    SbVec4f tc;
+    textureMatrix.multVecMatrix(v->getTextureCoords(), tc);
+    const float w = tc[3] != 0.0f ? tc[3] : 1.0f;
+    for (int i = 0; i < 3; ++i) {
+      vertex.position[i] = p[i];
+      vertex.colour[i] = diffuse[i];
+    }
+    vertex.colour[3] = 1.0f - transparency;
+    vertex.texCoord[0] = tc[0] / w;
+    vertex.texCoord[1] = tc[1] / w;
+    const TextureImage* image = texture >= 0 ? &collector.result.textures[texture] : nullptr;
+    if (vertex.colour[3] < 1.0f || (image != nullptr && !image->opaque)) {
+      collector.result.hasTransparent = true;
+      if (!isGrey(diffuse[0], diffuse[1], diffuse[2]) || (image != nullptr && !image->grey))
+        collector.result.hasColouredTransparent = true;
+    }
+    out.push_back(vertex);
+  }
+}
+
+}  // namespace
+
+SceneTriangles extractShadowCasters(SoNode* root) {
+  Collector collector;
+  SoCallbackAction action;
+  action.addPreCallback(root->getTypeId(), startGroup, nullptr);
+  action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
+  action.addTriangleCallback(SoShape::getClassTypeId(), triangle, &collector);
+  action.apply(root);
+
+  SceneTriangles& result = collector.result;
+  for (auto& [texture, vertices] : collector.byTexture) {
+    TriangleBatch batch;
+    batch.texture = texture;
+    batch.firstVertex = result.vertices.size();
+    batch.vertexCount = vertices.size();
+    result.vertices.insert(result.vertices.end(), vertices.begin(), vertices.end());
+    result.batches.push_back(batch);
+  }
+  return result;
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <Inventor/SbBox3f.h>
+#include <Inventor/SbColor.h>
+
+#include <cstddef>
+#include <vector>
+
+class SoNode;
+
+namespace ivshadow {
+
+// A texture image as Coin holds it (rows bottom-up), widened to RGBA8.
+struct TextureImage {
+  int width = 0;
+  int height = 0;
+  std::vector<unsigned char> rgba;
+  int model = 0;  // SoMultiTextureImageElement::Model (GL enum values)
+  SbColor blendColour{0.0f, 0.0f, 0.0f};
+  bool repeatS = true;
+  bool repeatT = true;
+  bool grey = true;    // every texel has r == g == b
+  bool opaque = true;  // every texel has alpha 255
+};
+
+struct TriangleVertex {
+  float position[3];  // in the coordinates of the node the triangles were taken from
+  float colour[4];    // diffuse colour and opacity (1 - transparency)
+  float texCoord[2];  // after the texture matrix
+};
+
+// Consecutive triangles that share one texture (texture < 0: none).
+struct TriangleBatch {
+  int texture = -1;
+  std::size_t firstVertex = 0;
+  std::size_t vertexCount = 0;
+};
+
+// The triangles of a subgraph as Coin generates them (SoCallbackAction), so every shape type
+// Coin can render is covered, with what a shadow needs of each: where it is, how much light
+// it lets through, and its colour.
+struct SceneTriangles {
+  std::vector<TriangleVertex> vertices;  // three per triangle, grouped into batches
+  std::vector<TriangleBatch> batches;
+  std::vector<TextureImage> textures;
+  SbBox3f bounds;
+  bool hasTransparent = false;          // some triangle lets light through
+  bool hasColouredTransparent = false;  // ... and is not grey
+
+  std::size_t triangleCount() const { return vertices.size() / 3; }
+};
+
+// The triangles under `root` that cast shadows: those whose SoShadowStyle includes
+// CASTS_SHADOW (the default inside a SoTransparentShadowGroup). Fully clear triangles are
+// kept; they cast nothing, which the map builder handles per fragment (texture alpha).
+SceneTriangles extractShadowCasters(SoNode* root);
+
+}  // namespace ivshadow
