@@ -50,8 +50,9 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
     glTextureSubImage2D(name, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
                         image.rgba.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
-    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    const GLint filter = image.nearest ? GL_NEAREST : GL_LINEAR;
+    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, filter);
+    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, filter);
     glTextureParameteri(name, GL_TEXTURE_WRAP_S, image.repeatS ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     glTextureParameteri(name, GL_TEXTURE_WRAP_T, image.repeatT ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     bytes_ += image.rgba.size();

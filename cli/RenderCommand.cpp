@@ -6,6 +6,7 @@
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "image/PngFile.h"
+#include "nodes/DeepShadowStatistics.h"
 #include "nodes/IvShadowInit.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
@@ -27,7 +28,7 @@ namespace {
 
 nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer& renderer,
                           const std::vector<double>& wallMs, const std::vector<double>& gpuMs,
-                          const std::string& transparency) {
+                          const std::string& transparency, SoNode* root) {
   nlohmann::json stats;
   stats["scene"] = options.scene;
   stats["width"] = renderer.width();
@@ -43,8 +44,28 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["gl_renderer"] = renderer.capabilities().renderer;
   stats["gl_version"] = renderer.capabilities().version;
   stats["egl_platform"] = renderer.platform();
-  // One entry per GL pass; the plain Coin traversal is the only pass so far.
   stats["passes"] = {{"scene_ms", FrameStatistics::median(gpuMs)}};
+  // Deep shadow maps are built only when something changed, so their cost is reported per
+  // build, not per frame: the frame times above include it only for frames that rebuilt.
+  const DeepShadowStatistics shadows = collectDeepShadowStatistics(root);
+  stats["passes"]["dsm_build_ms"] = shadows.lastBuildMs;
+  stats["dsm_rebuilds"] = shadows.rebuilds;
+  stats["dsm_caster_triangles"] = shadows.casterTriangles;
+  std::uint64_t bytes = 0;
+  nlohmann::json lights = nlohmann::json::array();
+  for (const DeepShadowLightStatistics& light : shadows.lights) {
+    bytes += light.bytes;
+    lights.push_back({{"light", light.name},
+                      {"faces", light.layersUsed},
+                      {"passes", light.passes},
+                      {"bytes", light.bytes},
+                      {"colored", light.coloured},
+                      {"resolution", light.resolution},
+                      {"near_radius", light.nearRadius},
+                      {"far_radius", light.farRadius}});
+  }
+  stats["dsm_layers_used"] = lights;
+  stats["dsm_bytes"] = bytes;
   return stats;
 }
 
@@ -97,7 +118,7 @@ int runRender(const RenderOptions& options) {
     if (!options.statsPath.empty()) {
       const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
       writeTextFileAtomically(options.statsPath,
-                              statistics(options, *renderer, wallMs, gpuMs, name).dump(2) + "\n");
+                              statistics(options, *renderer, wallMs, gpuMs, name, view.root.get()).dump(2) + "\n");
     }
     std::cout << "wrote " << options.output << " (" << size.toString() << ", " << options.frames
               << (options.frames == 1 ? " frame, " : " frames, median ")

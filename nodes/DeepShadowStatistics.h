@@ -28,3 +28,13 @@ struct DeepShadowStatistics {
 };
 
 }  // namespace ivshadow
+
+class SoNode;
+
+namespace ivshadow {
+
+// The statistics of every SoTransparentShadowGroup under `root`, summed: lights of all groups
+// in traversal order, build times and rebuild counts added up.
+DeepShadowStatistics collectDeepShadowStatistics(SoNode* root);
+
+}  // namespace ivshadow

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <sstream>
 #include <set>
 #include <string>
 #include <utility>
@@ -85,7 +85,9 @@ int clampInt(const SoDeepShadowLight& light, const char* field, int value, int l
 
 float finiteOr(const SoDeepShadowLight& light, const char* field, float value, float fallback) {
   if (std::isfinite(value)) return value;
-  warnOnce(light, field, "is not a finite number; using " + std::to_string(fallback));
+  std::ostringstream text;
+  text << "is not a finite number; using " << fallback;
+  warnOnce(light, field, text.str());
   return fallback;
 }
 

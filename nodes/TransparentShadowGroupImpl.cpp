@@ -7,6 +7,7 @@
 #include "nodes/SoTransparentShadowGroup.h"
 
 #include <Inventor/SoPath.h>
+#include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetMatrixAction.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -99,6 +100,12 @@ void TransparentShadowGroupImpl::changed(SoNotList* list) {
 void TransparentShadowGroupImpl::findLights() {
   lights_.clear();
   subgraphLightsOn_ = 0;
+  SoSearchAction cameras;
+  cameras.setType(SoCamera::getClassTypeId());
+  cameras.setInterest(SoSearchAction::LAST);
+  cameras.apply(owner_);
+  cameraPath_ = CoinRef<SoPath>(cameras.getPath() ? cameras.getPath()->copy() : nullptr);
+
   SoSearchAction search;
   search.setType(SoLight::getClassTypeId());
   search.setInterest(SoSearchAction::ALL);
@@ -186,6 +193,23 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.mapsVersion = mapsVersion_;
 }
 
+SbMatrix TransparentShadowGroupImpl::localToEye(SoState* state) const {
+  if (!cameraPath_) return SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state);
+  // A camera inside the group is traversed after the group sets its uniforms; the viewing
+  // matrix it will set, relative to the group's coordinates, is what maps them to the eye.
+  SbMatrix viewing = SbMatrix::identity();
+  SoCallbackAction action;
+  action.addPostCallback(
+      SoCamera::getClassTypeId(),
+      [](void* data, SoCallbackAction* a, const SoNode*) {
+        *static_cast<SbMatrix*>(data) = a->getViewingMatrix();
+        return SoCallbackAction::CONTINUE;
+      },
+      &viewing);
+  action.apply(cameraPath_.get());
+  return viewing;
+}
+
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   SoState* state = action->getState();
   Context& context = contexts_[SoGLCacheContextElement::get(state)];
@@ -243,8 +267,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     uniforms.mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
     uniforms.mapColoured[slot] = map.coloured ? 1 : 0;
   }
-  const SbMatrix eyeToLocal =
-      (SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state)).inverse();
+  const SbMatrix eyeToLocal = localToEye(state).inverse();
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column)
       uniforms.eyeToLocal[row * 4 + column] = eyeToLocal[row][column];

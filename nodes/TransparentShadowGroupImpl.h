@@ -6,6 +6,7 @@
 #include "scene/CoinRef.h"
 #include "scene/SceneTriangles.h"
 
+#include <Inventor/SbMatrix.h>
 #include <Inventor/SbVec3f.h>
 
 #include <cstdint>
@@ -18,6 +19,7 @@ class SoDeepShadowLight;
 class SoGLRenderAction;
 class SoNotList;
 class SoPath;
+class SoState;
 class SoTransparentShadowGroup;
 
 namespace ivshadow {
@@ -60,6 +62,7 @@ class TransparentShadowGroupImpl {
   };
 
   void findLights();
+  SbMatrix localToEye(SoState* state) const;
   void buildMaps(SoGLRenderAction* action, Context& context);
   static void contextDestroyed(std::uint32_t context, void* closure);
 
@@ -68,6 +71,7 @@ class TransparentShadowGroupImpl {
   std::map<std::uint32_t, Context> contexts_;
   bool lightsValid_ = false;
   std::vector<Light> lights_;
+  CoinRef<SoPath> cameraPath_;  // the last camera inside the group, if any
   int subgraphLightsOn_ = 0;
   bool castersValid_ = false;
   SceneTriangles casters_;

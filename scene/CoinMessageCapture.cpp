@@ -81,9 +81,16 @@ CoinMessageCapture::Message CoinMessageCapture::firstError() const {
 }
 
 void CoinMessageCapture::forwardExcept(const std::string& benign) const {
+  // Inside another capture, the messages go to it rather than to the terminal.
+  auto* outer = previousDebugHandler_ == debugHandler
+                    ? static_cast<std::vector<Message>*>(previousDebugData_)
+                    : nullptr;
   for (const Message& message : messages_) {
     if (message.raw.find(benign) != std::string::npos) continue;
-    std::cerr << message.raw << '\n';
+    if (outer != nullptr)
+      outer->push_back(message);
+    else
+      std::cerr << message.raw << '\n';
   }
 }
 

@@ -29,7 +29,8 @@ class CoinMessageCapture {
   const std::vector<Message>& messages() const { return messages_; }
   // The first error, or an empty message when there was none.
   Message firstError() const;
-  // Prints every captured message to stderr except those whose text contains `benign`.
+  // Passes on every captured message except those whose text contains `benign`: to the
+  // capture this one is nested in, if any, otherwise to stderr.
   void forwardExcept(const std::string& benign) const;
 
  private:

@@ -4,6 +4,7 @@
 #include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
+#include <Inventor/elements/SoTextureQualityElement.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
 #include <Inventor/nodes/SoShape.h>
 #include <Inventor/nodes/SoTexture2.h>
@@ -45,6 +46,8 @@ int textureOf(Collector& collector, SoCallbackAction* action) {
   image.blendColour = action->getTextureBlendColor();
   image.repeatS = action->getTextureWrapS() == SoTexture2::REPEAT;
   image.repeatT = action->getTextureWrapT() == SoTexture2::REPEAT;
+  // Coin's own threshold (SoGLImage's COIN_TEX2_LINEAR_LIMIT default) for nearest sampling.
+  image.nearest = SoTextureQualityElement::get(action->getState()) < 0.2f;
   const std::size_t texels = std::size_t(image.width) * std::size_t(image.height);
   image.rgba.resize(texels * 4);
   for (std::size_t i = 0; i < texels; ++i) {

@@ -19,6 +19,7 @@ struct TextureImage {
   SbColor blendColour{0.0f, 0.0f, 0.0f};
   bool repeatS = true;
   bool repeatT = true;
+  bool nearest = false;  // sampled without filtering (low SoComplexity::textureQuality)
   bool grey = true;    // every texel has r == g == b
   bool opaque = true;  // every texel has alpha 255
 };

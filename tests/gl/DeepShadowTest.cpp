@@ -1,0 +1,202 @@
+#include "nodes/DeepShadowStatistics.h"
+#include "tests/gl/ShadowScene.h"
+
+#include <Inventor/nodes/SoNode.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace ivshadow::test {
+namespace {
+
+// Every checked pixel is the floor's Lambert value times the filters' transmittance. The
+// group shades per pixel in single precision: the only error is rounding to 8 bits (half a
+// step) plus float error far below a step, and the cube map is sampled well inside each
+// shadow (edges are excluded by ShadowPicture's 2-pixel margin, the bound on where
+// the footprint edges may fall). One 8-bit step bounds it.
+constexpr double kTolerance = 1.0;
+
+const Filter kRedGlass{0.3, 0.5, {1.0, 0.0, 0.0}, 0.5, ""};
+const Filter kGreenGlass{0.4, 0.25, {0.0, 1.0, 0.0}, 0.5, ""};
+
+void expectPicture(const ShadowScene& scene, const ShadowPicture& picture,
+                   SoNode** root = nullptr) {
+  const Image image = renderIv(scene.text(), ShadowScene::kSize, root);
+  const std::string failure = compareWithExpectation(image, picture, kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST(DeepShadow, RedGlassTintsItsFootprintBySaturateModel) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass};
+  ShadowPicture picture{&scene, ColourModel::Saturate};
+  expectPicture(scene, picture);
+}
+
+TEST(DeepShadow, PowerColourModel) {
+  ShadowScene scene;
+  // Opacity and colour near 0.4, where eq. 5.2 and 5.3 differ most (seeds/000): there
+  // SATURATE passes 0.6 of the light in the 0.4 channels and POWER 0.6^1.6 = 0.44.
+  scene.filters = {Filter{0.3, 0.5, {0.4, 0.4, 1.0}, 0.6, ""}};
+  scene.lightFields = "colorModel POWER";
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Power});
+}
+
+TEST(DeepShadow, MonochromeIgnoresTheColour) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass};
+  scene.lightFields = "shadowColor MONOCHROME";
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Monochrome});
+}
+
+TEST(DeepShadow, HalfPrecisionAndPcfKeepTheInterior) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass};
+  scene.lightFields = "precision HALF filter PCF filterSize 3";
+  // Half floats hold 0.25 to 1e-4: far below an 8-bit step. PCF's 3 x 3 kernel reaches one
+  // texel (0.4 pixel here) beyond the edge, inside the 2-pixel margin.
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
+}
+
+TEST(DeepShadow, OpaqueCasterBlocksAllDirectLight) {
+  ShadowScene scene;
+  Filter opaque = kRedGlass;
+  opaque.transparency = 0.0;
+  scene.filters = {opaque};
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
+}
+
+TEST(DeepShadow, FullyTransparentCasterCastsNothing) {
+  ShadowScene scene;
+  Filter clear = kRedGlass;
+  clear.transparency = 1.0;
+  scene.filters = {clear};
+  ShadowPicture picture{&scene, ColourModel::Saturate};
+  picture.checkFilters = true;  // alpha 0 blends to nothing: the floor is seen everywhere
+  expectPicture(scene, picture);
+}
+
+TEST(DeepShadow, StackedFiltersMultiply) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass, kGreenGlass};
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
+}
+
+TEST(DeepShadow, MaxLayersKeepsOnlyTheNearestSurfaces) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.lightFields = "maxLayers 1";
+  ShadowPicture picture{&scene, ColourModel::Saturate};
+  picture.maxLayers = 1;  // documented: surfaces beyond the first maxLayers are ignored
+  expectPicture(scene, picture);
+}
+
+TEST(DeepShadow, EarlyTerminationCostsOnePassPerEmptyFace) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass};
+  SoNode* root = nullptr;
+  renderIv(scene.text(), ShadowScene::kSize, &root);
+  const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
+  root->unref();
+  ASSERT_EQ(stats.lights.size(), 1u);
+  const auto& light = stats.lights[0];
+  // Face 5 (-z) sees the glass then the opaque floor: two layers, and the pass that found
+  // only the floor ended the peeling. The other faces see nothing: one pass each.
+  EXPECT_EQ(light.layersUsed, (std::array<int, 6>{0, 0, 0, 0, 0, 2}));
+  EXPECT_EQ(light.passes, (std::array<int, 6>{1, 1, 1, 1, 1, 2}));
+  EXPECT_TRUE(light.coloured);
+  EXPECT_EQ(stats.rebuilds, 1);
+}
+
+TEST(DeepShadow, GreyCastersGetAMonochromeMapInAutoMode) {
+  ShadowScene scene;
+  Filter grey = kRedGlass;
+  grey.diffuse = {0.5, 0.5, 0.5};
+  scene.filters = {grey};
+  SoNode* root = nullptr;
+  const Image image = renderIv(scene.text(), ShadowScene::kSize, &root);
+  const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
+  root->unref();
+  ASSERT_EQ(stats.lights.size(), 1u);
+  EXPECT_FALSE(stats.lights[0].coloured);
+  const std::string failure = compareWithExpectation(
+      image, ShadowPicture{&scene, ColourModel::Monochrome}, kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+// The same picture seen through each cube face in turn, and across seams: the group's
+// content is rotated inside the group and back outside it.
+struct FaceCase {
+  const char* name;
+  std::array<double, 3> axis;
+  double angle;
+  int face;  // the face the floor's centre falls on, -1 for a seam or corner
+};
+
+class DeepShadowFaces : public ::testing::TestWithParam<FaceCase> {};
+
+TEST_P(DeepShadowFaces, EveryDirectionGivesTheSamePicture) {
+  const FaceCase& c = GetParam();
+  ShadowScene scene;
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.rotationAxis = c.axis;
+  scene.rotationAngle = c.angle;
+  SoNode* root = nullptr;
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate}, &root);
+  const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
+  root->unref();
+  ASSERT_EQ(stats.lights.size(), 1u);
+  if (c.face >= 0) EXPECT_GE(stats.lights[0].layersUsed[std::size_t(c.face)], 3);
+}
+
+const double kHalfPi = std::acos(0.0);
+INSTANTIATE_TEST_SUITE_P(
+    AllFacesAndSeams, DeepShadowFaces,
+    ::testing::Values(FaceCase{"minusZ", {0, 0, 1}, 0.0, 5},
+                      FaceCase{"plusZ", {1, 0, 0}, 2 * kHalfPi, 4},
+                      FaceCase{"minusX", {0, 1, 0}, kHalfPi, 1},
+                      FaceCase{"plusX", {0, 1, 0}, -kHalfPi, 0},
+                      FaceCase{"plusY", {1, 0, 0}, kHalfPi, 2},
+                      FaceCase{"minusY", {1, 0, 0}, -kHalfPi, 3},
+                      // The floor's centre on the seam of two faces, and on a cube corner.
+                      FaceCase{"seam", {0, 1, 0}, -kHalfPi / 2, -1},
+                      FaceCase{"corner", {1, -1, 0}, std::acos(1.0 / std::sqrt(3.0)), -1}),
+    [](const ::testing::TestParamInfo<FaceCase>& info) { return std::string(info.param.name); });
+
+TEST(DeepShadow, AlphaTexturedCheckerboardCastsACheckerboard) {
+  ShadowScene scene;
+  Filter checker = kRedGlass;
+  checker.diffuse = {1.0, 1.0, 1.0};
+  checker.transparency = 0.0;
+  // Luminance-alpha 2 x 2 image, rows bottom-up: opaque bottom-left and top-right texels.
+  // Texture quality 0.1 samples it without filtering, in Coin's pass and in the map's.
+  checker.nodes =
+      "Complexity { textureQuality 0.1 } "
+      "Texture2 { image 2 2 2 0xFFFF 0xFF00 0xFF00 0xFFFF model MODULATE }";
+  scene.filters = {checker};
+  SoNode* root = nullptr;
+  const Image image = renderIv(scene.text(), ShadowScene::kSize, &root);
+  root->unref();
+  // Floor points in the ring around the seen glass whose light passes each quadrant:
+  // (x, y) on the floor maps to (x, y) / 2 on the glass.
+  struct Probe {
+    double x, y;
+    bool lit;
+  };
+  for (const Probe& p : {Probe{0.45, 0.15, false}, Probe{-0.45, -0.15, false},
+                         Probe{0.45, -0.15, true}, Probe{-0.45, 0.15, true},
+                         Probe{0.15, 0.45, false}, Probe{-0.15, 0.45, true}}) {
+    const int px = int(std::floor((p.x + 1.2) * 100.0));
+    const int py = int(std::floor((1.2 - p.y) * 100.0));
+    const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
+    const double lambert = 255.0 / std::sqrt(1.0 + x * x + y * y);
+    const double expected = p.lit ? lambert : 0.0;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(image.pixel(px, py)[c], expected, kTolerance)
+          << "floor point (" << p.x << ", " << p.y << ") channel " << c;
+  }
+}
+
+}  // namespace
+}  // namespace ivshadow::test

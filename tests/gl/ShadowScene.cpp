@@ -1,0 +1,127 @@
+#include "tests/gl/ShadowScene.h"
+
+#include "headless/OffscreenRenderer.h"
+#include "nodes/IvShadowInit.h"
+
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace ivshadow::test {
+
+std::array<double, 3> transmittance(const Filter& filter, ColourModel model) {
+  const double a = 1.0 - filter.transparency;
+  std::array<double, 3> t{};
+  for (int c = 0; c < 3; ++c) {
+    const double colour = filter.diffuse[std::size_t(c)];
+    switch (model) {
+      case ColourModel::Monochrome: t[std::size_t(c)] = 1.0 - a; break;
+      case ColourModel::Saturate:
+        t[std::size_t(c)] = (1.0 - a) * std::clamp(1.0 - a + colour, 0.0, 1.0);
+        break;
+      case ColourModel::Power: t[std::size_t(c)] = std::pow(1.0 - a, 2.0 - colour); break;
+    }
+  }
+  return t;
+}
+
+std::string ShadowScene::text() const {
+  std::ostringstream iv;
+  const auto& axis = rotationAxis;
+  iv << "#Inventor V2.1 ascii\nSeparator {\n"
+     << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+     << "  Rotation { rotation " << axis[0] << ' ' << axis[1] << ' ' << axis[2] << ' '
+     << -rotationAngle << " }\n"
+     << "  DEF Group TransparentShadowGroup {\n"
+     << "    isActive " << (shadowGroupActive ? "TRUE" : "FALSE") << "\n"
+     << "    Rotation { rotation " << axis[0] << ' ' << axis[1] << ' ' << axis[2] << ' '
+     << rotationAngle << " }\n"
+     ;
+  for (int i = 0; i < lightCount; ++i)
+    iv << "    DEF Lamp" << (i > 0 ? std::to_string(i) : std::string()) << " DeepShadowLight { "
+       << "location 0 0 1 intensity " << 1.0 / lightCount << ' ' << lightFields << " }\n";
+  iv
+     << "    DEF Floor Separator {\n      " << floorNodes << "\n"
+     << "      Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
+     << "      Coordinate3 { point [\n";
+  for (int row = 0; row <= floorCells; ++row)
+    for (int column = 0; column <= floorCells; ++column)
+      iv << "        " << -1.0 + 2.0 * column / floorCells << ' '
+         << 1.0 - 2.0 * row / floorCells << " 0,\n";
+  iv << "      ] }\n      QuadMesh { verticesPerRow " << floorCells + 1 << " verticesPerColumn "
+     << floorCells + 1 << " }\n    }\n";
+  int index = 0;
+  for (const Filter& f : filters) {
+    const double s = f.halfSize, h = f.height;
+    iv << "    DEF Filter" << index++ << " Separator {\n      " << f.nodes << "\n"
+       << "      Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor "
+       << f.diffuse[0] << ' ' << f.diffuse[1] << ' ' << f.diffuse[2] << " transparency "
+       << f.transparency << " }\n"
+       << "      Coordinate3 { point [ " << -s << ' ' << -s << ' ' << h << ", " << s << ' '
+       << -s << ' ' << h << ", " << s << ' ' << s << ' ' << h << ", " << -s << ' ' << s << ' '
+       << h << " ] }\n"
+       << "      FaceSet { numVertices 4 }\n    }\n";
+  }
+  iv << "  }\n}\n";
+  return iv.str();
+}
+
+Expectation ShadowPicture::operator()(int px, int py) const {
+  const double x = -1.2 + (px + 0.5) / 100.0;
+  const double y = 1.2 - (py + 0.5) / 100.0;
+  const double margin = edgeMarginPixels / 100.0;
+  const double extent = std::max(std::abs(x), std::abs(y));
+  Expectation e;
+  if (extent >= 1.0 + margin) {
+    e.checked = true;  // background, black
+    return e;
+  }
+  if (extent > 1.0 - margin) return e;
+  // Filters nearest to the light come first along the light's ray.
+  std::vector<const Filter*> order;
+  for (const Filter& f : scene->filters) order.push_back(&f);
+  std::sort(order.begin(), order.end(),
+            [](const Filter* a, const Filter* b) { return a->height > b->height; });
+  std::array<double, 3> light{1.0, 1.0, 1.0};
+  int layers = 0;
+  for (const Filter* f : order) {
+    if (!checkFilters && extent < f->halfSize + margin) return e;  // the filter is in view
+    const double footprint = f->halfSize / (1.0 - f->height);
+    if (std::abs(extent - footprint) < margin) return e;
+    if (extent < footprint && f->transparency < 1.0 && layers++ < maxLayers) {
+      const std::array<double, 3> t = transmittance(*f, model);
+      for (int c = 0; c < 3; ++c) light[std::size_t(c)] *= t[std::size_t(c)];
+    }
+  }
+  const double lambert = 255.0 / std::sqrt(1.0 + x * x + y * y);
+  e.checked = true;
+  for (int c = 0; c < 3; ++c) e.rgb[std::size_t(c)] = lambert * light[std::size_t(c)];
+  return e;
+}
+
+Image renderIv(const std::string& text, int size, SoNode** rootOut) {
+  init();
+  std::string error;
+  auto renderer = OffscreenRenderer::create(size, size, error);
+  if (!renderer) throw std::runtime_error("no headless GL context: " + error);
+  SoInput input;
+  input.setBuffer(text.data(), text.size());
+  SoSeparator* root = SoDB::readAll(&input);
+  if (root == nullptr) throw std::runtime_error("the test scene does not parse:\n" + text);
+  root->ref();
+  renderer->render(root);
+  Image image = renderer->read();
+  if (rootOut != nullptr) {
+    *rootOut = root;
+  } else {
+    root->unref();
+  }
+  return image;
+}
+
+}  // namespace ivshadow::test

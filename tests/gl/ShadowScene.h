@@ -1,0 +1,69 @@
+#pragma once
+
+#include "image/Image.h"
+#include "tests/support/TestSupport.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+class SoNode;
+
+namespace ivshadow::test {
+
+// A filter held above the floor of ShadowScene: a square of half size `halfSize` at height
+// `height`, centred over the light's foot.
+struct Filter {
+  double halfSize = 0.3;
+  double height = 0.5;
+  std::array<double, 3> diffuse{1.0, 0.0, 0.0};
+  double transparency = 0.5;
+  std::string nodes;  // Inventor nodes placed before the filter's face (a texture, a style)
+};
+
+enum class ColourModel { Monochrome, Saturate, Power };
+
+// Fraction of light per channel passing a surface of colour c and opacity a (seeds/000):
+// eq. 5.1 (1 - a), eq. 5.3 (1 - a) clamp(1 - a + c, 0, 1), eq. 5.2 (1 - a)^(2 - c).
+std::array<double, 3> transmittance(const Filter& filter, ColourModel model);
+
+// The scene of iv_scenes/lit_plane.iv (a 2 x 2 white floor at z = 0 seen straight down by an
+// orthographic camera, 100 pixels per unit at 240 x 240; a light 1 unit above the floor's
+// centre; no ambient, no specular) inside a SoTransparentShadowGroup with a SoDeepShadowLight
+// and filters between the light and the floor. `rotationAxis`/`rotationAngle` rotate the
+// group's content inside the group and rotate it back outside: the picture stays the same
+// while the light looks at the floor through a different cube face (or across seams).
+struct ShadowScene {
+  static constexpr int kSize = 240;
+  std::vector<Filter> filters;
+  std::string lightFields;  // extra fields of the DeepShadowLight, e.g. "maxLayers 1"
+  std::string floorNodes;   // Inventor nodes placed before the floor's mesh
+  std::array<double, 3> rotationAxis{0.0, 0.0, 1.0};
+  double rotationAngle = 0.0;
+  int floorCells = 1;  // quads per side of the floor mesh
+  int lightCount = 1;  // deep shadow lights at the same place, intensity 1 / lightCount each
+  bool shadowGroupActive = true;
+
+  std::string text() const;
+};
+
+// The analytic picture of a ShadowScene: Lambert 255 / sqrt(1 + r^2) on the floor, times the
+// transmittance of each filter whose shadow (similar triangles: half size s / (1 - h)) covers
+// the point, counting only the first `maxLayers` surfaces seen from the light. Pixels within
+// `edgeMargin` pixels of a shadow or floor edge, and pixels where a filter itself is seen,
+// are not checked.
+struct ShadowPicture {
+  const ShadowScene* scene = nullptr;
+  ColourModel model = ColourModel::Saturate;
+  int maxLayers = 64;
+  double edgeMarginPixels = 2.0;
+  bool checkFilters = false;  // true when the filters are invisible (transparency 1)
+
+  Expectation operator()(int px, int py) const;
+};
+
+// Reads Inventor text and renders it headlessly at size x size; returns the root (referenced)
+// through `root` when given so callers can inspect nodes afterwards.
+Image renderIv(const std::string& text, int size, SoNode** root = nullptr);
+
+}  // namespace ivshadow::test
