@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <limits>
 
 namespace ivshadow {
@@ -48,27 +49,29 @@ void configureNearest(GLuint texture) {
   glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+
+GLenum visibilityFormat(const MapRequest& request) {
+  return request.coloured ? (request.halfPrecision ? GL_RGBA16F : GL_RGBA32F)
+                          : (request.halfPrecision ? GL_R16F : GL_R32F);
+}
+
+std::uint64_t bytesPerLayerTexel(const MapRequest& request) {
+  return 4u + (request.coloured ? 4u : 1u) * (request.halfPrecision ? 2u : 4u);
+}
+
+GlTexture makeArray(GLenum format, int size, int layers) {
+  GlTexture texture = createTexture(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(texture.get(), 1, format, size, size, layers);
+  configureNearest(texture.get());
+  return texture;
+}
+
 }  // namespace
 
-void DeepShadowMap::allocate(const MapRequest& request) {
-  if (hasStorage_ && allocated_.resolution == request.resolution &&
-      allocated_.layers == request.layers && allocated_.coloured == request.coloured &&
-      allocated_.halfPrecision == request.halfPrecision)
-    return;
+void DeepShadowMap::allocateScratch(const MapRequest& request) {
   const int size = request.resolution;
-  const int layers = 6 * request.layers;
-  const GLenum visibilityFormat = request.coloured
-                                      ? (request.halfPrecision ? GL_RGBA16F : GL_RGBA32F)
-                                      : (request.halfPrecision ? GL_R16F : GL_R32F);
-  const std::uint64_t visibilityBytes =
-      (request.coloured ? 4u : 1u) * (request.halfPrecision ? 2u : 4u);
-
-  depth_ = createTexture(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(depth_.get(), 1, GL_R32F, size, size, layers);
-  configureNearest(depth_.get());
-  visibility_ = createTexture(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(visibility_.get(), 1, visibilityFormat, size, size, layers);
-  configureNearest(visibility_.get());
+  scratchDepth_ = makeArray(GL_R32F, size, 6 * request.layers);
+  scratchVisibility_ = makeArray(visibilityFormat(request), size, 6 * request.layers);
   for (int i = 0; i < 2; ++i) {
     peelDepth_[i] = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(peelDepth_[i].get(), 1, GL_R32F, size, size);
@@ -85,25 +88,53 @@ void DeepShadowMap::allocate(const MapRequest& request) {
   const GLenum drawBuffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
                                  GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
   glNamedFramebufferDrawBuffers(framebuffer_.get(), 4, drawBuffers);
+}
 
-  const std::uint64_t texels = std::uint64_t(size) * std::uint64_t(size);
-  // Stored layers, the two ping-pong layers (R32F + RGBA32F each) and the depth buffer.
-  bytes_ = texels * std::uint64_t(layers) * (4u + visibilityBytes) + texels * 2u * (4u + 16u) +
-           texels * 4u;
-  allocated_ = request;
-  hasStorage_ = true;
+void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& result) {
+  int total = 0;
+  for (int face = 0; face < 6; ++face) {
+    result.firstLayer[std::size_t(face)] = total;
+    total += result.layersUsed[std::size_t(face)];
+  }
+  const int size = request.resolution;
+  // An empty map still binds one (never read) layer, so the sampler stays complete.
+  depth_ = makeArray(GL_R32F, size, std::max(total, 1));
+  visibility_ = makeArray(visibilityFormat(request), size, std::max(total, 1));
+  for (int face = 0; face < 6; ++face) {
+    const int count = result.layersUsed[std::size_t(face)];
+    if (count == 0) continue;
+    const int from = face * request.layers, to = result.firstLayer[std::size_t(face)];
+    glCopyImageSubData(scratchDepth_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, from, depth_.get(),
+                       GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, size, size, count);
+    glCopyImageSubData(scratchVisibility_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, from,
+                       visibility_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, size, size, count);
+  }
+  bytes_ = std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(std::max(total, 1)) *
+           bytesPerLayerTexel(request);
+  peakBytes_ = std::uint64_t(size) * std::uint64_t(size) *
+                   (std::uint64_t(6 * request.layers) * bytesPerLayerTexel(request) +
+                    2u * (4u + 16u) + 4u) +
+               bytes_;
+  scratchDepth_.reset();
+  scratchVisibility_.reset();
+  for (int i = 0; i < 2; ++i) {
+    peelDepth_[i].reset();
+    peelVisibility_[i].reset();
+  }
+  depthBuffer_.reset();
+  framebuffer_.reset();
 }
 
 MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& program,
                                     const CasterBuffers& casters, unsigned int flagsBuffer) {
-  allocate(request);
+  allocateScratch(request);
   MapBuildResult result;
   const GLuint fbo = framebuffer_.get();
   const float noSurface[4] = {kNoSurface, 0.0f, 0.0f, 0.0f};
   const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   const float nothingPeeled[4] = {-kNoSurface, 0.0f, 0.0f, 0.0f};
-  glClearTexImage(depth_.get(), 0, GL_RED, GL_FLOAT, noSurface);
-  glClearTexImage(visibility_.get(), 0, GL_RGBA, GL_FLOAT, clear);
+  glClearTexImage(scratchDepth_.get(), 0, GL_RED, GL_FLOAT, noSurface);
+  glClearTexImage(scratchVisibility_.get(), 0, GL_RGBA, GL_FLOAT, clear);
 
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glViewport(0, 0, request.resolution, request.resolution);
@@ -132,8 +163,9 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
     for (int k = 0; k < request.layers; ++k) {
       const int write = 1 - read;
       const int layer = face * request.layers + k;
-      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, depth_.get(), 0, layer);
-      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, visibility_.get(), 0, layer);
+      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, scratchDepth_.get(), 0, layer);
+      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0,
+                                     layer);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
       // A texel this pass leaves empty must stop the next pass too.
@@ -156,6 +188,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       if (flags[1] == 0u) break;
     }
   }
+  keepUsedLayers(request, result);
   return result;
 }
 

@@ -25,11 +25,15 @@ struct MapRequest {
 struct MapBuildResult {
   std::array<int, 6> layersUsed{};
   std::array<int, 6> passes{};
+  std::array<int, 6> firstLayer{};  // where each face's layers start in the stored arrays
 };
 
 // One cube deep shadow map (seeds/000 §5): for each face and peeled layer, the distance of the
 // surface along the face axis (32-bit) and the visibility after it (1 or 3 channels, 16 or
-// 32 bits). Layer k of face f is array layer f * layers + k of both textures.
+// 32 bits). Faces are peeled into scratch arrays of 6 x maxLayers layers; afterwards only the
+// layers that hold a surface are kept, face after face (layer k of face f is array layer
+// firstLayer[f] + k), and the scratch memory is released: a face without casters costs no
+// memory, and a scene with one transparent surface keeps two layers, not maxLayers.
 class DeepShadowMap {
  public:
   // Peels every face front to back from the light, stopping a face as soon as a pass found
@@ -38,20 +42,24 @@ class DeepShadowMap {
   MapBuildResult build(const MapRequest& request, const GlProgram& program,
                        const CasterBuffers& casters, unsigned int flagsBuffer);
   void bind(int depthUnit, int visibilityUnit) const;
+  // GPU memory the map keeps between builds, and what a build needs at its peak.
   std::uint64_t bytes() const { return bytes_; }
+  std::uint64_t peakBytes() const { return peakBytes_; }
 
  private:
-  void allocate(const MapRequest& request);
+  void allocateScratch(const MapRequest& request);
+  void keepUsedLayers(const MapRequest& request, MapBuildResult& result);
 
-  MapRequest allocated_{};
-  bool hasStorage_ = false;
   GlTexture depth_;
   GlTexture visibility_;
+  GlTexture scratchDepth_;
+  GlTexture scratchVisibility_;
   std::array<GlTexture, 2> peelDepth_;
   std::array<GlTexture, 2> peelVisibility_;
   GlRenderbuffer depthBuffer_;
   GlFramebuffer framebuffer_;
   std::uint64_t bytes_ = 0;
+  std::uint64_t peakBytes_ = 0;
 };
 
 }  // namespace ivshadow

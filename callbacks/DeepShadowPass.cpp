@@ -62,6 +62,11 @@ std::uint64_t DeepShadowPass::mapBytes(int slot) const {
   return maps_[std::size_t(slot)]->bytes();
 }
 
+std::uint64_t DeepShadowPass::mapPeakBytes(int slot) const {
+  if (slot >= int(maps_.size()) || !maps_[std::size_t(slot)]) return 0;
+  return maps_[std::size_t(slot)]->peakBytes();
+}
+
 void DeepShadowPass::keepSlots(int count) {
   if (int(maps_.size()) > count) maps_.resize(std::size_t(count));
 }

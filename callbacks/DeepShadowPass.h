@@ -33,6 +33,7 @@ class DeepShadowPass {
   // Builds slot `slot`'s map, saving and restoring the GL state it changes.
   MapBuildResult build(int slot, const MapRequest& request);
   std::uint64_t mapBytes(int slot) const;
+  std::uint64_t mapPeakBytes(int slot) const;
   std::size_t casterBytes() const { return casters_.bytes(); }
   // Drops the maps of slots >= `count` (their lights are gone).
   void keepSlots(int count);

@@ -25,6 +25,8 @@ void ShadingUniforms::apply(unsigned int program, const DeepShadowPass& pass) co
   glProgramUniform3fv(program, at("uMapLight"), kMaxLights, mapLight.data());
   glProgramUniform4fv(program, at("uMapParams"), kMaxLights, mapParams.data());
   glProgramUniform1iv(program, at("uMapColoured"), kMaxLights, mapColoured.data());
+  glProgramUniform1iv(program, at("uMapFaceFirst"), 6 * kMaxLights, mapFaceFirst.data());
+  glProgramUniform1iv(program, at("uMapFaceLayers"), 6 * kMaxLights, mapFaceLayers.data());
 }
 
 unsigned int currentProgram() {

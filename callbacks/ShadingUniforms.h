@@ -18,6 +18,8 @@ struct ShadingUniforms {
   std::array<float, 3 * kMaxLights> mapLight{};
   std::array<float, 4 * kMaxLights> mapParams{};
   std::array<int, kMaxLights> mapColoured{};
+  std::array<int, 6 * kMaxLights> mapFaceFirst{};
+  std::array<int, 6 * kMaxLights> mapFaceLayers{};
 
   // Sets the uniforms on `program` (the program Coin made current for this group).
   void apply(unsigned int program, const DeepShadowPass& pass) const;

@@ -59,6 +59,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
                       {"faces", light.layersUsed},
                       {"passes", light.passes},
                       {"bytes", light.bytes},
+                      {"peak_bytes", light.peakBytes},
                       {"colored", light.coloured},
                       {"resolution", light.resolution},
                       {"near_radius", light.nearRadius},

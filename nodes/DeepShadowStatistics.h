@@ -12,7 +12,8 @@ struct DeepShadowLightStatistics {
   std::string name;                   // the light's DEF name, or "" when it has none
   std::array<int, 6> layersUsed{};    // peeled layers that held a surface, per cube face
   std::array<int, 6> passes{};        // peel passes run per face (early termination)
-  std::uint64_t bytes = 0;            // GPU memory of the map
+  std::uint64_t bytes = 0;            // GPU memory the map keeps (only layers that are used)
+  std::uint64_t peakBytes = 0;        // GPU memory while it was built (all maxLayers)
   bool coloured = false;              // three visibility channels rather than one
   int resolution = 0;
   float nearRadius = 0.0f;

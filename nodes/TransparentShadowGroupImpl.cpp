@@ -166,12 +166,15 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     request.colourModel =
         !map.coloured ? 0 : map.settings.colorModel == SoDeepShadowLight::POWER ? 2 : 1;
     const MapBuildResult built = pass.build(int(slot), request);
+    map.faceFirst = built.firstLayer;
+    map.faceLayers = built.layersUsed;
 
     DeepShadowLightStatistics light;
     light.name = entry.light->getName().getString();
     light.layersUsed = built.layersUsed;
     light.passes = built.passes;
     light.bytes = pass.mapBytes(int(slot));
+    light.peakBytes = pass.mapPeakBytes(int(slot));
     light.coloured = map.coloured;
     light.resolution = request.resolution;
     light.nearRadius = map.nearRadius;
@@ -262,7 +265,10 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     uniforms.shadowSlot[std::size_t(index)] = int(slot);
     for (int i = 0; i < 3; ++i) uniforms.mapLight[slot * 3 + std::size_t(i)] = map.position[i];
     uniforms.mapParams[slot * 4 + 0] = float(map.settings.resolution);
-    uniforms.mapParams[slot * 4 + 1] = float(map.settings.maxLayers);
+    for (std::size_t face = 0; face < 6; ++face) {
+      uniforms.mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
+      uniforms.mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
+    }
     uniforms.mapParams[slot * 4 + 2] = map.settings.bias;
     uniforms.mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
     uniforms.mapColoured[slot] = map.coloured ? 1 : 0;

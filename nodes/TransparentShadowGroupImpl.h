@@ -9,6 +9,7 @@
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbVec3f.h>
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -59,6 +60,8 @@ class TransparentShadowGroupImpl {
     bool coloured = false;
     float nearRadius = 0.0f;
     float farRadius = 0.0f;
+    std::array<int, 6> faceFirst{};
+    std::array<int, 6> faceLayers{};
   };
 
   void findLights();

@@ -20,13 +20,17 @@ uniform int uFogType;  // SoEnvironmentElement::FogType
 uniform sampler2DArray uMapDepth[kMaxLights];
 uniform sampler2DArray uMapVisibility[kMaxLights];
 uniform vec3 uMapLight[kMaxLights];   // light position in the group's coordinates
-uniform vec4 uMapParams[kMaxLights];  // resolution, layers, bias (texels), filter radius
+uniform vec4 uMapParams[kMaxLights];  // resolution, unused, bias (texels), filter radius
 uniform int uMapColoured[kMaxLights];
+uniform int uMapFaceFirst[kMaxLights * 6];   // array layer of each face's first layer
+uniform int uMapFaceLayers[kMaxLights * 6];  // layers stored for each face
 
-vec3 visibilityAt(int slot, ivec2 texel, int face, int layers, float depth) {
+vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
   vec3 visibility = vec3(1.0);
+  int first = uMapFaceFirst[slot * 6 + face];
+  int layers = uMapFaceLayers[slot * 6 + face];
   for (int k = 0; k < layers; ++k) {
-    int layer = face * layers + k;
+    int layer = first + k;
     // Layers are sorted by depth; a texel with fewer surfaces holds +huge beyond the last.
     if (texelFetch(uMapDepth[slot], ivec3(texel, layer), 0).r >= depth) break;
     vec4 stored = texelFetch(uMapVisibility[slot], ivec3(texel, layer), 0);
@@ -42,7 +46,6 @@ vec3 deepShadowVisibility(int slot, vec3 localPosition, float cosTheta) {
   if (depth <= 0.0) return vec3(1.0);
   vec2 ndc = vec2(dot(d, kFaceRight[face]), dot(d, kFaceUp[face])) / depth;
   int resolution = int(uMapParams[slot].x);
-  int layers = int(uMapParams[slot].y);
   // Bias in texels of this face at the receiver's depth, growing with the slope of the
   // receiver as seen from the light so grazing receivers do not shadow themselves.
   float texelSize = 2.0 * depth / float(resolution);
@@ -57,7 +60,7 @@ vec3 deepShadowVisibility(int slot, vec3 localPosition, float cosTheta) {
   for (int dy = -radius; dy <= radius; ++dy)
     for (int dx = -radius; dx <= radius; ++dx) {
       ivec2 texel = clamp(centre + ivec2(dx, dy), ivec2(0), ivec2(resolution - 1));
-      sum += visibilityAt(slot, texel, face, layers, receiver);
+      sum += visibilityAt(slot, texel, face, receiver);
     }
   float taps = float((2 * radius + 1) * (2 * radius + 1));
   return sum / taps;

@@ -107,6 +107,8 @@ TEST(DeepShadow, EarlyTerminationCostsOnePassPerEmptyFace) {
   EXPECT_EQ(light.passes, (std::array<int, 6>{1, 1, 1, 1, 1, 2}));
   EXPECT_TRUE(light.coloured);
   EXPECT_EQ(stats.rebuilds, 1);
+  // Only the two used layers are kept: 512^2 texels x (32-bit depth + RGBA32F visibility).
+  EXPECT_EQ(light.bytes, 512ull * 512ull * 2ull * (4ull + 16ull));
 }
 
 TEST(DeepShadow, GreyCastersGetAMonochromeMapInAutoMode) {
