@@ -1,3 +1,4 @@
+#include "nodes/IvShadowInit.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 
@@ -16,7 +17,7 @@ namespace {
 class FieldAssignmentTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    SoDB::init();
+    init();
     static const char* scene =
         "#Inventor V2.1 ascii\n"
         "Separator { DEF Glass Material { diffuseColor 1 1 1 transparency 0.5 }"

@@ -1,3 +1,4 @@
+#include "nodes/IvShadowInit.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
 #include "tests/support/TestSupport.h"
@@ -36,7 +37,7 @@ int expectedLine(const std::string& path) {
 class MalformedScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MalformedScene, IsRejectedWithFileAndLine) {
-  SoDB::init();
+  init();
   const std::string path = GetParam();
   const int line = expectedLine(path);
   ASSERT_GE(line, 0) << path << " lacks its '# expect-error: LINE' annotation";
@@ -66,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(EveryFile, MalformedScene, ::testing::ValuesIn(malforme
                          });
 
 TEST(SceneLoader, MissingFileAndDirectoryAreNamed) {
-  SoDB::init();
+  init();
   EXPECT_EQ(loadError("/nonexistent/scene.iv"),
             "/nonexistent/scene.iv: error: no such file (expected an Open Inventor .iv file)");
   const std::string dir = test::scenesDir() + "/malformed";
@@ -74,7 +75,7 @@ TEST(SceneLoader, MissingFileAndDirectoryAreNamed) {
 }
 
 TEST(SceneLoader, ReadsEveryBundledScene) {
-  SoDB::init();
+  init();
   int scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::scenesDir())) {
     if (entry.path().extension() != ".iv") continue;
