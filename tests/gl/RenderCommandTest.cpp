@@ -57,6 +57,60 @@ TEST(RenderCommand, StatsJsonHasTheDocumentedKeys) {
   EXPECT_EQ(stats.at("transparency"), "SORTED_LAYERS_BLEND");
 }
 
+TEST(RenderCommand, StatsReportDeepShadowMapsBuiltOnce) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", scene("coloured_shadows.iv"), "-o", dir + "/d.png",
+           "--size", "160x120", "--frames", "3", "--stats", dir + "/stats.json", "--set",
+           "Lamp.resolution=128"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  std::ifstream in(dir + "/stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  EXPECT_GT(stats.at("passes").at("dsm_build_ms").get<double>(), 0.0);
+  EXPECT_EQ(stats.at("dsm_rebuilds"), 1) << "three frames of an unchanged scene, one build";
+  ASSERT_EQ(stats.at("dsm_layers_used").size(), 1u);
+  const nlohmann::json& lamp = stats.at("dsm_layers_used")[0];
+  EXPECT_EQ(lamp.at("light"), "Lamp");
+  EXPECT_EQ(lamp.at("resolution"), 128);
+  EXPECT_EQ(lamp.at("faces").size(), 6u);
+  EXPECT_TRUE(lamp.at("colored").get<bool>()) << "the scene has coloured glass";
+  int layers = 0;
+  for (int used : lamp.at("faces")) layers += used;
+  // Kept layers x texels x (32-bit depth + RGBA32F visibility).
+  EXPECT_EQ(stats.at("dsm_bytes").get<std::uint64_t>(),
+            std::uint64_t(layers) * 128u * 128u * (4u + 16u));
+}
+
+TEST(RenderCommand, WithoutTheGlFeaturesTheGroupWarnsOnceAndRendersPlainly) {
+  const std::string dir = test::outputDir();
+  // Mesa then offers a 3.3 context: no clip control, no direct state access.
+  const test::ProcessResult limited =
+      run({test::ivshadowExe(), "render", scene("coloured_shadows.iv"), "-o", dir + "/low.png",
+           "--size", "160x120", "--frames", "2"},
+          {"MESA_GL_VERSION_OVERRIDE=3.3COMPAT"});
+  ASSERT_EQ(limited.exitCode, 0) << limited.err;
+  const std::vector<std::string> errors = test::lines(limited.err);
+  ASSERT_EQ(errors.size(), 1u) << limited.err;
+  EXPECT_NE(errors[0].find("rendering without deep shadows: OpenGL 4.5 is needed"),
+            std::string::npos)
+      << limited.err;
+  // The same picture as the scene with the group switched off: plain Coin, not black.
+  const test::ProcessResult plain =
+      run({test::ivshadowExe(), "render", scene("coloured_shadows.iv"), "-o", dir + "/plain.png",
+           "--size", "160x120", "--set", "Scene.isActive=FALSE"},
+          {"MESA_GL_VERSION_OVERRIDE=3.3COMPAT"});
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  const Image a = readPng(dir + "/low.png"), b = readPng(dir + "/plain.png");
+  int nonBlack = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(a.pixel(x, y)[c], b.pixel(x, y)[c]) << "pixel " << x << "," << y;
+        nonBlack += a.pixel(x, y)[c] > 20 ? 1 : 0;
+      }
+  EXPECT_GT(nonBlack, 160 * 120);
+}
+
 // no_camera.iv has neither camera nor light. The added perspective camera looks down -z, so
 // the cube's front face (normal +z) faces it squarely and the headlight, direction (1,-1,-10)
 // in eye space as in SoQt's viewers, lights it with cos = 10 / sqrt(102). Each channel is then
