@@ -56,8 +56,7 @@ SoSeparator* sphereMesh(int n) {
 
 }  // namespace
 
-SoSeparator* sphereField(int triangles, bool transparent, Shadows shadows, int width,
-                         int height) {
+SoSeparator* sphereField(int triangles, bool transparent, Shadows shadows, int width, int height) {
   // Few spheres for small counts, a 10 x 10 field for large ones.
   const int side = triangles >= 100000 ? 10 : triangles >= 10000 ? 4 : 1;
   const int spheres = side * side;
@@ -78,9 +77,15 @@ SoSeparator* sphereField(int triangles, bool transparent, Shadows shadows, int w
 
   SoSeparator* group = nullptr;
   switch (shadows) {
-    case Shadows::None: group = new SoSeparator; break;
-    case Shadows::DeepShadowGroup: group = new SoTransparentShadowGroup; break;
-    case Shadows::CoinShadowGroup: group = new SoShadowGroup; break;
+    case Shadows::None:
+      group = new SoSeparator;
+      break;
+    case Shadows::DeepShadowGroup:
+      group = new SoTransparentShadowGroup;
+      break;
+    case Shadows::CoinShadowGroup:
+      group = new SoShadowGroup;
+      break;
   }
   root->addChild(group);
   const SbVec3f lightAt(0.5f, -0.5f, 6.0f);

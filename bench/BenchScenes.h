@@ -12,7 +12,6 @@ enum class Shadows {
 
 // A floor under a grid of lat-long spheres of about `triangles` triangles in all, lit from
 // above; half the spheres are coloured glass when `transparent`. Returns a referenced root.
-SoSeparator* sphereField(int triangles, bool transparent, Shadows shadows, int width,
-                         int height);
+SoSeparator* sphereField(int triangles, bool transparent, Shadows shadows, int width, int height);
 
 }  // namespace ivshadow::bench

@@ -103,17 +103,28 @@ void common(benchmark::internal::Benchmark* b) {
 
 // Resolution, layers and triangles each varied around 512 / 4 / 10k.
 BENCHMARK(MapBuild)
-    ->Args({10000, 256, 4})->Args({10000, 512, 4})->Args({10000, 1024, 4})
-    ->Args({10000, 512, 1})->Args({10000, 512, 2})->Args({10000, 512, 8})
-    ->Args({1000, 512, 4})->Args({100000, 512, 4})->Args({1000000, 512, 4})
+    ->Args({10000, 256, 4})
+    ->Args({10000, 512, 4})
+    ->Args({10000, 1024, 4})
+    ->Args({10000, 512, 1})
+    ->Args({10000, 512, 2})
+    ->Args({10000, 512, 8})
+    ->Args({1000, 512, 4})
+    ->Args({100000, 512, 4})
+    ->Args({1000000, 512, 4})
     ->Apply(common);
 BENCHMARK(FrameWithMap)
-    ->Args({10000, 512, 4})->Args({10000, 1024, 4})->Args({100000, 512, 4})
+    ->Args({10000, 512, 4})
+    ->Args({10000, 1024, 4})
+    ->Args({100000, 512, 4})
     ->Args({1000000, 512, 4})
     ->Apply(common);
 BENCHMARK(CoinComparison)
-    ->Arg(int(Shadows::None))->Arg(int(Shadows::CoinShadowGroup))
+    ->Arg(int(Shadows::None))
+    ->Arg(int(Shadows::CoinShadowGroup))
     ->Arg(int(Shadows::DeepShadowGroup))
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(10);
 
 }  // namespace

@@ -15,8 +15,7 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
     vertexBuffer_ = createBuffer();
     const GLuint vao = vertexArray_.get();
     glVertexArrayVertexBuffer(vao, 0, vertexBuffer_.get(), 0, sizeof(TriangleVertex));
-    const GLuint offsets[3] = {offsetof(TriangleVertex, position),
-                               offsetof(TriangleVertex, colour),
+    const GLuint offsets[3] = {offsetof(TriangleVertex, position), offsetof(TriangleVertex, colour),
                                offsetof(TriangleVertex, texCoord)};
     const GLint sizes[3] = {3, 4, 2};
     for (GLuint attribute = 0; attribute < 3; ++attribute) {
@@ -40,7 +39,8 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
 
   textures_.clear();
   for (const TextureImage& image : triangles.textures) {
-    Texture texture{createTexture(GL_TEXTURE_2D), image.model,
+    Texture texture{createTexture(GL_TEXTURE_2D),
+                    image.model,
                     {image.blendColour[0], image.blendColour[1], image.blendColour[2]}};
     const GLuint name = texture.name.get();
     glTextureStorage2D(name, 1, GL_RGBA8, image.width, image.height);

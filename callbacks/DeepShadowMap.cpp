@@ -49,7 +49,6 @@ void configureNearest(GLuint texture) {
   glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-
 GLenum visibilityFormat(const MapRequest& request) {
   return request.coloured ? (request.halfPrecision ? GL_RGBA16F : GL_RGBA32F)
                           : (request.halfPrecision ? GL_R16F : GL_R32F);
@@ -85,8 +84,8 @@ void DeepShadowMap::allocateScratch(const MapRequest& request) {
   framebuffer_ = createFramebuffer();
   glNamedFramebufferRenderbuffer(framebuffer_.get(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
                                  depthBuffer_.get());
-  const GLenum drawBuffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
-                                 GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  const GLenum drawBuffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                 GL_COLOR_ATTACHMENT3};
   glNamedFramebufferDrawBuffers(framebuffer_.get(), 4, drawBuffers);
 }
 
@@ -111,10 +110,10 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
   }
   bytes_ = std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(std::max(total, 1)) *
            bytesPerLayerTexel(request);
-  peakBytes_ = std::uint64_t(size) * std::uint64_t(size) *
-                   (std::uint64_t(6 * request.layers) * bytesPerLayerTexel(request) +
-                    2u * (4u + 16u) + 4u) +
-               bytes_;
+  peakBytes_ =
+      std::uint64_t(size) * std::uint64_t(size) *
+          (std::uint64_t(6 * request.layers) * bytesPerLayerTexel(request) + 2u * (4u + 16u) + 4u) +
+      bytes_;
   scratchDepth_.reset();
   scratchVisibility_.reset();
   for (int i = 0; i < 2; ++i) {
@@ -164,8 +163,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       const int write = 1 - read;
       const int layer = face * request.layers + k;
       glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, scratchDepth_.get(), 0, layer);
-      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0,
-                                     layer);
+      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0, layer);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
       // A texel this pass leaves empty must stop the next pass too.

@@ -9,9 +9,10 @@ namespace ivshadow {
 
 std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   if (epoxy_gl_version() < 45) {
-    whyNot = "OpenGL 4.5 is needed (clip control, direct state access, texture clears); "
-             "this context offers " + std::to_string(epoxy_gl_version() / 10) + "." +
-             std::to_string(epoxy_gl_version() % 10);
+    whyNot =
+        "OpenGL 4.5 is needed (clip control, direct state access, texture clears); "
+        "this context offers " +
+        std::to_string(epoxy_gl_version() / 10) + "." + std::to_string(epoxy_gl_version() % 10);
     return nullptr;
   }
   GLint units = 0, drawBuffers = 0, textureSize = 0, layers = 0;
@@ -79,7 +80,8 @@ std::unique_ptr<GlStateScope> DeepShadowPass::bindMaps(int count) const {
   }
   auto scope = std::make_unique<GlStateScope>(GlStateScope::Extent::TextureUnits, units);
   for (int slot = 0; slot < count && slot < int(maps_.size()); ++slot)
-    if (maps_[std::size_t(slot)]) maps_[std::size_t(slot)]->bind(depthUnit(slot), visibilityUnit(slot));
+    if (maps_[std::size_t(slot)])
+      maps_[std::size_t(slot)]->bind(depthUnit(slot), visibilityUnit(slot));
   return scope;
 }
 

@@ -4,12 +4,18 @@
 
 namespace ivshadow {
 
-void GlTextureRelease::operator()(unsigned int name) const { glDeleteTextures(1, &name); }
-void GlBufferRelease::operator()(unsigned int name) const { glDeleteBuffers(1, &name); }
+void GlTextureRelease::operator()(unsigned int name) const {
+  glDeleteTextures(1, &name);
+}
+void GlBufferRelease::operator()(unsigned int name) const {
+  glDeleteBuffers(1, &name);
+}
 void GlVertexArrayRelease::operator()(unsigned int name) const {
   glDeleteVertexArrays(1, &name);
 }
-void GlProgramRelease::operator()(unsigned int name) const { glDeleteProgram(name); }
+void GlProgramRelease::operator()(unsigned int name) const {
+  glDeleteProgram(name);
+}
 void GlFramebufferObjectRelease::operator()(unsigned int name) const {
   glDeleteFramebuffers(1, &name);
 }

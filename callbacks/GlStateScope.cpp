@@ -13,10 +13,18 @@ int getInt(GLenum name) {
 
 // Switches that change which fragments of the pass survive or where they land.
 std::vector<GLenum> fragmentSwitches() {
-  std::vector<GLenum> list = {GL_BLEND,           GL_ALPHA_TEST,          GL_CULL_FACE,
-                              GL_SCISSOR_TEST,    GL_STENCIL_TEST,        GL_POLYGON_STIPPLE,
-                              GL_POLYGON_OFFSET_FILL, GL_COLOR_LOGIC_OP,  GL_FRAMEBUFFER_SRGB,
-                              GL_DEPTH_CLAMP,     GL_RASTERIZER_DISCARD,  GL_SAMPLE_ALPHA_TO_COVERAGE,
+  std::vector<GLenum> list = {GL_BLEND,
+                              GL_ALPHA_TEST,
+                              GL_CULL_FACE,
+                              GL_SCISSOR_TEST,
+                              GL_STENCIL_TEST,
+                              GL_POLYGON_STIPPLE,
+                              GL_POLYGON_OFFSET_FILL,
+                              GL_COLOR_LOGIC_OP,
+                              GL_FRAMEBUFFER_SRGB,
+                              GL_DEPTH_CLAMP,
+                              GL_RASTERIZER_DISCARD,
+                              GL_SAMPLE_ALPHA_TO_COVERAGE,
                               GL_DEPTH_TEST};
   const int clipPlanes = getInt(GL_MAX_CLIP_DISTANCES);
   for (int i = 0; i < clipPlanes; ++i) list.push_back(GL_CLIP_DISTANCE0 + GLenum(i));
@@ -25,8 +33,7 @@ std::vector<GLenum> fragmentSwitches() {
 
 }  // namespace
 
-GlStateScope::GlStateScope(Extent extent, const std::vector<int>& textureUnits)
-    : extent_(extent) {
+GlStateScope::GlStateScope(Extent extent, const std::vector<int>& textureUnits) : extent_(extent) {
   activeTexture_ = getInt(GL_ACTIVE_TEXTURE);
   for (int unit : textureUnits) {
     glActiveTexture(GL_TEXTURE0 + GLenum(unit));

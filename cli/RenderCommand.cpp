@@ -118,8 +118,9 @@ int runRender(const RenderOptions& options) {
     writePng(options.output, renderer->read());
     if (!options.statsPath.empty()) {
       const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
-      writeTextFileAtomically(options.statsPath,
-                              statistics(options, *renderer, wallMs, gpuMs, name, view.root.get()).dump(2) + "\n");
+      writeTextFileAtomically(
+          options.statsPath,
+          statistics(options, *renderer, wallMs, gpuMs, name, view.root.get()).dump(2) + "\n");
     }
     std::cout << "wrote " << options.output << " (" << size.toString() << ", " << options.frames
               << (options.frames == 1 ? " frame, " : " frames, median ")

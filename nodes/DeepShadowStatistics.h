@@ -9,12 +9,12 @@ namespace ivshadow {
 
 // What building the deep shadow maps of one SoTransparentShadowGroup cost.
 struct DeepShadowLightStatistics {
-  std::string name;                   // the light's DEF name, or "" when it has none
-  std::array<int, 6> layersUsed{};    // peeled layers that held a surface, per cube face
-  std::array<int, 6> passes{};        // peel passes run per face (early termination)
-  std::uint64_t bytes = 0;            // GPU memory the map keeps (only layers that are used)
-  std::uint64_t peakBytes = 0;        // GPU memory while it was built (all maxLayers)
-  bool coloured = false;              // three visibility channels rather than one
+  std::string name;                 // the light's DEF name, or "" when it has none
+  std::array<int, 6> layersUsed{};  // peeled layers that held a surface, per cube face
+  std::array<int, 6> passes{};      // peel passes run per face (early termination)
+  std::uint64_t bytes = 0;          // GPU memory the map keeps (only layers that are used)
+  std::uint64_t peakBytes = 0;      // GPU memory while it was built (all maxLayers)
+  bool coloured = false;            // three visibility channels rather than one
   int resolution = 0;
   float nearRadius = 0.0f;
   float farRadius = 0.0f;
@@ -24,7 +24,7 @@ struct DeepShadowStatistics {
   std::vector<DeepShadowLightStatistics> lights;
   double lastBuildMs = 0.0;  // wall time of the last rebuild, all lights, GPU finished
   double totalBuildMs = 0.0;
-  int rebuilds = 0;          // times the maps were rebuilt
+  int rebuilds = 0;  // times the maps were rebuilt
   int casterTriangles = 0;
 };
 

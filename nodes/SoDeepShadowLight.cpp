@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -18,7 +18,8 @@ void SoDeepShadowLight::initClass() {
   SoPointLight::initClass();
   // Registered without the "So" prefix, as Coin registers its own nodes: Coin writes that
   // name to files, and SoType::fromName finds "DeepShadowLight" from either spelling.
-  PRIVATE_COMMON_INIT_CODE(SoDeepShadowLight, "DeepShadowLight", &SoDeepShadowLight::createInstance, SoPointLight);
+  PRIVATE_COMMON_INIT_CODE(SoDeepShadowLight, "DeepShadowLight", &SoDeepShadowLight::createInstance,
+                           SoPointLight);
 }
 
 SoDeepShadowLight::SoDeepShadowLight() {
@@ -70,8 +71,8 @@ std::string nodeLabel(const SoDeepShadowLight& light) {
 
 void warnOnce(const SoDeepShadowLight& light, const char* field, const std::string& what) {
   if (!warned().insert({&light, field}).second) return;
-  SoDebugError::postWarning("SoDeepShadowLight", "%s: field %s %s", nodeLabel(light).c_str(),
-                            field, what.c_str());
+  SoDebugError::postWarning("SoDeepShadowLight", "%s: field %s %s", nodeLabel(light).c_str(), field,
+                            what.c_str());
 }
 
 int clampInt(const SoDeepShadowLight& light, const char* field, int value, int low, int high) {
@@ -94,10 +95,10 @@ float finiteOr(const SoDeepShadowLight& light, const char* field, float value, f
 }  // namespace
 
 bool DeepShadowSettings::operator==(const DeepShadowSettings& o) const {
-  return resolution == o.resolution && maxLayers == o.maxLayers &&
-         nearRadius == o.nearRadius && farRadius == o.farRadius && bias == o.bias &&
-         shadowColor == o.shadowColor && colorModel == o.colorModel &&
-         halfPrecision == o.halfPrecision && filterRadius == o.filterRadius;
+  return resolution == o.resolution && maxLayers == o.maxLayers && nearRadius == o.nearRadius &&
+         farRadius == o.farRadius && bias == o.bias && shadowColor == o.shadowColor &&
+         colorModel == o.colorModel && halfPrecision == o.halfPrecision &&
+         filterRadius == o.filterRadius;
 }
 
 DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize) {

@@ -14,7 +14,8 @@ void SoTransparentShadowGroup::initClass() {
   SoDeepShadowLight::initClass();
   // Registered without the "So" prefix, as Coin registers its own nodes: Coin writes that
   // name to files, and SoType::fromName finds "TransparentShadowGroup" from either spelling.
-  PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup", &SoTransparentShadowGroup::createInstance, SoSeparator);
+  PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup",
+                           &SoTransparentShadowGroup::createInstance, SoSeparator);
   // The casters are collected with a SoCallbackAction, which must track SoShadowStyle.
   SO_ENABLE(SoCallbackAction, SoShadowStyleElement);
 }

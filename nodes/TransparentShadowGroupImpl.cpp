@@ -150,9 +150,15 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
                                                     : std::max(nearest * 0.99f, far * 1e-5f);
     if (map.nearRadius >= map.farRadius) map.nearRadius = map.farRadius * 1e-5f;
     switch (map.settings.shadowColor) {
-      case SoDeepShadowLight::COLORED: map.coloured = true; break;
-      case SoDeepShadowLight::MONOCHROME: map.coloured = false; break;
-      default: map.coloured = casters_.hasColouredTransparent; break;
+      case SoDeepShadowLight::COLORED:
+        map.coloured = true;
+        break;
+      case SoDeepShadowLight::MONOCHROME:
+        map.coloured = false;
+        break;
+      default:
+        map.coloured = casters_.hasColouredTransparent;
+        break;
     }
 
     MapRequest request;
@@ -163,8 +169,9 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     request.layers = map.settings.maxLayers;
     request.coloured = map.coloured;
     request.halfPrecision = map.settings.halfPrecision;
-    request.colourModel =
-        !map.coloured ? 0 : map.settings.colorModel == SoDeepShadowLight::POWER ? 2 : 1;
+    request.colourModel = !map.coloured                                         ? 0
+                          : map.settings.colorModel == SoDeepShadowLight::POWER ? 2
+                                                                                : 1;
     const MapBuildResult built = pass.build(int(slot), request);
     map.faceFirst = built.firstLayer;
     map.faceLayers = built.layersUsed;
@@ -187,8 +194,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   SoGLLazyElement::getInstance(action->getState())
       ->reset(action->getState(), SoLazyElement::ALL_MASK);
   const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-          .count();
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   statistics_.lastBuildMs = ms;
   statistics_.totalBuildMs += ms;
   ++statistics_.rebuilds;
@@ -225,8 +231,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
       static bool warned = false;
       if (!warned) {
         warned = true;
-        SoDebugError::postWarning("SoTransparentShadowGroup",
-                                  "rendering without deep shadows: %s", whyNot.c_str());
+        SoDebugError::postWarning("SoTransparentShadowGroup", "rendering without deep shadows: %s",
+                                  whyNot.c_str());
       }
       return false;
     }

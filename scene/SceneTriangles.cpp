@@ -4,8 +4,8 @@
 #include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
-#include <Inventor/elements/SoTextureQualityElement.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
+#include <Inventor/elements/SoTextureQualityElement.h>
 #include <Inventor/nodes/SoShape.h>
 #include <Inventor/nodes/SoTexture2.h>
 
@@ -75,15 +75,13 @@ SoCallbackAction::Response startGroup(void*, SoCallbackAction* action, const SoN
 
 SoCallbackAction::Response shadowStyle(void*, SoCallbackAction* action, const SoNode* node) {
   const auto* style = static_cast<const SoShadowStyle*>(node);
-  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node),
-                            style->style.getValue());
+  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node), style->style.getValue());
   return SoCallbackAction::CONTINUE;
 }
 
 void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
               const SoPrimitiveVertex* v2, const SoPrimitiveVertex* v3) {
-  if (!(SoShadowStyleElement::get(action->getState()) & SoShadowStyleElement::CASTS_SHADOW))
-    return;
+  if (!(SoShadowStyleElement::get(action->getState()) & SoShadowStyleElement::CASTS_SHADOW)) return;
   auto& collector = *static_cast<Collector*>(data);
   const SbMatrix& model = action->getModelMatrix();
   const int texture = textureOf(collector, action);

@@ -20,8 +20,8 @@ struct TextureImage {
   bool repeatS = true;
   bool repeatT = true;
   bool nearest = false;  // sampled without filtering (low SoComplexity::textureQuality)
-  bool grey = true;    // every texel has r == g == b
-  bool opaque = true;  // every texel has alpha 255
+  bool grey = true;      // every texel has r == g == b
+  bool opaque = true;    // every texel has alpha 255
 };
 
 struct TriangleVertex {

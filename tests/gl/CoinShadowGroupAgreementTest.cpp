@@ -18,8 +18,8 @@ std::string opaqueScene(bool coin, bool casting) {
      << "  PerspectiveCamera { position 0 -4 6 orientation 1 0 0 0.6 heightAngle 0.8"
      << " nearDistance 1 farDistance 20 }\n"
      << (coin ? "  ShadowGroup { quality 1 precision 1\n"
-              "    ShadowSpotLight { location 0.3 0.2 4 direction 0 0 -1 cutOffAngle 0.9"
-              " dropOffRate 0 }\n"
+                "    ShadowSpotLight { location 0.3 0.2 4 direction 0 0 -1 cutOffAngle 0.9"
+                " dropOffRate 0 }\n"
               : "  TransparentShadowGroup {\n    DeepShadowLight { location 0.3 0.2 4 }\n")
      << "    Material { diffuseColor 0.9 0.9 0.9 }\n"
      << "    Coordinate3 { point [ -3 -3 0, 3 -3 0, 3 3 0, -3 3 0 ] }\n"

@@ -122,8 +122,8 @@ TEST(DeepShadow, GreyCastersGetAMonochromeMapInAutoMode) {
   root->unref();
   ASSERT_EQ(stats.lights.size(), 1u);
   EXPECT_FALSE(stats.lights[0].coloured);
-  const std::string failure = compareWithExpectation(
-      image, ShadowPicture{&scene, ColourModel::Monochrome}, kTolerance);
+  const std::string failure =
+      compareWithExpectation(image, ShadowPicture{&scene, ColourModel::Monochrome}, kTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
@@ -155,15 +155,13 @@ TEST_P(DeepShadowFaces, EveryDirectionGivesTheSamePicture) {
 const double kHalfPi = std::acos(0.0);
 INSTANTIATE_TEST_SUITE_P(
     AllFacesAndSeams, DeepShadowFaces,
-    ::testing::Values(FaceCase{"minusZ", {0, 0, 1}, 0.0, 5},
-                      FaceCase{"plusZ", {1, 0, 0}, 2 * kHalfPi, 4},
-                      FaceCase{"minusX", {0, 1, 0}, kHalfPi, 1},
-                      FaceCase{"plusX", {0, 1, 0}, -kHalfPi, 0},
-                      FaceCase{"plusY", {1, 0, 0}, kHalfPi, 2},
-                      FaceCase{"minusY", {1, 0, 0}, -kHalfPi, 3},
-                      // The floor's centre on the seam of two faces, and on a cube corner.
-                      FaceCase{"seam", {0, 1, 0}, -kHalfPi / 2, -1},
-                      FaceCase{"corner", {1, -1, 0}, std::acos(1.0 / std::sqrt(3.0)), -1}),
+    ::testing::Values(
+        FaceCase{"minusZ", {0, 0, 1}, 0.0, 5}, FaceCase{"plusZ", {1, 0, 0}, 2 * kHalfPi, 4},
+        FaceCase{"minusX", {0, 1, 0}, kHalfPi, 1}, FaceCase{"plusX", {0, 1, 0}, -kHalfPi, 0},
+        FaceCase{"plusY", {1, 0, 0}, kHalfPi, 2}, FaceCase{"minusY", {1, 0, 0}, -kHalfPi, 3},
+        // The floor's centre on the seam of two faces, and on a cube corner.
+        FaceCase{"seam", {0, 1, 0}, -kHalfPi / 2, -1},
+        FaceCase{"corner", {1, -1, 0}, std::acos(1.0 / std::sqrt(3.0)), -1}),
     [](const ::testing::TestParamInfo<FaceCase>& info) { return std::string(info.param.name); });
 
 TEST(DeepShadow, AlphaTexturedCheckerboardCastsACheckerboard) {
@@ -186,9 +184,9 @@ TEST(DeepShadow, AlphaTexturedCheckerboardCastsACheckerboard) {
     double x, y;
     bool lit;
   };
-  for (const Probe& p : {Probe{0.45, 0.15, false}, Probe{-0.45, -0.15, false},
-                         Probe{0.45, -0.15, true}, Probe{-0.45, 0.15, true},
-                         Probe{0.15, 0.45, false}, Probe{-0.15, 0.45, true}}) {
+  for (const Probe& p :
+       {Probe{0.45, 0.15, false}, Probe{-0.45, -0.15, false}, Probe{0.45, -0.15, true},
+        Probe{-0.45, 0.15, true}, Probe{0.15, 0.45, false}, Probe{-0.15, 0.45, true}}) {
     const int px = int(std::floor((p.x + 1.2) * 100.0));
     const int py = int(std::floor((1.2 - p.y) * 100.0));
     const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;

@@ -40,7 +40,8 @@ std::vector<int> pixelDifferences(const Image& a, const Image& b) {
   for (int y = 0; y < a.height(); ++y)
     for (int x = 0; x < a.width(); ++x) {
       int worst = 0;
-      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(a.pixel(x, y)[c] - b.pixel(x, y)[c]));
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(a.pixel(x, y)[c] - b.pixel(x, y)[c]));
       out.push_back(worst);
     }
   return out;

@@ -20,11 +20,15 @@ std::array<double, 3> transmittance(const Filter& filter, ColourModel model) {
   for (int c = 0; c < 3; ++c) {
     const double colour = filter.diffuse[std::size_t(c)];
     switch (model) {
-      case ColourModel::Monochrome: t[std::size_t(c)] = 1.0 - a; break;
+      case ColourModel::Monochrome:
+        t[std::size_t(c)] = 1.0 - a;
+        break;
       case ColourModel::Saturate:
         t[std::size_t(c)] = (1.0 - a) * std::clamp(1.0 - a + colour, 0.0, 1.0);
         break;
-      case ColourModel::Power: t[std::size_t(c)] = std::pow(1.0 - a, 2.0 - colour); break;
+      case ColourModel::Power:
+        t[std::size_t(c)] = std::pow(1.0 - a, 2.0 - colour);
+        break;
     }
   }
   return t;
@@ -40,31 +44,28 @@ std::string ShadowScene::text() const {
      << "  DEF Group TransparentShadowGroup {\n"
      << "    isActive " << (shadowGroupActive ? "TRUE" : "FALSE") << "\n"
      << "    Rotation { rotation " << axis[0] << ' ' << axis[1] << ' ' << axis[2] << ' '
-     << rotationAngle << " }\n"
-     ;
+     << rotationAngle << " }\n";
   for (int i = 0; i < lightCount; ++i)
     iv << "    DEF Lamp" << (i > 0 ? std::to_string(i) : std::string()) << " DeepShadowLight { "
        << "location 0 0 1 intensity " << 1.0 / lightCount << ' ' << lightFields << " }\n";
-  iv
-     << "    DEF Floor Separator {\n      " << floorNodes << "\n"
+  iv << "    DEF Floor Separator {\n      " << floorNodes << "\n"
      << "      Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
      << "      Coordinate3 { point [\n";
   for (int row = 0; row <= floorCells; ++row)
     for (int column = 0; column <= floorCells; ++column)
-      iv << "        " << -1.0 + 2.0 * column / floorCells << ' '
-         << 1.0 - 2.0 * row / floorCells << " 0,\n";
+      iv << "        " << -1.0 + 2.0 * column / floorCells << ' ' << 1.0 - 2.0 * row / floorCells
+         << " 0,\n";
   iv << "      ] }\n      QuadMesh { verticesPerRow " << floorCells + 1 << " verticesPerColumn "
      << floorCells + 1 << " }\n    }\n";
   int index = 0;
   for (const Filter& f : filters) {
     const double s = f.halfSize, h = f.height;
     iv << "    DEF Filter" << index++ << " Separator {\n      " << f.nodes << "\n"
-       << "      Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor "
-       << f.diffuse[0] << ' ' << f.diffuse[1] << ' ' << f.diffuse[2] << " transparency "
-       << f.transparency << " }\n"
-       << "      Coordinate3 { point [ " << -s << ' ' << -s << ' ' << h << ", " << s << ' '
-       << -s << ' ' << h << ", " << s << ' ' << s << ' ' << h << ", " << -s << ' ' << s << ' '
-       << h << " ] }\n"
+       << "      Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor " << f.diffuse[0]
+       << ' ' << f.diffuse[1] << ' ' << f.diffuse[2] << " transparency " << f.transparency << " }\n"
+       << "      Coordinate3 { point [ " << -s << ' ' << -s << ' ' << h << ", " << s << ' ' << -s
+       << ' ' << h << ", " << s << ' ' << s << ' ' << h << ", " << -s << ' ' << s << ' ' << h
+       << " ] }\n"
        << "      FaceSet { numVertices 4 }\n    }\n";
   }
   iv << "  }\n}\n";
