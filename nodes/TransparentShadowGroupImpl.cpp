@@ -23,6 +23,7 @@
 #include <Inventor/misc/SoContextHandler.h>
 #include <Inventor/misc/SoNotification.h>
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoEnvironment.h>
 #include <Inventor/nodes/SoShaderProgram.h>
 
 #include <algorithm>
@@ -105,6 +106,12 @@ void TransparentShadowGroupImpl::findLights() {
   cameras.setInterest(SoSearchAction::LAST);
   cameras.apply(owner_);
   cameraPath_ = CoinRef<SoPath>(cameras.getPath() ? cameras.getPath()->copy() : nullptr);
+  SoSearchAction environments;
+  environments.setType(SoEnvironment::getClassTypeId());
+  environments.setInterest(SoSearchAction::LAST);
+  environments.apply(owner_);
+  environmentPath_ =
+      CoinRef<SoPath>(environments.getPath() ? environments.getPath()->copy() : nullptr);
 
   SoSearchAction search;
   search.setType(SoLight::getClassTypeId());
@@ -219,6 +226,13 @@ SbMatrix TransparentShadowGroupImpl::localToEye(SoState* state) const {
   return viewing;
 }
 
+int TransparentShadowGroupImpl::fogType(SoState* state) const {
+  // Like a camera, an environment inside the group is traversed after the uniforms are set.
+  if (environmentPath_)
+    return static_cast<const SoEnvironment*>(environmentPath_->getTail())->fogType.getValue();
+  return int(SoEnvironmentElement::getFogType(state));
+}
+
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   SoState* state = action->getState();
   Context& context = contexts_[SoGLCacheContextElement::get(state)];
@@ -283,7 +297,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column)
       uniforms.eyeToLocal[row * 4 + column] = eyeToLocal[row][column];
-  uniforms.fogType = int(SoEnvironmentElement::getFogType(state));
+  uniforms.fogType = fogType(state);
   uniforms.apply(program, *context.pass);
 
   {

@@ -66,6 +66,7 @@ class TransparentShadowGroupImpl {
 
   void findLights();
   SbMatrix localToEye(SoState* state) const;
+  int fogType(SoState* state) const;
   void buildMaps(SoGLRenderAction* action, Context& context);
   static void contextDestroyed(std::uint32_t context, void* closure);
 
@@ -75,6 +76,7 @@ class TransparentShadowGroupImpl {
   bool lightsValid_ = false;
   std::vector<Light> lights_;
   CoinRef<SoPath> cameraPath_;  // the last camera inside the group, if any
+  CoinRef<SoPath> environmentPath_;  // the last SoEnvironment inside the group, if any
   int subgraphLightsOn_ = 0;
   bool castersValid_ = false;
   SceneTriangles casters_;

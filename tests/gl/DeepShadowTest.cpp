@@ -59,6 +59,20 @@ TEST(DeepShadow, HalfPrecisionAndPcfKeepTheInterior) {
   expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
 }
 
+TEST(DeepShadow, PerVertexColourAlphaSetsOpacity) {
+  ShadowScene scene;
+  Filter packed = kRedGlass;
+  // Packed per-vertex colours replace the material's diffuse colour and transparency:
+  // red with alpha 0x80, i.e. transparency 1 - 128/255.
+  packed.faceNodes =
+      "MaterialBinding { value PER_VERTEX } "
+      "PackedColor { orderedRGBA [ 0xFF000080, 0xFF000080, 0xFF000080, 0xFF000080 ] }";
+  scene.filters = {packed};
+  ShadowScene expected = scene;
+  expected.filters[0].transparency = 1.0 - 128.0 / 255.0;
+  expectPicture(scene, ShadowPicture{&expected, ColourModel::Saturate});
+}
+
 TEST(DeepShadow, OpaqueCasterBlocksAllDirectLight) {
   ShadowScene scene;
   Filter opaque = kRedGlass;

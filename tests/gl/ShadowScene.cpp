@@ -65,7 +65,7 @@ std::string ShadowScene::text() const {
        << ' ' << f.diffuse[1] << ' ' << f.diffuse[2] << " transparency " << f.transparency << " }\n"
        << "      Coordinate3 { point [ " << -s << ' ' << -s << ' ' << h << ", " << s << ' ' << -s
        << ' ' << h << ", " << s << ' ' << s << ' ' << h << ", " << -s << ' ' << s << ' ' << h
-       << " ] }\n"
+       << " ] }\n      " << f.faceNodes << "\n"
        << "      FaceSet { numVertices 4 }\n    }\n";
   }
   iv << "  }\n}\n";

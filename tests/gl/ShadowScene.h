@@ -18,7 +18,8 @@ struct Filter {
   double height = 0.5;
   std::array<double, 3> diffuse{1.0, 0.0, 0.0};
   double transparency = 0.5;
-  std::string nodes;  // Inventor nodes placed before the filter's face (a texture, a style)
+  std::string nodes;      // Inventor nodes placed before the filter's material (a texture)
+  std::string faceNodes;  // Inventor nodes placed after it, just before the face
 };
 
 enum class ColourModel { Monochrome, Saturate, Power };
