@@ -49,7 +49,11 @@ GlStateScope::GlStateScope(Extent extent, const std::vector<int>& textureUnits) 
   vertexArray_ = getInt(GL_VERTEX_ARRAY_BINDING);
   arrayBuffer_ = getInt(GL_ARRAY_BUFFER_BINDING);
   storageBuffer_ = getInt(GL_SHADER_STORAGE_BUFFER_BINDING);
-  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &storageBufferZero_);
+  for (GLuint i = 0; i < 2; ++i)
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &storageBufferBindings_[i]);
+  blendFunc_ = {getInt(GL_BLEND_SRC_RGB), getInt(GL_BLEND_DST_RGB), getInt(GL_BLEND_SRC_ALPHA),
+                getInt(GL_BLEND_DST_ALPHA)};
+  blendEquation_ = {getInt(GL_BLEND_EQUATION_RGB), getInt(GL_BLEND_EQUATION_ALPHA)};
   depthFunc_ = getInt(GL_DEPTH_FUNC);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
   glGetBooleanv(GL_COLOR_WRITEMASK, colourMask_.data());
@@ -81,7 +85,11 @@ GlStateScope::~GlStateScope() {
   glColorMask(colourMask_[0], colourMask_[1], colourMask_[2], colourMask_[3]);
   glDepthMask(depthMask_);
   glDepthFunc(GLenum(depthFunc_));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, GLuint(storageBufferZero_));
+  glBlendFuncSeparate(GLenum(blendFunc_[0]), GLenum(blendFunc_[1]), GLenum(blendFunc_[2]),
+                      GLenum(blendFunc_[3]));
+  glBlendEquationSeparate(GLenum(blendEquation_[0]), GLenum(blendEquation_[1]));
+  for (GLuint i = 0; i < 2; ++i)
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, GLuint(storageBufferBindings_[i]));
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(storageBuffer_));
   glBindBuffer(GL_ARRAY_BUFFER, GLuint(arrayBuffer_));
   glBindVertexArray(GLuint(vertexArray_));

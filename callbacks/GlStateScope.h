@@ -40,11 +40,13 @@ class GlStateScope {
   int vertexArray_ = 0;
   int arrayBuffer_ = 0;
   int storageBuffer_ = 0;
-  int storageBufferZero_ = 0;
+  std::array<int, 2> storageBufferBindings_{};
   int activeTexture_ = 0;
   int depthFunc_ = 0;
   unsigned char depthMask_ = 1;
   std::array<unsigned char, 4> colourMask_{};
+  std::array<int, 4> blendFunc_{};
+  std::array<int, 2> blendEquation_{};
   int clipOrigin_ = 0;
   int clipDepthMode_ = 0;
   std::vector<std::pair<unsigned int, bool>> enables_;

@@ -1,6 +1,7 @@
 #include "nodes/IvShadowInit.h"
 
 #include "nodes/SoDeepShadowLight.h"
+#include "nodes/SoPeelingSeparator.h"
 #include "nodes/SoTransparentShadowGroup.h"
 
 #include <Inventor/SoDB.h>
@@ -11,6 +12,7 @@ void init() {
   SoDB::init();
   SoDeepShadowLight::initClass();
   SoTransparentShadowGroup::initClass();
+  SoPeelingSeparator::initClass();
 }
 
 const char* version() {

@@ -4,7 +4,6 @@
 #include "callbacks/GlStateScope.h"
 #include "callbacks/ShadingUniforms.h"
 #include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoTransparentShadowGroup.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -20,10 +19,10 @@
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/elements/SoViewingMatrixElement.h>
 #include <Inventor/errors/SoDebugError.h>
-#include <Inventor/misc/SoContextHandler.h>
 #include <Inventor/misc/SoNotification.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoEnvironment.h>
+#include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShaderProgram.h>
 
 #include <algorithm>
@@ -53,26 +52,16 @@ void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, flo
 
 }  // namespace
 
-TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoTransparentShadowGroup* owner)
-    : owner_(owner) {
-  SoContextHandler::addContextDestructionCallback(contextDestroyed, this);
-}
+thread_local int activeGroupCount = 0;
 
-TransparentShadowGroupImpl::~TransparentShadowGroupImpl() {
-  SoContextHandler::removeContextDestructionCallback(contextDestroyed, this);
-  // The GL objects of contexts that are still alive can only go while their context is
-  // current; Coin calls scheduled callbacks at that point.
-  for (auto& [id, context] : contexts_) {
-    if (!context.pass) continue;
-    SoGLCacheContextElement::scheduleDeleteCallback(
-        id, [](void* pass, std::uint32_t) { delete static_cast<DeepShadowPass*>(pass); },
-        context.pass.release());
-  }
-}
+TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows,
+                                                       ChildrenRenderer renderChildren)
+    : owner_(owner), deepShadows_(deepShadows), renderChildren_(std::move(renderChildren)) {}
 
-void TransparentShadowGroupImpl::contextDestroyed(std::uint32_t context, void* closure) {
-  // Coin calls this with the dying context current, so the GL objects can go with it.
-  static_cast<TransparentShadowGroupImpl*>(closure)->contexts_.erase(context);
+TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
+
+int TransparentShadowGroupImpl::activeGroups() {
+  return activeGroupCount;
 }
 
 void TransparentShadowGroupImpl::changed(SoNotList* list) {
@@ -123,7 +112,7 @@ void TransparentShadowGroupImpl::findLights() {
     auto* light = static_cast<SoLight*>(paths[i]->getTail());
     if (!light->on.getValue()) continue;
     const int index = subgraphLightsOn_++;
-    if (light->isOfType(SoDeepShadowLight::getClassTypeId()) &&
+    if (deepShadows_ && light->isOfType(SoDeepShadowLight::getClassTypeId()) &&
         int(lights_.size()) < DeepShadowPass::kMaxSlots) {
       Light entry;
       entry.path = CoinRef<SoPath>(paths[i]->copy());
@@ -235,22 +224,24 @@ int TransparentShadowGroupImpl::fogType(SoState* state) const {
 
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   SoState* state = action->getState();
-  Context& context = contexts_[SoGLCacheContextElement::get(state)];
-  if (context.unsupported) return false;
-  if (!context.pass) {
+  Context* found = contexts_.get(SoGLCacheContextElement::get(state), [] {
     std::string whyNot;
-    context.pass = DeepShadowPass::create(whyNot);
-    if (!context.pass) {
-      context.unsupported = true;
+    auto pass = DeepShadowPass::create(whyNot);
+    if (!pass) {
       static bool warned = false;
       if (!warned) {
         warned = true;
         SoDebugError::postWarning("SoTransparentShadowGroup", "rendering without deep shadows: %s",
                                   whyNot.c_str());
       }
-      return false;
+      return std::unique_ptr<Context>();
     }
-  }
+    auto context = std::make_unique<Context>();
+    context->pass = std::move(pass);
+    return context;
+  });
+  if (found == nullptr) return false;
+  Context& context = *found;
   // The maps, uniforms and texture bindings belong to this frame; a render cache above the
   // group must not replay them.
   SoCacheElement::invalidate(state);
@@ -303,10 +294,9 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   {
     const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(maps_.size()));
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
-    if (inPath)
-      owner_->SoSeparator::GLRenderInPath(action);
-    else
-      owner_->SoSeparator::GLRenderBelowPath(action);
+    if (deepShadows_) ++activeGroupCount;
+    renderChildren_(action, inPath);
+    if (deepShadows_) --activeGroupCount;
     SoShapeStyleElement::setShadowsRendering(state, FALSE);
     state->pop();
   }

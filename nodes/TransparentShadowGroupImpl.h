@@ -2,6 +2,7 @@
 
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/DeepShadowStatistics.h"
+#include "nodes/PerContext.h"
 #include "nodes/ShadingProgram.h"
 #include "scene/CoinRef.h"
 #include "scene/SceneTriangles.h"
@@ -11,7 +12,7 @@
 
 #include <array>
 #include <cstdint>
-#include <map>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,7 +22,7 @@ class SoGLRenderAction;
 class SoNotList;
 class SoPath;
 class SoState;
-class SoTransparentShadowGroup;
+class SoSeparator;
 
 namespace ivshadow {
 
@@ -29,9 +30,15 @@ class DeepShadowPass;
 
 // The work behind SoTransparentShadowGroup: finds the deep shadow lights, keeps the casters
 // and the maps up to date per GL context, and renders the children with the shading program.
+// SoPeelingSeparator uses it too, without shadows, for the shading of its layers.
 class TransparentShadowGroupImpl {
  public:
-  explicit TransparentShadowGroupImpl(SoTransparentShadowGroup* owner);
+  // Draws the owner's children (once or, for peeling, several times).
+  using ChildrenRenderer = std::function<void(SoGLRenderAction*, bool inPath)>;
+
+  // `deepShadows` false: deep shadow lights are plain point lights here.
+  TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows,
+                             ChildrenRenderer renderChildren);
   ~TransparentShadowGroupImpl();
   TransparentShadowGroupImpl(const TransparentShadowGroupImpl&) = delete;
   TransparentShadowGroupImpl& operator=(const TransparentShadowGroupImpl&) = delete;
@@ -41,6 +48,9 @@ class TransparentShadowGroupImpl {
   bool render(SoGLRenderAction* action, bool inPath);
   void changed(SoNotList* list);
   const DeepShadowStatistics& statistics() const { return statistics_; }
+  // How many groups with deep shadows are rendering their children right now (on this
+  // thread): a peeling separator inside one shades its layers with that group's program.
+  static int activeGroups();
 
  private:
   struct Light {
@@ -50,7 +60,6 @@ class TransparentShadowGroupImpl {
   };
   struct Context {
     std::unique_ptr<DeepShadowPass> pass;
-    bool unsupported = false;
     std::uint64_t castersVersion = 0;
     std::uint64_t mapsVersion = 0;
   };
@@ -68,11 +77,11 @@ class TransparentShadowGroupImpl {
   SbMatrix localToEye(SoState* state) const;
   int fogType(SoState* state) const;
   void buildMaps(SoGLRenderAction* action, Context& context);
-  static void contextDestroyed(std::uint32_t context, void* closure);
-
-  SoTransparentShadowGroup* owner_;
+  SoSeparator* owner_;
+  bool deepShadows_;
+  ChildrenRenderer renderChildren_;
   ShadingProgram program_;
-  std::map<std::uint32_t, Context> contexts_;
+  PerContext<Context> contexts_;
   bool lightsValid_ = false;
   std::vector<Light> lights_;
   CoinRef<SoPath> cameraPath_;  // the last camera inside the group, if any

@@ -17,6 +17,10 @@ int cubeFace(vec3 d) {
   return d.z >= 0.0 ? 4 : 5;
 }
 
+// Coin sends colours as 8-bit values, and interpolating a constant alpha of 1 across a
+// triangle can give 0.99999994: opacity within half an 8-bit step of 1 counts as opaque.
+bool isOpaque(float alpha) { return alpha >= 1.0 - 0.5 / 255.0; }
+
 const int kColourMonochrome = 0;  // seeds/000 eq. 5.1
 const int kColourSaturate = 1;    // eq. 5.3
 const int kColourPower = 2;       // eq. 5.2

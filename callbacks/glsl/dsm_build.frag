@@ -40,7 +40,7 @@ void main() {
                     transmittance(clamp(colour, 0.0, 1.0), uColourModel);
   anyFragment = 1u;
   // A surface that lets light through may have more surfaces behind it that matter.
-  if (colour.a < 1.0) transparentFragment = 1u;
+  if (!isOpaque(colour.a)) transparentFragment = 1u;
 
   oDepth = depth;
   oVisibility = vec4(visibility, 1.0);

@@ -100,7 +100,7 @@ vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColou
   return attenuation * colour;
 }
 
-void main() {
+vec4 shade(vec4 texel) {
   vec4 colour = gl_Color;
   if (coin_light_model != 0) {
     vec3 normal = normalize(vEyeNormal);
@@ -113,8 +113,7 @@ void main() {
     colour = vec4(clamp(lit, 0.0, 1.0), gl_Color.a);
   }
   if (coin_texunit0_model != kTextureNone)
-    colour = applyTextureModel(colour, texture(textureMap0, gl_TexCoord[0].st),
-                               coin_texunit0_model, gl_TextureEnvColor[0].rgb);
+    colour = applyTextureModel(colour, texel, coin_texunit0_model, gl_TextureEnvColor[0].rgb);
   if (uFogType != 0) {
     float z = gl_FogFragCoord;
     float fog = uFogType == 1   ? (gl_Fog.end - z) * gl_Fog.scale
@@ -122,5 +121,77 @@ void main() {
                                 : exp(-gl_Fog.density * gl_Fog.density * z * z);
     colour.rgb = mix(gl_Fog.color.rgb, colour.rgb, clamp(fog, 0.0, 1.0));
   }
-  gl_FragColor = colour;
+  return colour;
+}
+
+// Depth peeling of SoPeelingSeparator (seeds/000 §2, Bavoil & Myers 2008). Targets: 0 the
+// depth range still to peel (-near, far) under MAX blending, 1 the front layers blended
+// "under" (rgb, 1 - transmittance), 2 this pass's back layer. Every fragment passes the
+// previous values through, so MAX keeps them where no fragment of this pass changes them.
+const int kPeelOff = 0;
+const int kPeelOpaque = 1;       // the opaque pass: only fully opaque fragments
+const int kPeelInit = 2;         // first pass: the depth range of transparent fragments
+const int kPeelFrontToBack = 3;  // one layer per pass, nearest first
+const int kPeelDual = 4;         // the nearest and the farthest layer per pass
+uniform int uPeelMode;
+uniform sampler2D uPeelDepth;
+uniform sampler2D uPeelFront;
+uniform sampler2D uOpaqueDepth;
+layout(std430, binding = 1) buffer PeelProgress {
+  uint deeperLayers;  // some fragment lies strictly inside the range still to peel
+};
+
+void peel(vec4 texel, float alpha) {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float z = gl_FragCoord.z;
+  // Opaque fragments were drawn in the opaque pass; transparent ones behind them are hidden.
+  if (isOpaque(alpha) || z >= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
+  if (uPeelMode == kPeelInit) {
+    gl_FragData[0] = vec4(-z, z, 0.0, 0.0);
+    gl_FragData[1] = vec4(0.0);
+    gl_FragData[2] = vec4(0.0);
+    deeperLayers = 1u;
+    return;
+  }
+  vec2 range = texelFetch(uPeelDepth, pixel, 0).xy;
+  float near = -range.x;
+  float far = uPeelMode == kPeelDual ? range.y : 2.0;
+  vec4 front = texelFetch(uPeelFront, pixel, 0);
+  gl_FragData[0] = vec4(-1.0, -1.0, 0.0, 0.0);
+  gl_FragData[1] = front;
+  gl_FragData[2] = vec4(0.0);
+  // Coin may draw a shape differently from pass to pass (immediate mode, then a render
+  // cache that splits its polygons differently), which moves depth by a few ulps: depths
+  // that close count as the same layer.
+  const float kSameLayer = 1e-6;
+  if (z < near - kSameLayer || z > far + kSameLayer) return;  // peeled in an earlier pass
+  bool onNear = abs(z - near) <= kSameLayer, onFar = abs(z - far) <= kSameLayer;
+  if (!onNear && !onFar) {
+    gl_FragData[0].xy = vec2(-z, uPeelMode == kPeelDual ? z : -1.0);
+    deeperLayers = 1u;
+    return;
+  }
+  vec4 colour = shade(texel);
+  if (onNear) {
+    float transmittance = 1.0 - front.a;
+    gl_FragData[1] = vec4(front.rgb + colour.rgb * colour.a * transmittance,
+                          1.0 - transmittance * (1.0 - colour.a));
+  } else {
+    gl_FragData[2] = colour;
+  }
+}
+
+void main() {
+  vec4 texel = coin_texunit0_model != kTextureNone ? texture(textureMap0, gl_TexCoord[0].st)
+                                                   : vec4(1.0);
+  if (uPeelMode >= kPeelInit) {
+    // The opacity alone decides what a peel pass does; most fragments need no shading.
+    float alpha =
+        applyTextureModel(gl_Color, texel, coin_texunit0_model, gl_TextureEnvColor[0].rgb).a;
+    peel(texel, alpha);
+    return;
+  }
+  vec4 colour = shade(texel);
+  if (uPeelMode == kPeelOpaque && !isOpaque(colour.a)) discard;
+  gl_FragData[0] = colour;
 }

@@ -1,0 +1,173 @@
+#include "callbacks/PeelPass.h"
+
+#include "GlslSources.h"
+#include "callbacks/GlStateScope.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+namespace {
+
+// Shading program modes (shading.frag) and their texture units, above Coin's own units.
+constexpr int kDepthRangeOffset = 0;
+constexpr int kFrontOffset = 1;
+constexpr int kOpaqueDepthOffset = 2;
+constexpr int kBackLayerOffset = 3;
+
+GlTexture makeTarget(GLenum format, int width, int height) {
+  GlTexture texture = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.get(), 1, format, width, height);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return texture;
+}
+
+int current(GLenum name) {
+  GLint value = 0;
+  glGetIntegerv(name, &value);
+  return value;
+}
+
+}  // namespace
+
+std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
+  if (epoxy_gl_version() < 45) {
+    whyNot = "OpenGL 4.5 is needed for depth peeling; this context offers " +
+             std::to_string(epoxy_gl_version() / 10) + "." +
+             std::to_string(epoxy_gl_version() % 10);
+    return nullptr;
+  }
+  std::unique_ptr<PeelPass> pass(new PeelPass);
+  pass->composite_ = GlProgram::link(composeShader(glsl::kPeelCompositeVert),
+                                     composeShader(glsl::kPeelCompositeFrag), whyNot);
+  if (!pass->composite_) return nullptr;
+  pass->progress_ = createBuffer();
+  glNamedBufferData(pass->progress_.get(), sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
+  pass->emptyVertexArray_ = createVertexArray();
+  // The four peel textures sit below the deep shadow maps' units (the top 16).
+  pass->firstUnit_ = current(GL_MAX_TEXTURE_IMAGE_UNITS) - 16 - 4;
+  return pass;
+}
+
+PeelPass::~PeelPass() = default;
+
+void PeelPass::allocate(int width, int height) {
+  if (width == width_ && height == height_) return;
+  width_ = width;
+  height_ = height;
+  for (int i = 0; i < 2; ++i) {
+    depthRange_[i] = makeTarget(GL_RG32F, width, height);
+    front_[i] = makeTarget(GL_RGBA32F, width, height);
+  }
+  backLayer_ = makeTarget(GL_RGBA32F, width, height);
+  backAccumulation_ = makeTarget(GL_RGBA32F, width, height);
+  opaqueDepth_ = makeTarget(GL_DEPTH_COMPONENT32F, width, height);
+  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  for (int i = 0; i < 2; ++i) {
+    peelFramebuffer_[i] = createFramebuffer();
+    const GLuint fbo = peelFramebuffer_[i].get();
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, depthRange_[i].get(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, front_[i].get(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, backLayer_.get(), 0);
+    glNamedFramebufferDrawBuffers(fbo, 3, buffers);
+  }
+  backFramebuffer_ = createFramebuffer();
+  glNamedFramebufferTexture(backFramebuffer_.get(), GL_COLOR_ATTACHMENT0,
+                            backAccumulation_.get(), 0);
+}
+
+void PeelPass::begin(int x, int y, int width, int height) {
+  std::vector<int> units;
+  for (int i = 0; i < 4; ++i) units.push_back(firstUnit_ + i);
+  saved_ = std::make_unique<GlStateScope>(GlStateScope::Extent::WholePass, units);
+  targetFramebuffer_ = current(GL_DRAW_FRAMEBUFFER_BINDING);
+  viewport_ = {x, y, width, height};
+  // Window coordinates index the targets directly, so they reach the viewport's far corner.
+  allocate(x + width, y + height);
+
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(targetFramebuffer_));
+  glCopyTextureSubImage2D(opaqueDepth_.get(), 0, x, y, x, y, width, height);
+  const float clearBack[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glClearNamedFramebufferfv(backFramebuffer_.get(), GL_COLOR, 0, clearBack);
+
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, progress_.get());
+  glBindTextureUnit(GLuint(firstUnit_ + kOpaqueDepthOffset), opaqueDepth_.get());
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_MAX);
+}
+
+void PeelPass::startPass(int pass) {
+  const int write = pass % 2, read = 1 - write;
+  const GLuint fbo = peelFramebuffer_[std::size_t(write)].get();
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+  // Nothing left to peel: near = 1 and far = -1 exclude every depth.
+  const float emptyRange[4] = {-1.0f, -1.0f, 0.0f, 0.0f};
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 0, emptyRange);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 2, zero);
+  glBindTextureUnit(GLuint(firstUnit_ + kDepthRangeOffset), depthRange_[std::size_t(read)].get());
+  glBindTextureUnit(GLuint(firstUnit_ + kFrontOffset), front_[std::size_t(read)].get());
+  const GLuint none = 0u;
+  glNamedBufferSubData(progress_.get(), 0, sizeof(none), &none);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_MAX);
+}
+
+bool PeelPass::finishPass(int pass, bool dual) {
+  if (dual && pass > 0) {
+    // Back layers arrive far to near: each goes over what is behind it (eq. 2.5), the
+    // accumulation's alpha keeping the product of their transmittances.
+    // Coin's traversal of the next pass expects its own program and vertex arrays.
+    const int coinProgram = current(GL_CURRENT_PROGRAM);
+    const int coinVertexArray = current(GL_VERTEX_ARRAY_BINDING);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, backFramebuffer_.get());
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(composite_.name());
+    composite_.setInt("uStep", 0);
+    composite_.setInt("uBackLayer", firstUnit_ + kBackLayerOffset);
+    glBindTextureUnit(GLuint(firstUnit_ + kBackLayerOffset), backLayer_.get());
+    glBindVertexArray(emptyVertexArray_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(GLuint(coinVertexArray));
+    glUseProgram(GLuint(coinProgram));
+  }
+  GLuint deeper = 0u;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(progress_.get(), 0, sizeof(deeper), &deeper);
+  return deeper != 0u;
+}
+
+void PeelPass::end(int passes) {
+  const int last = (passes - 1) % 2;
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(targetFramebuffer_));
+  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  saved_->disableFragmentTests();
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  // dst = src.rgb + dst * src.a, keeping the framebuffer's alpha.
+  glBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
+  glDepthMask(GL_FALSE);
+  glUseProgram(composite_.name());
+  composite_.setInt("uStep", 1);
+  composite_.setInt("uFront", firstUnit_ + kFrontOffset);
+  composite_.setInt("uBackAccumulation", firstUnit_ + kBackLayerOffset);
+  glBindTextureUnit(GLuint(firstUnit_ + kFrontOffset), front_[std::size_t(last)].get());
+  glBindTextureUnit(GLuint(firstUnit_ + kBackLayerOffset), backAccumulation_.get());
+  glBindVertexArray(emptyVertexArray_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  saved_.reset();
+}
+
+void PeelPass::setPeelUniforms(unsigned int program, int mode) const {
+  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), mode);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelDepth"),
+                     firstUnit_ + kDepthRangeOffset);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelFront"),
+                     firstUnit_ + kFrontOffset);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uOpaqueDepth"),
+                     firstUnit_ + kOpaqueDepthOffset);
+}
+
+}  // namespace ivshadow

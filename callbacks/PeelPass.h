@@ -1,0 +1,62 @@
+#pragma once
+
+#include "callbacks/GlHandles.h"
+#include "callbacks/GlProgram.h"
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace ivshadow {
+
+class GlStateScope;
+
+// The GL side of SoPeelingSeparator in one context: the peel targets (depth range, front
+// accumulation, back layer, back accumulation, each sized to the viewport), the copy of the
+// opaque depth, the compositing program and the progress flag. A frame is
+//   begin(); [startPass(i); <Coin draws the children>; finishPass(i)]...; end();
+// with the shading program's peel uniforms set through setPeelUniforms() per pass.
+class PeelPass {
+ public:
+  static std::unique_ptr<PeelPass> create(std::string& whyNot);
+  ~PeelPass();
+
+  // Saves GL state, sizes the targets to cover the viewport (x, y, width, height) in window
+  // coordinates, copies the depth of the opaque pass from the current framebuffer and
+  // switches to the peel targets with MAX blending.
+  void begin(int x, int y, int width, int height);
+  // Clears this pass's targets and binds the previous pass's as textures.
+  void startPass(int pass);
+  // Blends a dual pass's back layer into the back accumulation; returns whether some
+  // fragment lay strictly inside the range still to peel (another pass has work).
+  bool finishPass(int pass, bool dual);
+  // Composites front and back layers over the opaque picture in the framebuffer that was
+  // current at begin(), and restores the saved state.
+  void end(int passes);
+
+  // Sets the shading program's peel mode (kPeel* in shading.frag) and texture units.
+  void setPeelUniforms(unsigned int program, int mode) const;
+
+ private:
+  PeelPass() = default;
+  void allocate(int width, int height);
+
+  GlProgram composite_;
+  GlBuffer progress_;
+  GlVertexArray emptyVertexArray_;
+  int width_ = 0;
+  int height_ = 0;
+  std::array<GlTexture, 2> depthRange_;
+  std::array<GlTexture, 2> front_;
+  GlTexture backLayer_;
+  GlTexture backAccumulation_;
+  GlTexture opaqueDepth_;
+  std::array<GlFramebuffer, 2> peelFramebuffer_;
+  GlFramebuffer backFramebuffer_;
+  std::unique_ptr<GlStateScope> saved_;
+  int targetFramebuffer_ = 0;
+  std::array<int, 4> viewport_{};
+  int firstUnit_ = 0;
+};
+
+}  // namespace ivshadow

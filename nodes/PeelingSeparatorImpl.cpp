@@ -1,0 +1,127 @@
+#include "nodes/PeelingSeparatorImpl.h"
+
+#include "callbacks/PeelPass.h"
+#include "callbacks/ShadingUniforms.h"
+#include "nodes/SoPeelingSeparator.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/elements/SoCacheElement.h>
+#include <Inventor/elements/SoGLCacheContextElement.h>
+#include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoShapeStyleElement.h>
+#include <Inventor/elements/SoViewportRegionElement.h>
+#include <Inventor/errors/SoDebugError.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace ivshadow {
+namespace {
+
+// Shading program modes, as in shading.frag.
+constexpr int kPeelOff = 0;
+constexpr int kPeelOpaque = 1;
+constexpr int kPeelInit = 2;
+constexpr int kPeelFrontToBack = 3;
+constexpr int kPeelDual = 4;
+
+// Coin's transparency type for the traversals below this node: NONE draws transparent shapes
+// at once, unblended (the opaque pass discards them); BLEND draws them at once with blending
+// on, which the peel passes turn into MAX blending.
+void setTransparencyType(SoState* state, SoGLRenderAction::TransparencyType type) {
+  SoShapeStyleElement::setTransparencyType(state, int32_t(type));
+  SoLazyElement::setTransparencyType(state, int32_t(type));
+}
+
+}  // namespace
+
+PeelingSeparatorImpl::PeelingSeparatorImpl(SoPeelingSeparator* owner)
+    : owner_(owner),
+      shading_(owner, false,
+               [this](SoGLRenderAction* action, bool inPath) { peel(action, inPath); }) {}
+
+PeelingSeparatorImpl::~PeelingSeparatorImpl() = default;
+
+void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) {
+  if (inPath)
+    owner_->SoSeparator::GLRenderInPath(action);
+  else
+    owner_->SoSeparator::GLRenderBelowPath(action);
+}
+
+void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
+  // Inside a deep shadow group its program, uniforms and maps are already in place.
+  if (TransparentShadowGroupImpl::activeGroups() > 0) {
+    peel(action, inPath);
+    return;
+  }
+  if (!shading_.render(action, inPath)) renderPlainly(action, inPath);
+}
+
+void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
+  SoState* state = action->getState();
+  PeelPass* pass = passes_.get(SoGLCacheContextElement::get(state), [] {
+    std::string whyNot;
+    auto made = PeelPass::create(whyNot);
+    if (!made) {
+      static bool warned = false;
+      if (!warned) {
+        warned = true;
+        SoDebugError::postWarning("SoPeelingSeparator", "rendering without depth peeling: %s",
+                                  whyNot.c_str());
+      }
+    }
+    return made;
+  });
+  const unsigned int program = currentProgram();
+  if (pass == nullptr || program == 0) {
+    renderPlainly(action, inPath);
+    return;
+  }
+  // Each pass sets its own uniforms and targets; no cache above may replay one of them.
+  SoCacheElement::invalidate(state);
+
+  pass->setPeelUniforms(program, kPeelOpaque);
+  state->push();
+  setTransparencyType(state, SoGLRenderAction::NONE);
+  renderPlainly(action, inPath);
+  state->pop();
+
+  const auto start = std::chrono::steady_clock::now();
+  const SbViewportRegion& region = SoViewportRegionElement::get(state);
+  const SbVec2s origin = region.getViewportOriginPixels();
+  const SbVec2s size = region.getViewportSizePixels();
+  const bool dual = owner_->method.getValue() == SoPeelingSeparator::DUAL;
+  const int requested = owner_->maxPasses.getValue();
+  const int cap = requested > 0 ? std::min(requested, SoPeelingSeparator::kMaxPasses)
+                                : SoPeelingSeparator::kMaxPasses;
+  const bool stopEarly = owner_->earlyTermination.getValue();
+
+  pass->begin(origin[0], origin[1], size[0], size[1]);
+  state->push();
+  setTransparencyType(state, SoGLRenderAction::BLEND);
+  int passes = 0;
+  for (;;) {
+    pass->startPass(passes);
+    pass->setPeelUniforms(program, passes == 0 ? kPeelInit : dual ? kPeelDual : kPeelFrontToBack);
+    renderPlainly(action, inPath);
+    const bool deeper = pass->finishPass(passes, dual);
+    ++passes;
+    if (passes >= cap || (stopEarly && !deeper)) break;
+  }
+  state->pop();
+  pass->end(passes);
+  pass->setPeelUniforms(program, kPeelOff);
+  // The passes drew with blending and targets Coin did not choose; the scope restored GL,
+  // and Coin must not trust what it believes it last sent.
+  SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
+
+  statistics_.passes = passes;
+  statistics_.peelMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+          .count();
+  ++statistics_.frames;
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,46 @@
+#include "nodes/SoPeelingSeparator.h"
+
+#include "nodes/PeelingSeparatorImpl.h"
+
+#include <Inventor/actions/SoGLRenderAction.h>
+
+SO_NODE_SOURCE(SoPeelingSeparator);
+
+void SoPeelingSeparator::initClass() {
+  if (getClassTypeId() != SoType::badType()) return;
+  // Registered without the "So" prefix, as Coin registers its own nodes (see
+  // SoTransparentShadowGroup).
+  PRIVATE_COMMON_INIT_CODE(SoPeelingSeparator, "PeelingSeparator",
+                           &SoPeelingSeparator::createInstance, SoSeparator);
+}
+
+SoPeelingSeparator::SoPeelingSeparator() : impl_(new ivshadow::PeelingSeparatorImpl(this)) {
+  SO_NODE_CONSTRUCTOR(SoPeelingSeparator);
+  SO_NODE_ADD_FIELD(method, (DUAL));
+  SO_NODE_ADD_FIELD(maxPasses, (0));
+  SO_NODE_ADD_FIELD(earlyTermination, (TRUE));
+  SO_NODE_DEFINE_ENUM_VALUE(Method, DUAL);
+  SO_NODE_DEFINE_ENUM_VALUE(Method, FRONT_TO_BACK);
+  SO_NODE_SET_SF_ENUM_TYPE(method, Method);
+}
+
+SoPeelingSeparator::~SoPeelingSeparator() {
+  delete impl_;
+}
+
+const ivshadow::PeelStatistics& SoPeelingSeparator::getStatistics() const {
+  return impl_->statistics();
+}
+
+void SoPeelingSeparator::GLRenderBelowPath(SoGLRenderAction* action) {
+  impl_->render(action, false);
+}
+
+void SoPeelingSeparator::GLRenderInPath(SoGLRenderAction* action) {
+  impl_->render(action, true);
+}
+
+void SoPeelingSeparator::notify(SoNotList* list) {
+  impl_->changed(list);
+  inherited::notify(list);
+}

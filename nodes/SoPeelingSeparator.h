@@ -1,0 +1,73 @@
+#pragma once
+
+#include <Inventor/fields/SoSFBool.h>
+#include <Inventor/fields/SoSFEnum.h>
+#include <Inventor/fields/SoSFInt32.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+namespace ivshadow {
+class PeelingSeparatorImpl;
+struct PeelStatistics;
+}  // namespace ivshadow
+
+/*!
+  \class SoPeelingSeparator
+  A separator whose transparent children are composited in exact depth order per pixel, by
+  depth peeling, whatever their traversal order: interpenetrating and self-overlapping
+  transparent surfaces, textured transparency and per-vertex alpha come out right.
+
+  Opaque children are drawn once as usual. Transparent fragments are then peeled layer by
+  layer and composited over them (seeds/000 eq. 2.5-2.8): with DUAL, the nearest and the
+  farthest remaining layer per pass (N layers in N/2 + 1 passes, Bavoil & Myers 2008); with
+  FRONT_TO_BACK one layer per pass. Coin's transparency type is overridden inside the
+  separator. Inside a SoTransparentShadowGroup every peeled layer is shaded with the group's
+  deep shadows.
+
+  FILE FORMAT/DEFAULTS:
+  \code
+    PeelingSeparator {
+        renderCaching AUTO
+        boundingBoxCaching AUTO
+        renderCulling AUTO
+        pickCulling AUTO
+        method DUAL             # DUAL or FRONT_TO_BACK
+        maxPasses 0             # passes per frame, the first finding the depth range;
+                                #   0: until no layer is left, at most 64
+        earlyTermination TRUE   # stop when a pass found no deeper layer; FALSE always runs
+                                #   maxPasses (64 when 0)
+    }
+  \endcode
+*/
+class SoPeelingSeparator : public SoSeparator {
+  typedef SoSeparator inherited;
+  SO_NODE_HEADER(SoPeelingSeparator);
+
+ public:
+  static void initClass();
+  SoPeelingSeparator();
+
+  enum Method {
+    DUAL,          //!< nearest and farthest layer per pass
+    FRONT_TO_BACK  //!< nearest layer per pass
+  };
+
+  //! Hard limit on passes per frame, whatever maxPasses says.
+  static constexpr int kMaxPasses = 64;
+
+  SoSFEnum method;
+  SoSFInt32 maxPasses;
+  SoSFBool earlyTermination;
+
+  //! Passes and peel time of the last frame rendered in any context.
+  const ivshadow::PeelStatistics& getStatistics() const;
+
+  void GLRenderBelowPath(SoGLRenderAction* action) override;
+  void GLRenderInPath(SoGLRenderAction* action) override;
+  void notify(SoNotList* list) override;
+
+ protected:
+  ~SoPeelingSeparator() override;
+
+ private:
+  ivshadow::PeelingSeparatorImpl* impl_;
+};
