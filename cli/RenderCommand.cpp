@@ -8,6 +8,7 @@
 #include "image/PngFile.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/IvShadowInit.h"
+#include "nodes/PeelStatistics.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
@@ -67,6 +68,10 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   }
   stats["dsm_layers_used"] = lights;
   stats["dsm_bytes"] = bytes;
+  // Peeling runs every frame; these are the last frame's figures, summed over separators.
+  const PeelStatistics peeling = collectPeelStatistics(root);
+  stats["passes"]["peel_ms"] = peeling.peelMs;
+  stats["peel_passes"] = peeling.passes;
   return stats;
 }
 

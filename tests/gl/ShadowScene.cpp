@@ -58,6 +58,7 @@ std::string ShadowScene::text() const {
   iv << "      ] }\n      QuadMesh { verticesPerRow " << floorCells + 1 << " verticesPerColumn "
      << floorCells + 1 << " }\n    }\n";
   int index = 0;
+  if (peelFilters) iv << "    PeelingSeparator {\n";
   for (const Filter& f : filters) {
     const double s = f.halfSize, h = f.height;
     iv << "    DEF Filter" << index++ << " Separator {\n      " << f.nodes << "\n"
@@ -68,6 +69,7 @@ std::string ShadowScene::text() const {
        << " ] }\n      " << f.faceNodes << "\n"
        << "      FaceSet { numVertices 4 }\n    }\n";
   }
+  if (peelFilters) iv << "    }\n";
   iv << "  }\n}\n";
   return iv.str();
 }

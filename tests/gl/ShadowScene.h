@@ -44,6 +44,7 @@ struct ShadowScene {
   int floorCells = 1;  // quads per side of the floor mesh
   int lightCount = 1;  // deep shadow lights at the same place, intensity 1 / lightCount each
   bool shadowGroupActive = true;
+  bool peelFilters = false;  // the filters inside a PeelingSeparator
 
   std::string text() const;
 };
