@@ -41,8 +41,8 @@ GLuint compile(GLenum stage, const std::string& source, std::string& error) {
 
 }  // namespace
 
-std::string composeShader(const char* body) {
-  return std::string("#version 450 compatibility\n") + glsl::kDeepShadowCommonGlsl + body;
+std::string composeShader(const char* body, const std::string& defines) {
+  return std::string("#version 450 compatibility\n") + defines + glsl::kDeepShadowCommonGlsl + body;
 }
 
 GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fragmentSource,

@@ -27,8 +27,8 @@ class GlProgram {
   GlProgramObject program_;
 };
 
-// "#version 450 compatibility", the shared declarations, then `body`: how every program of
-// the plugin is assembled from the embedded .glsl files.
-std::string composeShader(const char* body);
+// "#version 450 compatibility", `defines`, the shared declarations, then `body`: how every
+// program of the plugin is assembled from the embedded .glsl files.
+std::string composeShader(const char* body, const std::string& defines = {});
 
 }  // namespace ivshadow

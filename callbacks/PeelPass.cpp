@@ -69,11 +69,12 @@ void PeelPass::allocate(int width, int height) {
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, depthRange_[i].get(), 0);
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, front_[i].get(), 0);
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, backLayer_.get(), 0);
+    glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, opaqueDepth_.get(), 0);
     glNamedFramebufferDrawBuffers(fbo, 3, buffers);
   }
   backFramebuffer_ = createFramebuffer();
-  glNamedFramebufferTexture(backFramebuffer_.get(), GL_COLOR_ATTACHMENT0,
-                            backAccumulation_.get(), 0);
+  glNamedFramebufferTexture(backFramebuffer_.get(), GL_COLOR_ATTACHMENT0, backAccumulation_.get(),
+                            0);
 }
 
 void PeelPass::begin(int x, int y, int width, int height) {
@@ -140,6 +141,10 @@ bool PeelPass::finishPass(int pass, bool dual) {
 }
 
 void PeelPass::end(int passes) {
+  if (passes == 0) {  // nothing was peeled: leave the opaque picture as it is
+    saved_.reset();
+    return;
+  }
   const int last = (passes - 1) % 2;
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(targetFramebuffer_));
   glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);

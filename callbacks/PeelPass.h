@@ -31,7 +31,7 @@ class PeelPass {
   // fragment lay strictly inside the range still to peel (another pass has work).
   bool finishPass(int pass, bool dual);
   // Composites front and back layers over the opaque picture in the framebuffer that was
-  // current at begin(), and restores the saved state.
+  // current at begin() (nothing when `passes` is 0), and restores the saved state.
   void end(int passes);
 
   // Sets the shading program's peel mode (kPeel* in shading.frag) and texture units.

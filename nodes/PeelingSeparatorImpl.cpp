@@ -7,6 +7,7 @@
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoCacheElement.h>
+#include <Inventor/elements/SoDepthBufferElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
 #include <Inventor/elements/SoGLLazyElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
@@ -37,9 +38,9 @@ void setTransparencyType(SoState* state, SoGLRenderAction::TransparencyType type
 }  // namespace
 
 PeelingSeparatorImpl::PeelingSeparatorImpl(SoPeelingSeparator* owner)
-    : owner_(owner),
-      shading_(owner, false,
-               [this](SoGLRenderAction* action, bool inPath) { peel(action, inPath); }) {}
+    : owner_(owner), shading_(owner, false, [this](SoGLRenderAction* action, bool inPath) {
+        peel(action, inPath);
+      }) {}
 
 PeelingSeparatorImpl::~PeelingSeparatorImpl() = default;
 
@@ -52,7 +53,7 @@ void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) 
 
 void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   // Inside a deep shadow group its program, uniforms and maps are already in place.
-  if (TransparentShadowGroupImpl::activeGroups() > 0) {
+  if (TransparentShadowGroupImpl::activeGroup() != nullptr) {
     peel(action, inPath);
     return;
   }
@@ -100,11 +101,23 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
 
   pass->begin(origin[0], origin[1], size[0], size[1]);
   state->push();
+  TransparentShadowGroupImpl* group = TransparentShadowGroupImpl::activeGroup();
+  const unsigned int peelProgram = (group ? group : &shading_)->bindPeelProgram(action);
+  if (peelProgram == 0) {
+    state->pop();
+    pass->end(0);
+    return;
+  }
   setTransparencyType(state, SoGLRenderAction::BLEND);
+  // Against the opaque pass's depth: only what lies in front of it is peeled, and the
+  // early depth test of the peel program skips the rest before shading.
+  SoDepthBufferElement::set(state, TRUE, FALSE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
   int passes = 0;
   for (;;) {
     pass->startPass(passes);
-    pass->setPeelUniforms(program, passes == 0 ? kPeelInit : dual ? kPeelDual : kPeelFrontToBack);
+    pass->setPeelUniforms(peelProgram, passes == 0 ? kPeelInit
+                                       : dual      ? kPeelDual
+                                                   : kPeelFrontToBack);
     renderPlainly(action, inPath);
     const bool deeper = pass->finishPass(passes, dual);
     ++passes;
@@ -119,8 +132,7 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
 
   statistics_.passes = passes;
   statistics_.peelMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-          .count();
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics_.frames;
 }
 

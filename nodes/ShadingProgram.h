@@ -12,7 +12,8 @@ namespace ivshadow {
 // two-sided lighting, texture model) up to date.
 class ShadingProgram {
  public:
-  ShadingProgram();
+  // `peelPasses`: the variant for SoPeelingSeparator's peel passes (early depth test).
+  explicit ShadingProgram(bool peelPasses = false);
   SoShaderProgram* node() const { return program_.get(); }
 
  private:

@@ -21,13 +21,13 @@ void SoTransparentShadowGroup::initClass() {
 }
 
 SoTransparentShadowGroup::SoTransparentShadowGroup()
-    : impl_(new ivshadow::TransparentShadowGroupImpl(
-          this, true, [this](SoGLRenderAction* action, bool inPath) {
-            if (inPath)
-              inherited::GLRenderInPath(action);
-            else
-              inherited::GLRenderBelowPath(action);
-          })) {
+    : impl_(new ivshadow::TransparentShadowGroupImpl(this, true,
+                                                     [this](SoGLRenderAction* action, bool inPath) {
+                                                       if (inPath)
+                                                         inherited::GLRenderInPath(action);
+                                                       else
+                                                         inherited::GLRenderBelowPath(action);
+                                                     })) {
   SO_NODE_CONSTRUCTOR(SoTransparentShadowGroup);
   SO_NODE_ADD_FIELD(isActive, (TRUE));
 }

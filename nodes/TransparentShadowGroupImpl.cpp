@@ -52,7 +52,7 @@ void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, flo
 
 }  // namespace
 
-thread_local int activeGroupCount = 0;
+thread_local TransparentShadowGroupImpl* activeGroupNow = nullptr;
 
 TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows,
                                                        ChildrenRenderer renderChildren)
@@ -60,8 +60,16 @@ TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner, bool 
 
 TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
 
-int TransparentShadowGroupImpl::activeGroups() {
-  return activeGroupCount;
+TransparentShadowGroupImpl* TransparentShadowGroupImpl::activeGroup() {
+  return activeGroupNow;
+}
+
+unsigned int TransparentShadowGroupImpl::bindPeelProgram(SoGLRenderAction* action) {
+  if (renderingPass_ == nullptr) return 0;
+  peelProgram_.node()->GLRender(action);
+  const unsigned int program = currentProgram();
+  if (program != 0) uniforms_.apply(program, *renderingPass_);
+  return program;
 }
 
 void TransparentShadowGroupImpl::changed(SoNotList* list) {
@@ -265,7 +273,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     state->pop();
     return false;
   }
-  ShadingUniforms uniforms;
+  ShadingUniforms& uniforms = uniforms_;
+  uniforms = ShadingUniforms{};
   const int outside = SoLightElement::getLights(state).getLength();
   uniforms.lightCount = std::min(kMaxLights, outside + subgraphLightsOn_);
   uniforms.shadowSlot.fill(-1);
@@ -294,9 +303,12 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   {
     const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(maps_.size()));
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
-    if (deepShadows_) ++activeGroupCount;
+    TransparentShadowGroupImpl* outer = activeGroupNow;
+    if (deepShadows_) activeGroupNow = this;
+    renderingPass_ = context.pass.get();
     renderChildren_(action, inPath);
-    if (deepShadows_) --activeGroupCount;
+    renderingPass_ = nullptr;
+    activeGroupNow = outer;
     SoShapeStyleElement::setShadowsRendering(state, FALSE);
     state->pop();
   }

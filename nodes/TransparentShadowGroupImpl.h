@@ -1,5 +1,6 @@
 #pragma once
 
+#include "callbacks/ShadingUniforms.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/PerContext.h"
@@ -37,8 +38,7 @@ class TransparentShadowGroupImpl {
   using ChildrenRenderer = std::function<void(SoGLRenderAction*, bool inPath)>;
 
   // `deepShadows` false: deep shadow lights are plain point lights here.
-  TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows,
-                             ChildrenRenderer renderChildren);
+  TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows, ChildrenRenderer renderChildren);
   ~TransparentShadowGroupImpl();
   TransparentShadowGroupImpl(const TransparentShadowGroupImpl&) = delete;
   TransparentShadowGroupImpl& operator=(const TransparentShadowGroupImpl&) = delete;
@@ -48,9 +48,14 @@ class TransparentShadowGroupImpl {
   bool render(SoGLRenderAction* action, bool inPath);
   void changed(SoNotList* list);
   const DeepShadowStatistics& statistics() const { return statistics_; }
-  // How many groups with deep shadows are rendering their children right now (on this
-  // thread): a peeling separator inside one shades its layers with that group's program.
-  static int activeGroups();
+  // The innermost group with deep shadows rendering its children right now on this thread,
+  // or null: a peeling separator inside one shades its layers with that group's shading.
+  static TransparentShadowGroupImpl* activeGroup();
+
+  // While the children render: binds the peel-pass variant of the shading program (through
+  // Coin, in the action's current state) with the same uniforms, and returns its GL name
+  // (0 when it failed to build).
+  unsigned int bindPeelProgram(SoGLRenderAction* action);
 
  private:
   struct Light {
@@ -81,10 +86,14 @@ class TransparentShadowGroupImpl {
   bool deepShadows_;
   ChildrenRenderer renderChildren_;
   ShadingProgram program_;
+  ShadingProgram peelProgram_{true};
   PerContext<Context> contexts_;
+  // Valid while the children render.
+  ShadingUniforms uniforms_;
+  const DeepShadowPass* renderingPass_ = nullptr;
   bool lightsValid_ = false;
   std::vector<Light> lights_;
-  CoinRef<SoPath> cameraPath_;  // the last camera inside the group, if any
+  CoinRef<SoPath> cameraPath_;       // the last camera inside the group, if any
   CoinRef<SoPath> environmentPath_;  // the last SoEnvironment inside the group, if any
   int subgraphLightsOn_ = 0;
   bool castersValid_ = false;

@@ -3,6 +3,13 @@
 // visibility looked up in its cube deep shadow map.
 const int kMaxLights = 8;
 
+#ifdef IVSHADOW_PEEL_PASSES
+// The peel passes' variant: the depth test against the opaque picture (less, no writes)
+// runs before shading, so hidden and opaque fragments cost nothing. The other passes must
+// not use it: there a discarded fragment must not write depth.
+layout(early_fragment_tests) in;
+#endif
+
 in vec3 vEyePosition;
 in vec3 vEyeNormal;
 

@@ -21,8 +21,8 @@ std::vector<PeelReference::Hit> PeelReference::hits(double x, double y) const {
   const auto& v = triangles_.vertices;
   for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
     const TriangleVertex &a = v[i], &b = v[i + 1], &c = v[i + 2];
-    const double ax = a.position[0], ay = a.position[1], bx = b.position[0],
-                 by = b.position[1], cx = c.position[0], cy = c.position[1];
+    const double ax = a.position[0], ay = a.position[1], bx = b.position[0], by = b.position[1],
+                 cx = c.position[0], cy = c.position[1];
     const double area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
     if (std::abs(area) < 1e-14) continue;  // seen edge-on: no pixel centre is covered
     const double wa = ((bx - x) * (cy - y) - (cx - x) * (by - y)) / area;
@@ -32,8 +32,8 @@ std::vector<PeelReference::Hit> PeelReference::hits(double x, double y) const {
     Hit hit;
     hit.depth = -(wa * a.position[2] + wb * b.position[2] + wc * c.position[2]);
     for (int k = 0; k < 4; ++k)
-      hit.colour[std::size_t(k)] = wa * quantise(a.colour[k]) + wb * quantise(b.colour[k]) +
-                                   wc * quantise(c.colour[k]);
+      hit.colour[std::size_t(k)] =
+          wa * quantise(a.colour[k]) + wb * quantise(b.colour[k]) + wc * quantise(c.colour[k]);
     out.push_back(hit);
   }
   std::sort(out.begin(), out.end(), [](const Hit& p, const Hit& q) { return p.depth < q.depth; });
@@ -62,7 +62,8 @@ std::array<double, 3> PeelReference::composite(std::vector<Hit> all, Keep keep) 
     transmittance *= 1.0 - layer.colour[3];
   }
   if (opaque)
-    for (int k = 0; k < 3; ++k) colour[std::size_t(k)] += transmittance * opaque->colour[std::size_t(k)];
+    for (int k = 0; k < 3; ++k)
+      colour[std::size_t(k)] += transmittance * opaque->colour[std::size_t(k)];
   for (double& c : colour) c *= 255.0;
   return colour;
 }
@@ -87,8 +88,8 @@ int PeelReference::depthComplexity() const {
   for (int py = 0; py < size_; ++py)
     for (int px = 0; px < size_; ++px) {
       int count = 0;
-      for (const Hit& hit : hits(-viewHeight_ / 2 + (px + 0.5) * unit,
-                                 viewHeight_ / 2 - (py + 0.5) * unit)) {
+      for (const Hit& hit :
+           hits(-viewHeight_ / 2 + (px + 0.5) * unit, viewHeight_ / 2 - (py + 0.5) * unit)) {
         if (hit.colour[3] >= 1.0 - 0.5 / 255.0) break;
         ++count;
       }

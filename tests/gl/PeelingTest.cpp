@@ -23,7 +23,8 @@ constexpr double kViewHeight = 2.4;
 
 // A surface given as explicit triangles (so Coin draws exactly the triangles SoCallbackAction
 // reports) from a (u, v) -> point parametrisation over an n x m grid.
-std::string triangleMesh(int n, int m, const std::function<std::array<double, 3>(double, double)>& at) {
+std::string triangleMesh(int n, int m,
+                         const std::function<std::array<double, 3>(double, double)>& at) {
   std::ostringstream iv;
   iv << "Coordinate3 { point [\n";
   for (int j = 0; j <= m; ++j)
@@ -44,8 +45,8 @@ std::string triangleMesh(int n, int m, const std::function<std::array<double, 3>
 std::string sceneText(const std::string& peelFields, const std::string& content) {
   std::ostringstream iv;
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
-     << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height "
-     << kViewHeight << " }\n"
+     << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height " << kViewHeight
+     << " }\n"
      << "  LightModel { model BASE_COLOR }\n"
      << "  ShapeHints { vertexOrdering UNKNOWN_ORDERING shapeType UNKNOWN_SHAPE_TYPE }\n"
      << "  DEF Peel PeelingSeparator { " << peelFields << "\n"
@@ -67,20 +68,22 @@ std::string planesAndSphere() {
   };
   for (const Plane& p : {Plane{"1 0 0", 0.5, 0.6, 0.0}, Plane{"0 1 0", 0.6, 0.0, 0.7},
                          Plane{"0 0 1", 0.4, -0.5, -0.4}}) {
-    iv << "Separator { Material { diffuseColor " << p.colour << " transparency "
-       << p.transparency << " }\n"
-       << triangleMesh(1, 1, [&](double u, double v) -> std::array<double, 3> {
-            const double x = -0.8 + 1.6 * u, y = -0.8 + 1.6 * v;
-            return {x, y, x * std::tan(p.tiltY) + y * std::tan(p.tiltX)};
-          })
+    iv << "Separator { Material { diffuseColor " << p.colour << " transparency " << p.transparency
+       << " }\n"
+       << triangleMesh(1, 1,
+                       [&](double u, double v) -> std::array<double, 3> {
+                         const double x = -0.8 + 1.6 * u, y = -0.8 + 1.6 * v;
+                         return {x, y, x * std::tan(p.tiltY) + y * std::tan(p.tiltX)};
+                       })
        << "}\n";
   }
   iv << "Separator { Material { diffuseColor 1 1 0 transparency 0.5 }\n"
-     << triangleMesh(24, 12, [&](double u, double v) -> std::array<double, 3> {
-          const double phi = 2 * pi * u, theta = pi * v, r = 0.45;
-          return {0.3 + r * std::sin(theta) * std::cos(phi),
-                  0.2 + r * std::sin(theta) * std::sin(phi), r * std::cos(theta)};
-        })
+     << triangleMesh(24, 12,
+                     [&](double u, double v) -> std::array<double, 3> {
+                       const double phi = 2 * pi * u, theta = pi * v, r = 0.45;
+                       return {0.3 + r * std::sin(theta) * std::cos(phi),
+                               0.2 + r * std::sin(theta) * std::sin(phi), r * std::cos(theta)};
+                     })
      << "}\n"
      << "Separator { MaterialBinding { value PER_VERTEX_INDEXED }\n"
      << "  PackedColor { orderedRGBA [ 0xFF00FF20, 0xFF00FFE0, 0x00FFFF90, 0xFFFFFF60 ] }\n"
@@ -94,15 +97,16 @@ std::string tippedTorus() {
   const double pi = std::acos(-1.0);
   std::ostringstream iv;
   iv << "Separator { Material { diffuseColor 0 0.8 0.9 transparency 0.6 }\n"
-     << triangleMesh(48, 16, [&](double u, double v) -> std::array<double, 3> {
-          const double a = 2 * pi * u, b = 2 * pi * v, big = 0.6, small = 0.22;
-          const double x = (big + small * std::cos(b)) * std::cos(a);
-          const double y = (big + small * std::cos(b)) * std::sin(a);
-          const double z = small * std::sin(b);
-          const double tilt = 1.1;  // about x
-          return {x, y * std::cos(tilt) - z * std::sin(tilt),
-                  y * std::sin(tilt) + z * std::cos(tilt)};
-        })
+     << triangleMesh(48, 16,
+                     [&](double u, double v) -> std::array<double, 3> {
+                       const double a = 2 * pi * u, b = 2 * pi * v, big = 0.6, small = 0.22;
+                       const double x = (big + small * std::cos(b)) * std::cos(a);
+                       const double y = (big + small * std::cos(b)) * std::sin(a);
+                       const double z = small * std::sin(b);
+                       const double tilt = 1.1;  // about x
+                       return {x, y * std::cos(tilt) - z * std::sin(tilt),
+                               y * std::sin(tilt) + z * std::cos(tilt)};
+                     })
      << "}\n";
   return iv.str();
 }
@@ -234,7 +238,8 @@ TEST(Peeling, DualAndFrontToBackAgree) {
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x)
       for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(dual.image.pixel(x, y)[c] - frontToBack.image.pixel(x, y)[c]));
+        worst =
+            std::max(worst, std::abs(dual.image.pixel(x, y)[c] - frontToBack.image.pixel(x, y)[c]));
   EXPECT_LE(worst, 1) << "both composite the same layers in float";
   // DUAL peels two layers a pass: fewer passes for the same picture.
   EXPECT_LT(dual.stats.passes, frontToBack.stats.passes);

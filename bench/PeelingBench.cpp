@@ -1,0 +1,109 @@
+// Order-independent transparency cost and error against depth complexity: the plugin's
+// SoPeelingSeparator (DUAL, FRONT_TO_BACK) against Coin's SORTED_LAYERS_BLEND with as many
+// passes as there are layers, and plain BLEND. Run: build/bin/ivshadow_bench
+// --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
+// largest channel error (0..255) against the exact CPU compositing of tests/gl/PeelReference.
+#include "headless/OffscreenRenderer.h"
+#include "nodes/IvShadowInit.h"
+#include "tests/gl/PeelReference.h"
+
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace {
+
+constexpr int kSize = 400;
+constexpr double kViewHeight = 2.4;
+
+enum Method { kBlend, kSortedLayers, kDual, kFrontToBack };
+
+// `depth` coloured glass sheets stacked over an opaque floor, each tilted so that it cuts
+// its neighbours: every pixel of the centre sees `depth` transparent layers, in an order that
+// changes across the picture. Drawn in a shuffled order so that traversal order is wrong.
+std::string stackText(int depth, Method method) {
+  std::ostringstream iv;
+  iv << "#Inventor V2.1 ascii\nSeparator {\n"
+     << "OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height " << kViewHeight
+     << " }\nLightModel { model BASE_COLOR }\n"
+     << (method == kDual          ? "PeelingSeparator { method DUAL\n"
+         : method == kFrontToBack ? "PeelingSeparator { method FRONT_TO_BACK\n"
+                                  : "Separator {\n")
+     << "BaseColor { rgb 0.5 0.5 0.5 }\n"
+     << "Coordinate3 { point [ -1.1 -1.1 -2, 1.1 -1.1 -2, 1.1 1.1 -2, -1.1 1.1 -2 ] }\n"
+     << "FaceSet { numVertices 4 }\n";
+  for (int k = 0; k < depth; ++k) {
+    const int i = (k * 7) % depth;  // shuffled
+    const double z = -1.0 + 2.0 * (i + 0.5) / depth;
+    const double slope = 0.9 / depth * ((i % 2) ? 1.0 : -1.0);
+    const double r = 0.5 + 0.5 * std::sin(i * 1.3), g = 0.5 + 0.5 * std::sin(i * 2.1 + 1),
+                 b = 0.5 + 0.5 * std::sin(i * 0.7 + 2);
+    iv << "Separator { Material { diffuseColor " << r << ' ' << g << ' ' << b
+       << " transparency 0.6 }\n"
+       << "Coordinate3 { point [ -1 -1 " << z - slope << ", 1 -1 " << z - slope << ", 1 1 "
+       << z + slope << ", -1 1 " << z + slope << " ] }\n"
+       << "IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ] } }\n";
+  }
+  iv << "}\n}\n";
+  return iv.str();
+}
+
+SoSeparator* read(const std::string& text) {
+  SoInput input;
+  input.setBuffer(text.data(), text.size());
+  SoSeparator* root = SoDB::readAll(&input);
+  root->ref();
+  return root;
+}
+
+// Args: method, depth complexity.
+void Peel(benchmark::State& state) {
+  ivshadow::init();
+  const auto method = Method(state.range(0));
+  const int depth = int(state.range(1));
+  std::string error;
+  auto renderer = ivshadow::OffscreenRenderer::create(kSize, kSize, error);
+  if (!renderer) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  if (method == kSortedLayers) {
+    renderer->action().setTransparencyType(SoGLRenderAction::SORTED_LAYERS_BLEND);
+    renderer->action().setSortedLayersNumPasses(depth);
+  }
+  const std::string text = stackText(depth, method);
+  SoSeparator* root = read(text);
+  renderer->render(root);
+  for (auto _ : state) state.SetIterationTime(renderer->render(root).wallMs * 1e-3);
+
+  const ivshadow::Image image = renderer->read();
+  const ivshadow::test::PeelReference reference(root, kViewHeight, kSize);
+  double worst = 0.0;
+  for (int y = 0; y < kSize; y += 4)
+    for (int x = 0; x < kSize; x += 4)
+      if (const auto expected = reference.pixel(x, y))
+        for (int c = 0; c < 3; ++c)
+          worst = std::max(worst, std::abs(image.pixel(x, y)[c] - (*expected)[std::size_t(c)]));
+  state.counters["max_error"] = worst;
+  state.SetLabel(method == kBlend          ? "BLEND"
+                 : method == kSortedLayers ? "SORTED_LAYERS_BLEND"
+                 : method == kDual         ? "PeelingSeparator DUAL"
+                                           : "PeelingSeparator FRONT_TO_BACK");
+  renderer.reset();
+  root->unref();
+}
+
+void depths(benchmark::internal::Benchmark* b) {
+  for (int method : {kBlend, kSortedLayers, kDual, kFrontToBack})
+    for (int depth : {1, 2, 4, 8, 16}) b->Args({method, depth});
+  b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(5);
+}
+BENCHMARK(Peel)->Apply(depths);
+
+}  // namespace
