@@ -20,6 +20,10 @@ std::vector<PeelReference::Hit> PeelReference::hits(double x, double y) const {
   std::vector<Hit> out;
   const auto& v = triangles_.vertices;
   for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
+    const TextureImage* texture = nullptr;
+    for (const TriangleBatch& batch : triangles_.batches)
+      if (i >= batch.firstVertex && i < batch.firstVertex + batch.vertexCount && batch.texture >= 0)
+        texture = &triangles_.textures[std::size_t(batch.texture)];
     const TriangleVertex &a = v[i], &b = v[i + 1], &c = v[i + 2];
     const double ax = a.position[0], ay = a.position[1], bx = b.position[0], by = b.position[1],
                  cx = c.position[0], cy = c.position[1];
@@ -34,6 +38,17 @@ std::vector<PeelReference::Hit> PeelReference::hits(double x, double y) const {
     for (int k = 0; k < 4; ++k)
       hit.colour[std::size_t(k)] =
           wa * quantise(a.colour[k]) + wb * quantise(b.colour[k]) + wc * quantise(c.colour[k]);
+    if (texture != nullptr) {
+      // MODULATE with nearest sampling (the test scenes set textureQuality 0.1), repeating.
+      const double s = wa * a.texCoord[0] + wb * b.texCoord[0] + wc * c.texCoord[0];
+      const double t = wa * a.texCoord[1] + wb * b.texCoord[1] + wc * c.texCoord[1];
+      const int w = texture->width, h = texture->height;
+      const int tx = ((int(std::floor(s * w)) % w) + w) % w;
+      const int ty = ((int(std::floor(t * h)) % h) + h) % h;
+      const unsigned char* texel =
+          &texture->rgba[(std::size_t(ty) * std::size_t(w) + std::size_t(tx)) * 4];
+      for (int k = 0; k < 4; ++k) hit.colour[std::size_t(k)] *= texel[k] / 255.0;
+    }
     out.push_back(hit);
   }
   std::sort(out.begin(), out.end(), [](const Hit& p, const Hit& q) { return p.depth < q.depth; });

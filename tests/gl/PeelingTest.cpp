@@ -58,7 +58,8 @@ std::string sceneText(const std::string& peelFields, const std::string& content)
 }
 
 // Three coloured planes through the origin, tilted different ways so that each cuts the
-// others, a glass sphere through two of them, and a quad whose alpha varies per vertex.
+// others, a glass sphere through two of them, a quad whose alpha varies per vertex and an
+// alpha-textured sheet.
 std::string planesAndSphere() {
   const double pi = std::acos(-1.0);
   std::ostringstream iv;
@@ -88,7 +89,15 @@ std::string planesAndSphere() {
      << "Separator { MaterialBinding { value PER_VERTEX_INDEXED }\n"
      << "  PackedColor { orderedRGBA [ 0xFF00FF20, 0xFF00FFE0, 0x00FFFF90, 0xFFFFFF60 ] }\n"
      << "  Coordinate3 { point [ -0.9 -0.9 0.3, -0.2 -0.9 -0.2, -0.2 -0.2 0.3, -0.9 -0.2 -0.2 ] }\n"
-     << "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ] }\n}\n";
+     << "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ] }\n}\n"
+     // An alpha-textured sheet (2 x 2 texels: opaque, clear, half, quarter) cutting the others.
+     << "Separator { Complexity { textureQuality 0.1 }\n"
+     << "  Texture2 { image 2 2 4 0xFF8000FF 0x00FF0000 0x2080FF80 0xFFFFFF40 }\n"
+     << "  Material { diffuseColor 1 1 1 }\n"
+     << "  Coordinate3 { point [ 0.1 -0.9 -0.4, 0.9 -0.9 0.4, 0.9 -0.1 0.4, 0.1 -0.1 -0.4 ] }\n"
+     << "  TextureCoordinate2 { point [ 0 0, 1 0, 1 1, 0 1 ] }\n"
+     << "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ]"
+     << " textureCoordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ] }\n}\n";
   return iv.str();
 }
 

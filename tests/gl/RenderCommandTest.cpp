@@ -80,6 +80,20 @@ TEST(RenderCommand, StatsReportDeepShadowMapsBuiltOnce) {
             std::uint64_t(layers) * 128u * 128u * (4u + 16u));
 }
 
+TEST(RenderCommand, StatsReportPeeling) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult result = run(
+      {test::ivshadowExe(), "render", scene("peeled_glasses.iv"), "-o", dir + "/p.png", "--size",
+       "160x120", "--stats", dir + "/stats.json", "--set", "Glasses.method=FRONT_TO_BACK"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  std::ifstream in(dir + "/stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  EXPECT_GT(stats.at("passes").at("peel_ms").get<double>(), 0.0);
+  // The glasses overlap several deep here: the depth-range pass and at least two peel passes.
+  EXPECT_GE(stats.at("peel_passes").get<int>(), 3);
+  EXPECT_EQ(stats.at("dsm_rebuilds"), 1);
+}
+
 TEST(RenderCommand, WithoutTheGlFeaturesTheGroupWarnsOnceAndRendersPlainly) {
   const std::string dir = test::outputDir();
   // Mesa then offers a 3.3 context: no clip control, no direct state access.
