@@ -23,12 +23,16 @@ SoNode* firstActive(SoNode* scene, SoType type) {
 
 }  // namespace
 
+bool ViewSetup::hasActiveLight(SoNode* scene) {
+  return firstActive(scene, SoLight::getClassTypeId()) != nullptr;
+}
+
 ViewSetup ViewSetup::prepare(SoNode* scene, const SbViewportRegion& viewport) {
   ViewSetup setup;
   auto* root = new SoSeparator;
   setup.root = CoinRef<SoSeparator>(root);
 
-  if (firstActive(scene, SoLight::getClassTypeId()) == nullptr) {
+  if (!hasActiveLight(scene)) {
     // Traversed before any camera, the light is specified in eye space, so it stays fixed to
     // whatever camera the scene uses, with the direction SoQt's viewers give their headlight.
     auto* light = new SoDirectionalLight;

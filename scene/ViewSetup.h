@@ -17,6 +17,9 @@ struct ViewSetup {
   bool addedCamera = false;
   bool addedHeadlight = false;
 
+  // Whether `scene` turns on a light of its own (not under a switched-off switch). The CLI
+  // and the viewer add a headlight only to scenes that do not.
+  static bool hasActiveLight(SoNode* scene);
   static ViewSetup prepare(SoNode* scene, const SbViewportRegion& viewport);
 };
 

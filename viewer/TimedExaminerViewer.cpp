@@ -29,6 +29,7 @@ void TimedExaminerViewer::actualRedraw() {
     capture_ = nullptr;
     callback(captureReadFramebuffer(size[0], size[1]));
   }
+  ++frames_;
   if (frameTimed_) frameTimed_(ms);
 }
 

@@ -19,6 +19,8 @@ class TimedExaminerViewer : public SoQtExaminerViewer {
   void onFrameTimed(std::function<void(double milliseconds)> callback);
   // The next redraw calls `callback` with what it drew; schedules that redraw.
   void captureNextFrame(std::function<void(const Image&)> callback);
+  // Frames drawn so far.
+  int framesDrawn() const { return frames_; }
 
  protected:
   void actualRedraw() override;
@@ -26,6 +28,7 @@ class TimedExaminerViewer : public SoQtExaminerViewer {
  private:
   std::function<void(double)> frameTimed_;
   std::function<void(const Image&)> capture_;
+  int frames_ = 0;
 };
 
 }  // namespace ivshadow

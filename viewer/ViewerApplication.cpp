@@ -49,12 +49,21 @@ int runViewer(const ViewerOptions& options, const char* programName) {
 
   if (scripted) {
     int status = 1;
-    window.saveScreenshot(QString::fromStdString(options.screenshot),
-                          [&status](const std::string& error) {
-                            if (!error.empty()) std::cerr << error << '\n';
-                            status = error.empty() ? 0 : 1;
-                            QTimer::singleShot(0, qApp, [] { qApp->quit(); });
-                          });
+    // Under Xvfb (and with some GLX drivers) the first frame goes to a drawable that is not
+    // yet set up and reads back as garbage; SoQt draws it before the window is exposed. The
+    // screenshot is therefore the frame drawn after the first one.
+    auto* waitForFirstFrame = new QTimer(&window);
+    QObject::connect(waitForFirstFrame, &QTimer::timeout, &window, [&, waitForFirstFrame] {
+      if (window.framesDrawn() < 1) return;
+      waitForFirstFrame->stop();
+      window.saveScreenshot(QString::fromStdString(options.screenshot),
+                            [&status](const std::string& error) {
+                              if (!error.empty()) std::cerr << error << '\n';
+                              status = error.empty() ? 0 : 1;
+                              QTimer::singleShot(0, qApp, [] { qApp->quit(); });
+                            });
+    });
+    waitForFirstFrame->start(100);
     // A window that never draws (a broken GLX) must not hang scripts and tests.
     QTimer::singleShot(120000, qApp, [] {
       std::cerr << "ivshadow: error: the viewer drew no frame within 120 s\n";

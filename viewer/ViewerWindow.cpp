@@ -1,5 +1,7 @@
 #include "viewer/ViewerWindow.h"
 
+#include "scene/ViewSetup.h"
+
 #include "image/AtomicFile.h"
 #include "image/PngFile.h"
 #include "scene/InputError.h"
@@ -84,6 +86,9 @@ std::string ViewerWindow::openScene(const QString& path) {
       previousCamera = CoinRef<SoCamera>(static_cast<SoCamera*>(viewer_->getCamera()->copy()));
     }
     viewer_->setSceneGraph(loaded.root.get());
+    // As in `ivshadow render`: the headlight only for scenes without lights of their own, so
+    // the viewer shows what a headless render of the file shows.
+    viewer_->setHeadlight(!ViewSetup::hasActiveLight(loaded.root.get()));
     SoCamera* camera = viewer_->getCamera();
     if (previousCamera && camera && camera->getTypeId() == previousCamera->getTypeId()) {
       camera->copyFieldValues(previousCamera.get());
@@ -125,6 +130,10 @@ void ViewerWindow::saveScreenshot(const QString& path,
       done(error.what());
     }
   });
+}
+
+int ViewerWindow::framesDrawn() const {
+  return viewer_ ? viewer_->framesDrawn() : 0;
 }
 
 void ViewerWindow::chooseAndOpen() {

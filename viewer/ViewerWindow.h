@@ -31,6 +31,7 @@ class ViewerWindow : public QMainWindow {
   void reload();
   // Saves the next frame to `path`; `done` gets an empty string or the error.
   void saveScreenshot(const QString& path, std::function<void(const std::string&)> done);
+  int framesDrawn() const;
   void setInteractive(bool interactive) { interactive_ = interactive; }
   void setViewerSize(int width, int height);
 
