@@ -1,16 +1,20 @@
-// Builds a small scene graph in C++ — a red glass square over a white floor under a point
-// light — and renders it headlessly to a PNG with the plugin's renderer.
+// Builds a scene graph in C++ with the plugin's nodes — a red and a green glass slab over a
+// white floor, in a SoTransparentShadowGroup lit by a SoDeepShadowLight, the glasses inside a
+// SoPeelingSeparator — and renders it headlessly to a PNG with the plugin's renderer.
 // Usage: render_scene_graph OUT.png
 #include "headless/OffscreenRenderer.h"
 #include "image/PngFile.h"
+#include "nodes/DeepShadowStatistics.h"
 #include "nodes/IvShadowInit.h"
+#include "nodes/SoDeepShadowLight.h"
+#include "nodes/SoPeelingSeparator.h"
+#include "nodes/SoTransparentShadowGroup.h"
 #include "scene/ViewSetup.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
-#include <Inventor/nodes/SoPointLight.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 #include <Inventor/nodes/SoTranslation.h>
@@ -20,7 +24,7 @@
 namespace {
 
 // A square slab `size` wide and `thickness` high centred at `centre`, in its own separator.
-void addSlab(SoSeparator* scene, const SbVec3f& centre, float size, float thickness,
+void addSlab(SoGroup* scene, const SbVec3f& centre, float size, float thickness,
              const SbColor& colour, float transparency) {
   auto* slab = new SoSeparator;
   auto* place = new SoTranslation;
@@ -57,12 +61,19 @@ int main(int argc, char** argv) {
   camera->position.setValue(0.0f, 4.0f, 6.0f);
   camera->pointAt(SbVec3f(0.0f, 0.0f, 0.0f));
   scene->addChild(camera);
-  auto* light = new SoPointLight;
+  // Everything under the group receives shadows; the light's map is built by the group.
+  auto* group = new SoTransparentShadowGroup;
+  scene->addChild(group);
+  auto* light = new SoDeepShadowLight;
   light->location.setValue(0.0f, 3.0f, 0.0f);
-  scene->addChild(light);
-
-  addSlab(scene, SbVec3f(0.0f, 0.0f, 0.0f), 6.0f, 0.1f, SbColor(1.0f, 1.0f, 1.0f), 0.0f);
-  addSlab(scene, SbVec3f(0.0f, 1.0f, 0.0f), 1.5f, 0.05f, SbColor(1.0f, 0.0f, 0.0f), 0.5f);
+  light->colorModel = SoDeepShadowLight::SATURATE;
+  group->addChild(light);
+  addSlab(group, SbVec3f(0.0f, 0.0f, 0.0f), 6.0f, 0.1f, SbColor(1.0f, 1.0f, 1.0f), 0.0f);
+  // The glasses overlap from the camera: peeling composites them in depth order.
+  auto* glasses = new SoPeelingSeparator;
+  group->addChild(glasses);
+  addSlab(glasses, SbVec3f(-0.3f, 1.0f, 0.0f), 1.5f, 0.05f, SbColor(1.0f, 0.0f, 0.0f), 0.5f);
+  addSlab(glasses, SbVec3f(0.4f, 1.6f, 0.3f), 1.2f, 0.05f, SbColor(0.0f, 1.0f, 0.0f), 0.5f);
 
   std::string error;
   auto renderer = ivshadow::OffscreenRenderer::create(640, 480, error);
@@ -75,7 +86,10 @@ int main(int argc, char** argv) {
   const ivshadow::ViewSetup view = ivshadow::ViewSetup::prepare(scene, SbViewportRegion(640, 480));
   renderer->render(view.root.get());
   ivshadow::writePng(argv[1], renderer->read());
+  // Statistics of the frame: the map was built once, the glasses peeled.
+  const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(scene);
   scene->unref();
-  std::cout << "wrote " << argv[1] << '\n';
+  std::cout << "wrote " << argv[1] << " (deep shadow map built " << stats.rebuilds << " time, "
+            << stats.lights.size() << " light)\n";
   return 0;
 }

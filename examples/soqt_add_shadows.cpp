@@ -1,0 +1,57 @@
+// An existing SoQt application — read a file, show it in an examiner viewer — that gains
+// transparent, coloured shadows with the few lines marked "plugin": one init() call, and the
+// application's root wrapped in a SoTransparentShadowGroup with a SoDeepShadowLight.
+// Usage: soqt_add_shadows SCENE.iv [--quit-after-ms N]
+#include "nodes/IvShadowInit.h"              // plugin
+#include "nodes/SoDeepShadowLight.h"         // plugin
+#include "nodes/SoTransparentShadowGroup.h"  // plugin
+
+#include <Inventor/Qt/SoQt.h>
+#include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/SbBox3f.h>
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <QTimer>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: soqt_add_shadows SCENE.iv [--quit-after-ms N]\n");
+    return 2;
+  }
+  QWidget* window = SoQt::init(argc, argv, argv[0]);
+  ivshadow::init();  // plugin
+  SoInput input;
+  if (!input.openFile(argv[1])) return 2;
+  SoSeparator* root = SoDB::readAll(&input);
+  if (root == nullptr) return 2;
+
+  // plugin: wrap the root; put a deep shadow light above the middle of the scene.
+  auto* shadows = new SoTransparentShadowGroup;
+  auto* light = new SoDeepShadowLight;
+  SoGetBoundingBoxAction bounds(SbViewportRegion(640, 480));
+  bounds.apply(root);
+  const SbBox3f box = bounds.getBoundingBox();
+  light->location.setValue(box.getCenter() +
+                           SbVec3f(0.0f, 0.0f, 0.75f * (box.getMax()[2] - box.getMin()[2]) + 1.0f));
+  shadows->addChild(light);
+  shadows->addChild(root);
+  shadows->ref();
+
+  auto* viewer = new SoQtExaminerViewer(window);
+  viewer->setSceneGraph(shadows);
+  viewer->show();
+  SoQt::show(window);
+  if (argc == 4 && std::string(argv[2]) == "--quit-after-ms")
+    QTimer::singleShot(std::atoi(argv[3]), [] { SoQt::exitMainLoop(); });
+  SoQt::mainLoop();
+  delete viewer;
+  shadows->unref();
+  return 0;
+}
