@@ -1,4 +1,5 @@
 #include "cli/RenderCommand.h"
+#include "cli/VariantsCommand.h"
 #include "nodes/IvShadowInit.h"
 #include "viewer/ViewerApplication.h"
 
@@ -13,6 +14,7 @@ const char* kExamples = R"(Examples:
   ivshadow render scene.iv -o big.png --size 1920x1080 --frames 20 --stats stats.json
   ivshadow render scene.iv -o red.png --set Glass.diffuseColor="1 0 0" --set Lamp.intensity=0.5
   ivshadow render scene.iv -o coin.png --transparency SORTED_LAYERS_BLEND
+  ivshadow variants iv_scenes/coloured_shadows.iv iv_scenes/coloured_shadows.variants -o out/v
   ivshadow view iv_scenes/glass_over_floor.iv
 
 Exit status: 0 success, 2 bad input (file, field, option), 3 no GL context or display,
@@ -43,6 +45,20 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--transparency", render.transparency,
                             "Coin transparency type, e.g. BLEND, SORTED_LAYERS_BLEND");
 
+  ivshadow::VariantsOptions variants;
+  CLI::App* variantsCommand =
+      app.add_subcommand("variants", "Render scripted variants of a scene (docs/VARIANTS.md)");
+  variantsCommand->add_option("base", variants.base, "Open Inventor scene file (.iv)")->required();
+  variantsCommand->add_option("variants", variants.variantsFile, "Variants file")->required();
+  variantsCommand->add_option("-o,--output", variants.outputDir, "Directory to write to")
+      ->required();
+  variantsCommand->add_option("--size", variants.size, "Image size WIDTHxHEIGHT")
+      ->capture_default_str();
+  variantsCommand->add_option("--frames", variants.frames, "Frames to render and time")
+      ->capture_default_str();
+  variantsCommand->add_option("--jobs,-j", variants.jobs, "Variants rendered at once")
+      ->capture_default_str();
+
   ivshadow::ViewerOptions view;
   CLI::App* viewCommand = app.add_subcommand("view", "Open an .iv file in the viewer");
   viewCommand->add_option("scene", view.scene, "Open Inventor scene file (.iv)");
@@ -57,5 +73,6 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : 2;
   }
   if (renderCommand->parsed()) return ivshadow::runRender(render);
+  if (variantsCommand->parsed()) return ivshadow::runVariants(variants);
   return ivshadow::runViewer(view, argv[0]);
 }

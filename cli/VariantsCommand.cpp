@@ -1,0 +1,246 @@
+#include "cli/VariantsCommand.h"
+
+#include "cli/ChildProcesses.h"
+#include "image/AtomicFile.h"
+#include "image/ImageSize.h"
+#include "nodes/IvShadowInit.h"
+#include "scene/InputError.h"
+#include "scene/SceneLoader.h"
+#include "scene/VariantsFile.h"
+
+#include <Inventor/nodes/SoSeparator.h>
+#include <unistd.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace ivshadow {
+namespace {
+
+struct Outcome {
+  bool done = false;
+  int exitCode = -1;
+  std::string error;  // the variant's error line, with its line in the variants file
+  nlohmann::json stats;
+};
+
+std::string readFirstLine(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+// The child names the --set that failed; the variants file line of that assignment is where
+// the user must look.
+int lineOfFailure(const Variant& variant, const std::string& error) {
+  for (const Variant::Assignment& assignment : variant.assignments)
+    if (error.find(assignment.text) != std::string::npos) return assignment.line;
+  return variant.line;
+}
+
+std::string htmlEscape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string csvField(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string assignmentsText(const Variant& variant) {
+  std::string text;
+  for (const Variant::Assignment& assignment : variant.assignments)
+    text += (text.empty() ? "" : "; ") + assignment.text;
+  return text;
+}
+
+// "Lamp:0/2/2/0/0/5" per light, from the render's statistics.
+std::string layersText(const nlohmann::json& stats) {
+  std::string text;
+  if (!stats.contains("dsm_layers_used")) return text;
+  for (const auto& light : stats["dsm_layers_used"]) {
+    text += (text.empty() ? "" : " ") + light.value("light", std::string("light")) + ":";
+    bool first = true;
+    for (int used : light["faces"]) {
+      text += (first ? "" : "/") + std::to_string(used);
+      first = false;
+    }
+  }
+  return text;
+}
+
+double number(const nlohmann::json& stats, const char* key, const char* inner = nullptr) {
+  const nlohmann::json* value = &stats;
+  if (!value->contains(key)) return 0.0;
+  value = &(*value)[key];
+  if (inner) {
+    if (!value->contains(inner)) return 0.0;
+    value = &(*value)[inner];
+  }
+  return value->is_number() ? value->get<double>() : 0.0;
+}
+
+void progress(int done, int total, const std::string& name, bool terminal) {
+  constexpr int kWidth = 30;
+  const int filled = total > 0 ? done * kWidth / total : kWidth;
+  if (terminal) {
+    std::cerr << "\r[" << std::string(std::size_t(filled), '#')
+              << std::string(std::size_t(kWidth - filled), '.') << "] " << done << "/" << total
+              << " " << name << "\033[K" << std::flush;
+    if (done == total) std::cerr << '\n';
+  } else {
+    std::cerr << "[" << done << "/" << total << "] " << name << '\n';
+  }
+}
+
+void writeReports(const VariantsOptions& options, const std::vector<Variant>& variants,
+                  const std::vector<Outcome>& outcomes) {
+  std::ostringstream csv;
+  csv << "variant,assignments,status,frame_ms_median,dsm_build_ms,peel_ms,dsm_bytes,"
+         "dsm_layers_used,image\n";
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Variants of "
+       << htmlEscape(options.base) << "</title>\n<style>body{font-family:sans-serif}"
+       << "figure{display:inline-block;margin:8px;width:260px;vertical-align:top}"
+       << "img{width:256px;border:1px solid #999}figcaption{font-size:12px}"
+       << ".failed{color:#a00}</style></head><body>\n<h1>Variants of " << htmlEscape(options.base)
+       << "</h1>\n";
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const Variant& variant = variants[i];
+    const Outcome& outcome = outcomes[i];
+    const bool ok = outcome.exitCode == 0;
+    const std::string image = variant.name + ".png";
+    csv << csvField(variant.name) << ',' << csvField(assignmentsText(variant)) << ','
+        << (ok ? "ok" : "failed") << ',' << number(outcome.stats, "frame_ms_median") << ','
+        << number(outcome.stats, "passes", "dsm_build_ms") << ','
+        << number(outcome.stats, "passes", "peel_ms") << ','
+        << std::uint64_t(number(outcome.stats, "dsm_bytes")) << ','
+        << csvField(layersText(outcome.stats)) << ',' << (ok ? csvField(image) : "\"\"") << '\n';
+    html << "<figure id=\"" << htmlEscape(variant.name) << "\">";
+    if (ok)
+      html << "<a href=\"" << htmlEscape(image) << "\"><img src=\"" << htmlEscape(image)
+           << "\" alt=\"" << htmlEscape(variant.name) << "\"></a>";
+    html << "<figcaption><b>" << htmlEscape(variant.name) << "</b><br>"
+         << htmlEscape(assignmentsText(variant)) << "<br>";
+    if (ok)
+      html << std::fixed << std::setprecision(1) << number(outcome.stats, "frame_ms_median")
+           << " ms a frame, map built in " << number(outcome.stats, "passes", "dsm_build_ms")
+           << " ms, " << std::uint64_t(number(outcome.stats, "dsm_bytes")) / 1024 << " KiB";
+    else
+      html << "<span class=\"failed\">" << htmlEscape(outcome.error) << "</span>";
+    html << "</figcaption></figure>\n";
+  }
+  html << "</body></html>\n";
+  writeTextFileAtomically(options.outputDir + "/variants.csv", csv.str());
+  writeTextFileAtomically(options.outputDir + "/index.html", html.str());
+}
+
+}  // namespace
+
+int runVariants(const VariantsOptions& options) {
+  try {
+    ImageSize::parse(options.size, "--size");
+    if (options.frames < 1)
+      throw InputError("--frames " + std::to_string(options.frames) +
+                       ": error: expected a whole number of at least 1");
+    if (options.jobs < 1)
+      throw InputError("--jobs " + std::to_string(options.jobs) +
+                       ": error: expected a whole number of at least 1");
+    const std::vector<Variant> variants = readVariantsFile(options.variantsFile);
+    init();
+    loadScene(options.base);  // a broken base scene is one error, not one per variant
+    std::error_code made;
+    std::filesystem::create_directories(options.outputDir, made);
+    if (made || !std::filesystem::is_directory(options.outputDir))
+      throw InputError(options.outputDir + ": error: cannot create the output directory");
+
+    const std::string self = currentExecutable();
+    const bool terminal = isatty(2) != 0;
+    std::vector<Outcome> outcomes(variants.size());
+    ChildProcesses children(options.jobs);
+    std::size_t next = 0;
+    int finished = 0;
+    const int total = int(variants.size());
+    auto scratch = [&](std::size_t i, const char* what) {
+      return options.outputDir + "/." + variants[i].name + what;
+    };
+    while (next < variants.size() || !children.empty()) {
+      while (next < variants.size() && !children.full()) {
+        std::vector<std::string> command = {self,
+                                            "render",
+                                            options.base,
+                                            "-o",
+                                            options.outputDir + "/" + variants[next].name + ".png",
+                                            "--size",
+                                            options.size,
+                                            "--frames",
+                                            std::to_string(options.frames),
+                                            "--stats",
+                                            scratch(next, ".stats.json")};
+        for (const Variant::Assignment& assignment : variants[next].assignments) {
+          command.push_back("--set");
+          command.push_back(assignment.text);
+        }
+        children.start(int(next), command, scratch(next, ".log"));
+        ++next;
+      }
+      const ChildProcesses::Finished done = children.waitAny();
+      const std::size_t i = std::size_t(done.id);
+      Outcome& outcome = outcomes[i];
+      outcome.done = true;
+      outcome.exitCode = done.exitCode;
+      if (done.exitCode == 0) {
+        std::ifstream in(scratch(i, ".stats.json"));
+        outcome.stats = nlohmann::json::parse(in, nullptr, false);
+      } else {
+        const std::string message = readFirstLine(scratch(i, ".log"));
+        outcome.error = options.variantsFile + ":" +
+                        std::to_string(lineOfFailure(variants[i], message)) + ": error: variant " +
+                        variants[i].name + ": " + (message.empty() ? "the render failed" : message);
+      }
+      std::filesystem::remove(scratch(i, ".stats.json"), made);
+      std::filesystem::remove(scratch(i, ".log"), made);
+      progress(++finished, total, variants[i].name, terminal);
+    }
+
+    writeReports(options, variants, outcomes);
+    int failed = 0, badInput = 0;
+    for (const Outcome& outcome : outcomes) {
+      if (outcome.exitCode == 0) continue;
+      ++failed;
+      badInput += outcome.exitCode == 2 ? 1 : 0;
+      std::cerr << outcome.error << '\n';
+    }
+    std::cout << "rendered " << total - failed << " of " << total << " variants to "
+              << options.outputDir << " (variants.csv, index.html)\n";
+    if (failed == 0) return 0;
+    return badInput == failed ? 2 : 1;
+  } catch (const InputError& error) {
+    std::cerr << error.what() << '\n';
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "ivshadow: error: " << error.what() << '\n';
+    return 1;
+  }
+}
+
+}  // namespace ivshadow

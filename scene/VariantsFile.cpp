@@ -1,0 +1,140 @@
+#include "scene/VariantsFile.h"
+
+#include "scene/InputError.h"
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace ivshadow {
+namespace {
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+// File names and HTML ids: letters, digits, '-', '_' and '.'; anything else becomes '_'.
+std::string sanitise(const std::string& text) {
+  std::string out;
+  for (char c : text)
+    out +=
+        (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c : '_';
+  while (out.find("__") != std::string::npos) out.replace(out.find("__"), 2, "_");
+  if (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
+
+[[noreturn]] void fail(const std::string& path, int line, const std::string& what) {
+  throw InputError(path + ":" + std::to_string(line) + ": error: " + what);
+}
+
+// "NODE.field = VALUE" -> "NODE.field=VALUE", checked for shape only.
+std::string assignment(const std::string& text, const std::string& path, int line) {
+  const auto equals = text.find('=');
+  if (equals == std::string::npos)
+    fail(path, line, "expected NODE.field = VALUE, found \"" + text + "\"");
+  const std::string target = trim(text.substr(0, equals));
+  const std::string value = trim(text.substr(equals + 1));
+  const auto dot = target.find('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == target.size() ||
+      target.find_first_of(" \t") != std::string::npos)
+    fail(path, line, "expected NODE.field before '=', found \"" + target + "\"");
+  if (value.empty()) fail(path, line, "no value after '=' for " + target);
+  return target + "=" + value;
+}
+
+std::vector<std::string> sweepValues(const std::string& values, const std::string& path, int line) {
+  std::vector<std::string> out;
+  const auto range = values.find("..");
+  if (range != std::string::npos && values.find('|') == std::string::npos) {
+    std::istringstream in(values.substr(0, range) + " " + values.substr(range + 2));
+    double from = 0, to = 0, step = 0;
+    std::string word;
+    if (!(in >> from >> to >> word >> step) || word != "step" || !(step > 0.0) ||
+        !std::isfinite(from) || !std::isfinite(to))
+      fail(path, line, "expected a range A .. B step S with S > 0, found \"" + values + "\"");
+    const double count = std::floor((to - from) / step + 1e-9) + 1.0;
+    if (count < 1 || count > 10000)
+      fail(path, line,
+           "the range gives " + std::to_string(long(count)) + " values; expected 1 to 10000");
+    for (long i = 0; i < long(count); ++i) {
+      std::ostringstream value;
+      value << from + double(i) * step;
+      out.push_back(value.str());
+    }
+    return out;
+  }
+  std::istringstream in(values);
+  std::string value;
+  while (std::getline(in, value, '|')) {
+    value = trim(value);
+    if (value.empty()) fail(path, line, "an empty value in the list \"" + values + "\"");
+    out.push_back(value);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Variant> parseVariants(const std::string& text, const std::string& path) {
+  std::vector<Variant> variants;
+  // Variants that the current block's shared assignment lines go to.
+  std::size_t blockStart = 0;
+  bool inBlock = false;
+  std::istringstream in(text);
+  std::string raw;
+  int line = 0;
+  while (std::getline(in, raw)) {
+    ++line;
+    const std::string content = trim(raw.substr(0, raw.find('#')));
+    if (content.empty()) continue;
+    std::istringstream words(content);
+    std::string keyword, name;
+    words >> keyword;
+    if (keyword == "variant") {
+      if (!(words >> name) || !words.eof())
+        fail(path, line, "expected \"variant NAME\" with a name without spaces");
+      blockStart = variants.size();
+      variants.push_back({sanitise(name), line, {}});
+      inBlock = true;
+    } else if (keyword == "sweep") {
+      if (!(words >> name)) fail(path, line, "expected \"sweep NAME NODE.field = VALUES\"");
+      std::string rest;
+      std::getline(words, rest);
+      const std::string swept = assignment(trim(rest), path, line);
+      const auto equals = swept.find('=');
+      const std::string target = swept.substr(0, equals);
+      blockStart = variants.size();
+      for (const std::string& value : sweepValues(swept.substr(equals + 1), path, line))
+        variants.push_back({sanitise(name + "-" + value), line, {{target + "=" + value, line}}});
+      inBlock = true;
+    } else if (inBlock) {
+      const std::string text = assignment(content, path, line);
+      for (std::size_t i = blockStart; i < variants.size(); ++i)
+        variants[i].assignments.push_back({text, line});
+    } else {
+      fail(path, line, "expected \"variant NAME\" or \"sweep NAME ...\" before assignments");
+    }
+  }
+  if (variants.empty()) fail(path, line, "no variants (expected \"variant NAME\" or \"sweep\")");
+  std::set<std::string> names;
+  for (const Variant& variant : variants)
+    if (!names.insert(variant.name).second)
+      fail(path, variant.line, "a second variant named \"" + variant.name + "\"");
+  return variants;
+}
+
+std::vector<Variant> readVariantsFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": error: cannot open the variants file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseVariants(text.str(), path);
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,90 @@
+#include "scene/InputError.h"
+#include "scene/VariantsFile.h"
+
+#include <gtest/gtest.h>
+
+namespace ivshadow {
+namespace {
+
+std::vector<std::string> texts(const Variant& variant) {
+  std::vector<std::string> out;
+  for (const auto& assignment : variant.assignments) out.push_back(assignment.text);
+  return out;
+}
+
+TEST(VariantsFile, VariantsWithAssignmentsAndComments) {
+  const auto variants = parseVariants(
+      "# a comment\n"
+      "variant plain\n"
+      "\n"
+      "variant tinted   # trailing comment\n"
+      "  Glass.diffuseColor = 1 0 0\n"
+      "  Lamp.location=0 0 3\n",
+      "v.txt");
+  ASSERT_EQ(variants.size(), 2u);
+  EXPECT_EQ(variants[0].name, "plain");
+  EXPECT_TRUE(variants[0].assignments.empty());
+  EXPECT_EQ(variants[1].name, "tinted");
+  EXPECT_EQ(variants[1].line, 4);
+  EXPECT_EQ(texts(variants[1]),
+            (std::vector<std::string>{"Glass.diffuseColor=1 0 0", "Lamp.location=0 0 3"}));
+  EXPECT_EQ(variants[1].assignments[1].line, 6);
+}
+
+TEST(VariantsFile, ListSweepWithSharedAssignments) {
+  const auto variants = parseVariants(
+      "sweep colour Glass.diffuseColor = 1 0 0 | 0 1 0\n"
+      "  Lamp.resolution = 128\n",
+      "v.txt");
+  ASSERT_EQ(variants.size(), 2u);
+  EXPECT_EQ(variants[0].name, "colour-1_0_0");
+  EXPECT_EQ(texts(variants[0]),
+            (std::vector<std::string>{"Glass.diffuseColor=1 0 0", "Lamp.resolution=128"}));
+  EXPECT_EQ(texts(variants[1]),
+            (std::vector<std::string>{"Glass.diffuseColor=0 1 0", "Lamp.resolution=128"}));
+}
+
+TEST(VariantsFile, RangeSweep) {
+  const auto variants = parseVariants("sweep size Lamp.resolution = 64 .. 256 step 64\n", "v");
+  ASSERT_EQ(variants.size(), 4u);
+  EXPECT_EQ(variants[0].name, "size-64");
+  EXPECT_EQ(texts(variants[3]), (std::vector<std::string>{"Lamp.resolution=256"}));
+  const auto fractions = parseVariants("sweep a Glass.transparency = 0 .. 1 step 0.25\n", "v");
+  EXPECT_EQ(fractions.size(), 5u);
+  EXPECT_EQ(texts(fractions[2]), (std::vector<std::string>{"Glass.transparency=0.5"}));
+}
+
+// Each malformed line is reported with the file and its line.
+TEST(VariantsFile, ErrorsNameTheLine) {
+  const struct {
+    const char* text;
+    const char* expected;
+  } cases[] = {
+      {"Lamp.intensity = 1\n", "v:1: error: expected \"variant NAME\""},
+      {"variant\n", "v:1: error: expected \"variant NAME\" with a name"},
+      {"variant a\n  Lamp.intensity 1\n", "v:2: error: expected NODE.field = VALUE"},
+      {"variant a\n  Lamp = 1\n", "v:2: error: expected NODE.field before '='"},
+      {"variant a\n  Lamp.intensity =\n", "v:2: error: no value after '='"},
+      {"variant a\nvariant a\n", "v:2: error: a second variant named \"a\""},
+      {"sweep s Lamp.intensity = 1 .. 0 step 1\n", "v:1: error: the range gives 0 values"},
+      {"sweep s Lamp.intensity = 0 .. 1 step -1\n", "v:1: error: expected a range"},
+      {"sweep s Lamp.intensity = 1 || 2\n", "v:1: error: an empty value"},
+      {"# nothing\n", "v:1: error: no variants"},
+  };
+  for (const auto& c : cases) {
+    try {
+      parseVariants(c.text, "v");
+      ADD_FAILURE() << "accepted: " << c.text;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(c.expected), std::string::npos)
+          << error.what() << " for " << c.text;
+    }
+  }
+}
+
+TEST(VariantsFile, MissingFile) {
+  EXPECT_THROW(readVariantsFile("/nonexistent/v.variants"), InputError);
+}
+
+}  // namespace
+}  // namespace ivshadow
