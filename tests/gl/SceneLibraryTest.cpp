@@ -1,0 +1,99 @@
+#include "headless/OffscreenRenderer.h"
+#include "nodes/DeepShadowStatistics.h"
+#include "nodes/IvShadowInit.h"
+#include "scene/CoinMessageCapture.h"
+#include "scene/SceneLoader.h"
+#include "scene/ViewSetup.h"
+#include "tests/support/TestSupport.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+namespace ivshadow {
+namespace {
+
+// Every scene of the library: it loads without a message from Coin, renders, shows
+// something, and builds its deep shadow map once with the layers its casters need.
+struct LibraryScene {
+  const char* file;
+  int minimumLayersOnSomeFace;  // the deepest stack of surfaces any face must hold
+  bool allSixFaces;             // casters all around the light
+};
+
+class SceneLibrary : public ::testing::TestWithParam<LibraryScene> {};
+
+TEST_P(SceneLibrary, RendersWithItsShadows) {
+  const LibraryScene& scene = GetParam();
+  init();
+  constexpr int kWidth = 160, kHeight = 120;
+  std::string error;
+  auto renderer = OffscreenRenderer::create(kWidth, kHeight, error);
+  ASSERT_TRUE(renderer) << error;
+  LoadedScene loaded = loadScene(test::scenesDir() + "/" + scene.file);
+  EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
+  const ViewSetup view = ViewSetup::prepare(loaded.root.get(), SbViewportRegion(kWidth, kHeight));
+  {
+    CoinMessageCapture capture;
+    renderer->render(view.root.get());
+    renderer->render(view.root.get());
+    for (const auto& message : capture.messages()) ADD_FAILURE() << message.raw;
+  }
+  const Image image = renderer->read();
+  int lit = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      lit += image.pixel(x, y)[0] + image.pixel(x, y)[1] + image.pixel(x, y)[2] > 30 ? 1 : 0;
+  EXPECT_GT(lit, kWidth * kHeight / 5) << "mostly black";
+
+  const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
+  ASSERT_EQ(stats.lights.size(), 1u);
+  EXPECT_EQ(stats.rebuilds, 1) << "two frames of an unchanged scene build the map once";
+  const auto& faces = stats.lights[0].layersUsed;
+  EXPECT_GE(*std::max_element(faces.begin(), faces.end()), scene.minimumLayersOnSomeFace);
+  if (scene.allSixFaces)
+    for (int used : faces) EXPECT_GE(used, 2) << "a panel and a wall on every face";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Bundled, SceneLibrary,
+    ::testing::Values(
+        LibraryScene{"chapel.iv", 2, false}, LibraryScene{"bottles.iv", 3, false},
+        // Leaves are opaque or clear texel by texel: one layer holds them all.
+        LibraryScene{"foliage.iv", 1, false},
+        // Three window screens and the floor behind them.
+        LibraryScene{"atrium.iv", 4, false}, LibraryScene{"all_directions.iv", 2, true},
+        LibraryScene{"coloured_shadows.iv", 2, false}, LibraryScene{"peeled_glasses.iv", 2, false},
+        LibraryScene{"stress_100k.iv", 3, false}, LibraryScene{"stress_1m.iv", 3, false}),
+    [](const ::testing::TestParamInfo<LibraryScene>& info) {
+      std::string name = info.param.file;
+      return name.substr(0, name.find('.'));
+    });
+
+TEST(SceneLibraryVariants, TheChapelVariantsRender) {
+  const std::string dir = test::outputDir() + "/chapel";
+  const test::ProcessResult result =
+      test::run({test::ivshadowExe(), "variants", test::scenesDir() + "/chapel.iv",
+                 test::scenesDir() + "/chapel.variants", "-o", dir, "--size", "96x72", "--frames",
+                 "1", "--jobs", "2"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("rendered 5 of 5 variants"), std::string::npos) << result.out;
+  EXPECT_TRUE(test::fileExists(dir + "/index.html"));
+}
+
+TEST(SceneLibraryVariants, TheDemoVariantsRender) {
+  const std::string dir = test::outputDir() + "/demo";
+  const test::ProcessResult result =
+      test::run({test::ivshadowExe(), "variants", test::scenesDir() + "/coloured_shadows.iv",
+                 test::scenesDir() + "/coloured_shadows.variants", "-o", dir, "--size", "96x72",
+                 "--frames", "1", "--jobs", "2"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("rendered 12 of 12 variants"), std::string::npos) << result.out;
+}
+
+}  // namespace
+}  // namespace ivshadow
