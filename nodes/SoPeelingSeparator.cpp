@@ -1,6 +1,7 @@
 #include "nodes/SoPeelingSeparator.h"
 
 #include "nodes/PeelingSeparatorImpl.h"
+#include "nodes/SoTransparentShadowGroup.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 
@@ -8,6 +9,9 @@ SO_NODE_SOURCE(SoPeelingSeparator);
 
 void SoPeelingSeparator::initClass() {
   if (getClassTypeId() != SoType::badType()) return;
+  // Inside a deep shadow group it shades with the group's lights; Coin may load this class
+  // first (from a file that names it first), so it registers what it works with.
+  SoTransparentShadowGroup::initClass();
   // Registered without the "So" prefix, as Coin registers its own nodes (see
   // SoTransparentShadowGroup).
   PRIVATE_COMMON_INIT_CODE(SoPeelingSeparator, "PeelingSeparator",

@@ -44,6 +44,14 @@ TEST(CoinLoader, ThePrefixedSpellingAloneLoadsToo) {
   EXPECT_TRUE(hasLine(lines, "Peel PeelingSeparator separator=1 pointlight=0")) << result.out;
 }
 
+TEST(CoinLoader, APeelingSeparatorFirstBringsWhatItNeeds) {
+  const test::ProcessResult result = readWithCoinOnly("peeling_first.iv");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const std::vector<std::string> lines = test::lines(result.out);
+  EXPECT_TRUE(hasLine(lines, "Peel PeelingSeparator separator=1 pointlight=0")) << result.out;
+  EXPECT_TRUE(hasLine(lines, "Lamp DeepShadowLight separator=0 pointlight=1")) << result.out;
+}
+
 TEST(CoinLoader, WithoutThePluginOnThePathCoinKeepsTheNodesUnknown) {
   // The control: the same program without the plugin's directory reads unknown nodes.
   const test::ProcessResult result = test::run(
