@@ -1,6 +1,7 @@
 #include "cli/RenderCommand.h"
 
 #include "callbacks/GlCapabilities.h"
+#include "cli/ExitStatus.h"
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
@@ -78,7 +79,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
 }  // namespace
 
 int runRender(const RenderOptions& options) {
-  try {
+  return withExitStatus([&] {
     const ImageSize size = ImageSize::parse(options.size, "--size");
     if (options.frames < 1) {
       throw InputError("--frames " + std::to_string(options.frames) +
@@ -132,13 +133,7 @@ int runRender(const RenderOptions& options) {
               << FrameStatistics::median(wallMs) << " ms on " << renderer->capabilities().renderer
               << ")\n";
     return 0;
-  } catch (const InputError& error) {
-    std::cerr << error.what() << '\n';
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "ivshadow: error: " << error.what() << '\n';
-    return 1;
-  }
+  });
 }
 
 }  // namespace ivshadow

@@ -1,6 +1,7 @@
 #include "cli/VariantsCommand.h"
 
 #include "cli/ChildProcesses.h"
+#include "cli/ExitStatus.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "nodes/IvShadowInit.h"
@@ -157,7 +158,7 @@ void writeReports(const VariantsOptions& options, const std::vector<Variant>& va
 }  // namespace
 
 int runVariants(const VariantsOptions& options) {
-  try {
+  return withExitStatus([&] {
     ImageSize::parse(options.size, "--size");
     if (options.frames < 1)
       throw InputError("--frames " + std::to_string(options.frames) +
@@ -234,13 +235,7 @@ int runVariants(const VariantsOptions& options) {
               << options.outputDir << " (variants.csv, index.html)\n";
     if (failed == 0) return 0;
     return badInput == failed ? 2 : 1;
-  } catch (const InputError& error) {
-    std::cerr << error.what() << '\n';
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "ivshadow: error: " << error.what() << '\n';
-    return 1;
-  }
+  });
 }
 
 }  // namespace ivshadow
