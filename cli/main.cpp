@@ -1,3 +1,4 @@
+#include "cli/CompareCommand.h"
 #include "cli/RenderCommand.h"
 #include "cli/VariantsCommand.h"
 #include "nodes/IvShadowInit.h"
@@ -15,6 +16,7 @@ const char* kExamples = R"(Examples:
   ivshadow render scene.iv -o red.png --set Glass.diffuseColor="1 0 0" --set Lamp.intensity=0.5
   ivshadow render scene.iv -o coin.png --transparency SORTED_LAYERS_BLEND
   ivshadow variants iv_scenes/coloured_shadows.iv iv_scenes/coloured_shadows.variants -o out/v
+  ivshadow compare reference.png render.png --diff diff.png
   ivshadow view iv_scenes/glass_over_floor.iv
 
 Exit status: 0 success, 2 bad input (file, field, option), 3 no GL context or display,
@@ -59,6 +61,17 @@ int main(int argc, char** argv) {
   variantsCommand->add_option("--jobs,-j", variants.jobs, "Variants rendered at once")
       ->capture_default_str();
 
+  ivshadow::CompareOptions compare;
+  CLI::App* compareCommand =
+      app.add_subcommand("compare", "Measure how far one PNG is from another (the reference)");
+  compareCommand->add_option("reference", compare.reference, "The picture taken as right")
+      ->required();
+  compareCommand->add_option("candidate", compare.candidate, "The picture measured")->required();
+  compareCommand->add_option("--diff", compare.diffPath, "Write a heat map of the error (PNG)");
+  compareCommand->add_option("--scale", compare.scale,
+                             "Heat map: error in 8-bit steps shown as white (0: the largest)");
+  compareCommand->add_option("--json", compare.jsonPath, "Write the metrics as JSON");
+
   ivshadow::ViewerOptions view;
   CLI::App* viewCommand = app.add_subcommand("view", "Open an .iv file in the viewer");
   viewCommand->add_option("scene", view.scene, "Open Inventor scene file (.iv)");
@@ -74,5 +87,6 @@ int main(int argc, char** argv) {
   }
   if (renderCommand->parsed()) return ivshadow::runRender(render);
   if (variantsCommand->parsed()) return ivshadow::runVariants(variants);
+  if (compareCommand->parsed()) return ivshadow::runCompare(compare);
   return ivshadow::runViewer(view, argv[0]);
 }
