@@ -57,6 +57,7 @@ GlStateScope::GlStateScope(Extent extent, const std::vector<int>& textureUnits) 
   depthFunc_ = getInt(GL_DEPTH_FUNC);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
   glGetBooleanv(GL_COLOR_WRITEMASK, colourMask_.data());
+  glGetIntegerv(GL_POLYGON_MODE, polygonMode_.data());
   clipOrigin_ = getInt(GL_CLIP_ORIGIN);
   clipDepthMode_ = getInt(GL_CLIP_DEPTH_MODE);
   for (GLenum cap : fragmentSwitches()) enables_.emplace_back(cap, glIsEnabled(cap) == GL_TRUE);
@@ -64,6 +65,7 @@ GlStateScope::GlStateScope(Extent extent, const std::vector<int>& textureUnits) 
 
 void GlStateScope::disableFragmentTests() const {
   for (const auto& entry : enables_) glDisable(entry.first);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }
 
 GlStateScope::~GlStateScope() {
@@ -82,6 +84,9 @@ GlStateScope::~GlStateScope() {
       glDisable(cap);
   }
   glClipControl(GLenum(clipOrigin_), GLenum(clipDepthMode_));
+  // The compatibility profile keeps front and back modes apart.
+  glPolygonMode(GL_FRONT, GLenum(polygonMode_[0]));
+  glPolygonMode(GL_BACK, GLenum(polygonMode_[1]));
   glColorMask(colourMask_[0], colourMask_[1], colourMask_[2], colourMask_[3]);
   glDepthMask(depthMask_);
   glDepthFunc(GLenum(depthFunc_));

@@ -22,7 +22,8 @@ class GlStateScope {
   GlStateScope(const GlStateScope&) = delete;
   GlStateScope& operator=(const GlStateScope&) = delete;
 
-  // Switches off every per-fragment and clipping test the saved state may have on.
+  // Switches off every per-fragment and clipping test the saved state may have on, and
+  // fills polygons (Coin may have drawn lines or points for a DrawStyle).
   void disableFragmentTests() const;
 
  private:
@@ -47,6 +48,7 @@ class GlStateScope {
   std::array<unsigned char, 4> colourMask_{};
   std::array<int, 4> blendFunc_{};
   std::array<int, 2> blendEquation_{};
+  std::array<int, 2> polygonMode_{};
   int clipOrigin_ = 0;
   int clipDepthMode_ = 0;
   std::vector<std::pair<unsigned int, bool>> enables_;

@@ -1,6 +1,7 @@
 #include "callbacks/PeelPass.h"
 
 #include "GlslSources.h"
+#include "callbacks/DeepShadowPass.h"
 #include "callbacks/GlStateScope.h"
 
 #include <epoxy/gl.h>
@@ -11,8 +12,7 @@ namespace {
 // Shading program modes (shading.frag) and their texture units, above Coin's own units.
 constexpr int kDepthRangeOffset = 0;
 constexpr int kFrontOffset = 1;
-constexpr int kOpaqueDepthOffset = 2;
-constexpr int kBackLayerOffset = 3;
+constexpr int kBackLayerOffset = 2;
 
 GlTexture makeTarget(GLenum format, int width, int height) {
   GlTexture texture = createTexture(GL_TEXTURE_2D);
@@ -44,8 +44,8 @@ std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
   pass->progress_ = createBuffer();
   glNamedBufferData(pass->progress_.get(), sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
   pass->emptyVertexArray_ = createVertexArray();
-  // The four peel textures sit below the deep shadow maps' units (the top 16).
-  pass->firstUnit_ = current(GL_MAX_TEXTURE_IMAGE_UNITS) - 16 - 4;
+  // The peel textures sit below the deep shadow maps' units (the top 2 * kMaxSlots).
+  pass->firstUnit_ = current(GL_MAX_TEXTURE_IMAGE_UNITS) - 2 * DeepShadowPass::kMaxSlots - 3;
   return pass;
 }
 
@@ -79,7 +79,7 @@ void PeelPass::allocate(int width, int height) {
 
 void PeelPass::begin(int x, int y, int width, int height) {
   std::vector<int> units;
-  for (int i = 0; i < 4; ++i) units.push_back(firstUnit_ + i);
+  for (int i = 0; i < 3; ++i) units.push_back(firstUnit_ + i);
   saved_ = std::make_unique<GlStateScope>(GlStateScope::Extent::WholePass, units);
   targetFramebuffer_ = current(GL_DRAW_FRAMEBUFFER_BINDING);
   viewport_ = {x, y, width, height};
@@ -92,7 +92,6 @@ void PeelPass::begin(int x, int y, int width, int height) {
   glClearNamedFramebufferfv(backFramebuffer_.get(), GL_COLOR, 0, clearBack);
 
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, progress_.get());
-  glBindTextureUnit(GLuint(firstUnit_ + kOpaqueDepthOffset), opaqueDepth_.get());
   glEnable(GL_BLEND);
   glBlendEquation(GL_MAX);
 }
@@ -118,11 +117,13 @@ void PeelPass::startPass(int pass) {
 bool PeelPass::finishPass(int pass, bool dual) {
   if (dual && pass > 0) {
     // Back layers arrive far to near: each goes over what is behind it (eq. 2.5), the
-    // accumulation's alpha keeping the product of their transmittances.
-    // Coin's traversal of the next pass expects its own program and vertex arrays.
-    const int coinProgram = current(GL_CURRENT_PROGRAM);
-    const int coinVertexArray = current(GL_VERTEX_ARRAY_BINDING);
+    // accumulation's alpha keeping the product of their transmittances. The draw happens in
+    // the middle of Coin's passes: whatever Coin left on (culling, polygon mode, its program)
+    // is put back afterwards.
+    GlStateScope scope(GlStateScope::Extent::WholePass, {firstUnit_ + kBackLayerOffset});
+    scope.disableFragmentTests();
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, backFramebuffer_.get());
+    glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(composite_.name());
@@ -131,8 +132,6 @@ bool PeelPass::finishPass(int pass, bool dual) {
     glBindTextureUnit(GLuint(firstUnit_ + kBackLayerOffset), backLayer_.get());
     glBindVertexArray(emptyVertexArray_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(GLuint(coinVertexArray));
-    glUseProgram(GLuint(coinProgram));
   }
   GLuint deeper = 0u;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -171,8 +170,6 @@ void PeelPass::setPeelUniforms(unsigned int program, int mode) const {
                      firstUnit_ + kDepthRangeOffset);
   glProgramUniform1i(program, glGetUniformLocation(program, "uPeelFront"),
                      firstUnit_ + kFrontOffset);
-  glProgramUniform1i(program, glGetUniformLocation(program, "uOpaqueDepth"),
-                     firstUnit_ + kOpaqueDepthOffset);
 }
 
 }  // namespace ivshadow

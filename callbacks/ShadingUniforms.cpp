@@ -15,7 +15,7 @@ void ShadingUniforms::apply(unsigned int program, const DeepShadowPass& pass) co
   }
   glProgramUniform1i(program, at("textureMap0"), 0);
   glProgramUniform1i(program, at("uLightCount"), lightCount);
-  glProgramUniform1iv(program, at("uShadowSlot"), kMaxLights, shadowSlot.data());
+  glProgramUniform1i(program, at("uMapCount"), mapCount);
   glProgramUniformMatrix4fv(program, at("uEyeToLocal"), 1, GL_FALSE, eyeToLocal);
   glProgramUniform1i(program, at("uFogType"), fogType);
   // Every sampler of the arrays gets its own unit even when its slot is unused: two
@@ -23,10 +23,21 @@ void ShadingUniforms::apply(unsigned int program, const DeepShadowPass& pass) co
   glProgramUniform1iv(program, at("uMapDepth"), kMaxLights, depthUnits.data());
   glProgramUniform1iv(program, at("uMapVisibility"), kMaxLights, visibilityUnits.data());
   glProgramUniform3fv(program, at("uMapLight"), kMaxLights, mapLight.data());
+  glProgramUniform3fv(program, at("uMapLightEye"), kMaxLights, mapLightEye.data());
   glProgramUniform4fv(program, at("uMapParams"), kMaxLights, mapParams.data());
   glProgramUniform1iv(program, at("uMapColoured"), kMaxLights, mapColoured.data());
   glProgramUniform1iv(program, at("uMapFaceFirst"), 6 * kMaxLights, mapFaceFirst.data());
   glProgramUniform1iv(program, at("uMapFaceLayers"), 6 * kMaxLights, mapFaceLayers.data());
+}
+
+void darkenLights(int first) {
+  const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  for (int i = first; i < ShadingUniforms::kMaxLights; ++i) {
+    const GLenum light = GL_LIGHT0 + GLenum(i);
+    glLightfv(light, GL_AMBIENT, black);
+    glLightfv(light, GL_DIFFUSE, black);
+    glLightfv(light, GL_SPECULAR, black);
+  }
 }
 
 unsigned int currentProgram() {

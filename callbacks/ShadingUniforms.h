@@ -12,10 +12,11 @@ class DeepShadowPass;
 struct ShadingUniforms {
   static constexpr int kMaxLights = 8;
   int lightCount = 0;
-  std::array<int, kMaxLights> shadowSlot{};  // per GL light, -1 when it has no map
-  float eyeToLocal[16] = {};                 // column-major, as glUniformMatrix4fv reads it
+  int mapCount = 0;
+  float eyeToLocal[16] = {};  // column-major, as glUniformMatrix4fv reads it
   int fogType = 0;
   std::array<float, 3 * kMaxLights> mapLight{};
+  std::array<float, 3 * kMaxLights> mapLightEye{};
   std::array<float, 4 * kMaxLights> mapParams{};
   std::array<int, kMaxLights> mapColoured{};
   std::array<int, 6 * kMaxLights> mapFaceFirst{};
@@ -24,6 +25,11 @@ struct ShadingUniforms {
   // Sets the uniforms on `program` (the program Coin made current for this group).
   void apply(unsigned int program, const DeepShadowPass& pass) const;
 };
+
+// Sets GL lights [first, ShadingUniforms::kMaxLights) to contribute nothing. The program
+// adds up the first lightCount GL lights; numbers the group's lights leave unused then hold
+// no stale light (Coin sets every parameter of a light it turns on).
+void darkenLights(int first);
 
 // The program object current in this context: the one Coin bound for the last
 // SoShaderProgram it traversed.

@@ -33,19 +33,23 @@ void ChildProcesses::start(int id, const std::vector<std::string>& arguments,
 }
 
 ChildProcesses::Finished ChildProcesses::waitAny() {
-  int status = 0;
-  pid_t pid = -1;
-  do {
-    pid = waitpid(-1, &status, 0);
-  } while (pid < 0 && errno == EINTR);
-  const auto found = std::find_if(running_.begin(), running_.end(),
-                                  [pid](const Running& r) { return r.pid == pid; });
-  Finished finished;
-  if (found == running_.end()) return finished;
-  finished.id = found->id;
-  finished.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  running_.erase(found);
-  return finished;
+  for (;;) {
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(std::string("waiting for a render process: ") +
+                               std::strerror(errno));
+    }
+    const auto found = std::find_if(running_.begin(), running_.end(),
+                                    [pid](const Running& r) { return r.pid == pid; });
+    if (found == running_.end()) continue;  // not one of ours
+    Finished finished;
+    finished.id = found->id;
+    finished.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    running_.erase(found);
+    return finished;
+  }
 }
 
 std::string currentExecutable() {

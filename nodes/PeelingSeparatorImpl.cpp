@@ -104,8 +104,12 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
   TransparentShadowGroupImpl* group = TransparentShadowGroupImpl::activeGroup();
   const unsigned int peelProgram = (group ? group : &shading_)->bindPeelProgram(action);
   if (peelProgram == 0) {
+    // The peel program did not build (Coin has said why): the opaque pass stands, and the
+    // group's program must not keep discarding transparent fragments.
     state->pop();
     pass->end(0);
+    pass->setPeelUniforms(program, kPeelOff);
+    SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
     return;
   }
   setTransparencyType(state, SoGLRenderAction::BLEND);

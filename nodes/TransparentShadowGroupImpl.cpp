@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <set>
 
 namespace ivshadow {
 namespace {
@@ -52,7 +53,9 @@ void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, flo
 
 }  // namespace
 
+namespace {
 thread_local TransparentShadowGroupImpl* activeGroupNow = nullptr;
+}  // namespace
 
 TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows,
                                                        ChildrenRenderer renderChildren)
@@ -119,13 +122,12 @@ void TransparentShadowGroupImpl::findLights() {
   for (int i = 0; i < paths.getLength(); ++i) {
     auto* light = static_cast<SoLight*>(paths[i]->getTail());
     if (!light->on.getValue()) continue;
-    const int index = subgraphLightsOn_++;
+    ++subgraphLightsOn_;
     if (deepShadows_ && light->isOfType(SoDeepShadowLight::getClassTypeId()) &&
         int(lights_.size()) < DeepShadowPass::kMaxSlots) {
       Light entry;
       entry.path = CoinRef<SoPath>(paths[i]->copy());
       entry.light = static_cast<SoDeepShadowLight*>(light);
-      entry.glIndex = index;
       lights_.push_back(std::move(entry));
     }
   }
@@ -135,12 +137,12 @@ void TransparentShadowGroupImpl::findLights() {
 void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& context) {
   const auto start = std::chrono::steady_clock::now();
   DeepShadowPass& pass = *context.pass;
-  maps_.assign(lights_.size(), MapState{});
+  context.maps.assign(lights_.size(), MapState{});
   statistics_.lights.clear();
   SoGetMatrixAction matrixAction(action->getViewportRegion());
   for (std::size_t slot = 0; slot < lights_.size(); ++slot) {
     const Light& entry = lights_[slot];
-    MapState& map = maps_[slot];
+    MapState& map = context.maps[slot];
     map.settings = resolveSettings(*entry.light, pass.maxTextureSize());
     matrixAction.apply(entry.path.get());
     matrixAction.getMatrix().multVecMatrix(entry.light->location.getValue(), map.position);
@@ -232,16 +234,16 @@ int TransparentShadowGroupImpl::fogType(SoState* state) const {
 
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   SoState* state = action->getState();
-  Context* found = contexts_.get(SoGLCacheContextElement::get(state), [] {
+  Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
     auto pass = DeepShadowPass::create(whyNot);
     if (!pass) {
-      static bool warned = false;
-      if (!warned) {
-        warned = true;
-        SoDebugError::postWarning("SoTransparentShadowGroup", "rendering without deep shadows: %s",
-                                  whyNot.c_str());
-      }
+      // One warning per node class, naming the class the user put in the scene.
+      static std::set<std::string> warned;
+      const std::string node = owner_->getTypeId().getName().getString();
+      if (warned.insert(node).second)
+        SoDebugError::postWarning(node.c_str(), "rendering without %s: %s",
+                                  deepShadows_ ? "deep shadows" : "depth peeling", whyNot.c_str());
       return std::unique_ptr<Context>();
     }
     auto context = std::make_unique<Context>();
@@ -255,7 +257,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   SoCacheElement::invalidate(state);
 
   if (!lightsValid_) findLights();
-  if (!castersValid_) {
+  // Without deep shadows (a peeling separator on its own) there is nothing to cast into.
+  if (!castersValid_ && deepShadows_) {
     casters_ = extractShadowCasters(owner_);
     castersValid_ = true;
     ++castersVersion_;
@@ -277,13 +280,16 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   uniforms = ShadingUniforms{};
   const int outside = SoLightElement::getLights(state).getLength();
   uniforms.lightCount = std::min(kMaxLights, outside + subgraphLightsOn_);
-  uniforms.shadowSlot.fill(-1);
-  for (std::size_t slot = 0; slot < lights_.size() && slot < maps_.size(); ++slot) {
-    const int index = outside + lights_[slot].glIndex;
-    if (index >= kMaxLights) continue;
-    const MapState& map = maps_[slot];
-    uniforms.shadowSlot[std::size_t(index)] = int(slot);
-    for (int i = 0; i < 3; ++i) uniforms.mapLight[slot * 3 + std::size_t(i)] = map.position[i];
+  const SbMatrix toEye = localToEye(state);
+  uniforms.mapCount = int(std::min(lights_.size(), context.maps.size()));
+  for (std::size_t slot = 0; slot < std::size_t(uniforms.mapCount); ++slot) {
+    const MapState& map = context.maps[slot];
+    SbVec3f eye;
+    toEye.multVecMatrix(map.position, eye);
+    for (int i = 0; i < 3; ++i) {
+      uniforms.mapLight[slot * 3 + std::size_t(i)] = map.position[i];
+      uniforms.mapLightEye[slot * 3 + std::size_t(i)] = eye[i];
+    }
     uniforms.mapParams[slot * 4 + 0] = float(map.settings.resolution);
     for (std::size_t face = 0; face < 6; ++face) {
       uniforms.mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
@@ -293,15 +299,16 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     uniforms.mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
     uniforms.mapColoured[slot] = map.coloured ? 1 : 0;
   }
-  const SbMatrix eyeToLocal = localToEye(state).inverse();
+  const SbMatrix eyeToLocal = toEye.inverse();
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column)
       uniforms.eyeToLocal[row * 4 + column] = eyeToLocal[row][column];
   uniforms.fogType = fogType(state);
   uniforms.apply(program, *context.pass);
+  darkenLights(outside);
 
   {
-    const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(maps_.size()));
+    const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(context.maps.size()));
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     TransparentShadowGroupImpl* outer = activeGroupNow;
     if (deepShadows_) activeGroupNow = this;

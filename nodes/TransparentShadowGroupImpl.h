@@ -61,12 +61,6 @@ class TransparentShadowGroupImpl {
   struct Light {
     CoinRef<SoPath> path;  // from the group to the light
     SoDeepShadowLight* light = nullptr;
-    int glIndex = 0;  // among the lights the group's subgraph turns on
-  };
-  struct Context {
-    std::unique_ptr<DeepShadowPass> pass;
-    std::uint64_t castersVersion = 0;
-    std::uint64_t mapsVersion = 0;
   };
   struct MapState {
     SbVec3f position;
@@ -76,6 +70,12 @@ class TransparentShadowGroupImpl {
     float farRadius = 0.0f;
     std::array<int, 6> faceFirst{};
     std::array<int, 6> faceLayers{};
+  };
+  struct Context {
+    std::unique_ptr<DeepShadowPass> pass;
+    std::uint64_t castersVersion = 0;
+    std::uint64_t mapsVersion = 0;
+    std::vector<MapState> maps;  // per light slot: what this context's maps hold
   };
 
   void findLights();
@@ -100,7 +100,6 @@ class TransparentShadowGroupImpl {
   SceneTriangles casters_;
   std::uint64_t castersVersion_ = 0;
   std::uint64_t mapsVersion_ = 1;
-  std::vector<MapState> maps_;
   DeepShadowStatistics statistics_;
 };
 

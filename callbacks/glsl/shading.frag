@@ -20,13 +20,14 @@ uniform int coin_texunit0_model;
 uniform sampler2D textureMap0;
 
 uniform int uLightCount;
-uniform int uShadowSlot[kMaxLights];  // per GL light: its map slot, or -1
 uniform mat4 uEyeToLocal;
 uniform int uFogType;  // SoEnvironmentElement::FogType
 
 uniform sampler2DArray uMapDepth[kMaxLights];
 uniform sampler2DArray uMapVisibility[kMaxLights];
-uniform vec3 uMapLight[kMaxLights];   // light position in the group's coordinates
+uniform int uMapCount;
+uniform vec3 uMapLight[kMaxLights];     // light position in the group's coordinates
+uniform vec3 uMapLightEye[kMaxLights];  // ... and in eye coordinates
 uniform vec4 uMapParams[kMaxLights];  // resolution, unused, bias (texels), filter radius
 uniform int uMapColoured[kMaxLights];
 uniform int uMapFaceFirst[kMaxLights * 6];   // array layer of each face's first layer
@@ -73,6 +74,17 @@ vec3 deepShadowVisibility(int slot, vec3 localPosition, float cosTheta) {
   return sum / taps;
 }
 
+// The map of the GL light, found by its position: Coin numbers GL lights by traversal and
+// reuses a number when a separator ends, so only the position says which light it is.
+int mapOfLight(gl_LightSourceParameters light) {
+  if (light.position.w == 0.0) return -1;
+  vec3 at = light.position.xyz / light.position.w;
+  for (int slot = 0; slot < uMapCount; ++slot)
+    if (distance(at, uMapLightEye[slot]) <= 1e-3 * (1.0 + length(uMapLightEye[slot])))
+      return slot;
+  return -1;
+}
+
 vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColour) {
   gl_LightSourceParameters light = gl_LightSource[i];
   vec3 toLight;
@@ -100,7 +112,7 @@ vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColou
     if (nDotH > 0.0)
       direct += pow(nDotH, gl_FrontMaterial.shininess) * light.specular.rgb *
                 gl_FrontMaterial.specular.rgb;
-    int slot = uShadowSlot[i];
+    int slot = mapOfLight(light);
     if (slot >= 0) direct *= deepShadowVisibility(slot, localPosition, nDotL);
     colour += direct;
   }
@@ -143,7 +155,6 @@ const int kPeelDual = 4;         // the nearest and the farthest layer per pass
 uniform int uPeelMode;
 uniform sampler2D uPeelDepth;
 uniform sampler2D uPeelFront;
-uniform sampler2D uOpaqueDepth;
 layout(std430, binding = 1) buffer PeelProgress {
   uint deeperLayers;  // some fragment lies strictly inside the range still to peel
 };
@@ -151,8 +162,9 @@ layout(std430, binding = 1) buffer PeelProgress {
 void peel(vec4 texel, float alpha) {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float z = gl_FragCoord.z;
-  // Opaque fragments were drawn in the opaque pass; transparent ones behind them are hidden.
-  if (isOpaque(alpha) || z >= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
+  // Opaque fragments were drawn in the opaque pass. Transparent ones behind them never get
+  // here: the early depth test against the opaque depth (IVSHADOW_PEEL_PASSES) drops them.
+  if (isOpaque(alpha)) discard;
   if (uPeelMode == kPeelInit) {
     gl_FragData[0] = vec4(-z, z, 0.0, 0.0);
     gl_FragData[1] = vec4(0.0);
