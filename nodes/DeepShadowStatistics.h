@@ -22,7 +22,7 @@ struct DeepShadowLightStatistics {
 
 struct DeepShadowStatistics {
   std::vector<DeepShadowLightStatistics> lights;
-  double lastBuildMs = 0.0;  // wall time of the last rebuild, all lights, GPU finished
+  double lastBuildMs = 0.0;  // wall time of the last rebuild, all lights (waits for each pass)
   double totalBuildMs = 0.0;
   int rebuilds = 0;  // times the maps were rebuilt
   int casterTriangles = 0;

@@ -7,7 +7,7 @@ namespace ivshadow {
 // What the last frame of one SoPeelingSeparator cost.
 struct PeelStatistics {
   int passes = 0;       // peel passes, the depth-range pass included (not the opaque pass)
-  double peelMs = 0.0;  // wall time of the peel passes and compositing, GPU finished
+  double peelMs = 0.0;  // wall time of the peel passes and compositing (waits for each pass)
   int frames = 0;       // frames peeled since the node was created
 };
 

@@ -11,8 +11,10 @@
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <QApplication>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGLWidget>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -130,6 +132,17 @@ void ViewerWindow::saveScreenshot(const QString& path,
       done(error.what());
     }
   });
+}
+
+void ViewerWindow::settleDrawable() {
+  // Push the final geometry to the X server, then swap once: Mesa's software GLX path reads
+  // the drawable's size at the first make-current and again only after a swap.
+  QApplication::processEvents();
+  if (auto* gl = qobject_cast<QGLWidget*>(viewer_->getGLWidget())) {
+    gl->makeCurrent();
+    gl->swapBuffers();
+  }
+  viewer_->scheduleRedraw();
 }
 
 int ViewerWindow::framesDrawn() const {

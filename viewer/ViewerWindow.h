@@ -32,6 +32,9 @@ class ViewerWindow : public QMainWindow {
   // Saves the next frame to `path`; `done` gets an empty string or the error.
   void saveScreenshot(const QString& path, std::function<void(const std::string&)> done);
   int framesDrawn() const;
+  // Call once after show(): makes Mesa's software GLX take the window's final size before
+  // the first frame (docs/KNOWN_ISSUES.md) and draws that frame.
+  void settleDrawable();
   void setInteractive(bool interactive) { interactive_ = interactive; }
   void setViewerSize(int width, int height);
 

@@ -60,8 +60,10 @@ TEST(CoinShadowGroupAgreement, OpaqueShadowMasksOverlap) {
   }
   // The anchor must see a real shadow, or the comparison says nothing.
   ASSERT_GT(coinCount, 2000);
-  // The two methods place shadows by the same geometry; they differ only in the penumbra
-  // (Coin filters its map) and in texel rounding along the edges.
+  // The two methods place shadows by the same geometry; their masks differ only along the
+  // edges, where Coin filters its variance shadow map into a soft penumbra and each map
+  // rounds the edge to its own texels. Measured: 0.967 (2,767 of 2,860 pixels); 0.95 leaves
+  // room for that edge band and nothing more.
   const double iou = double(both) / double(either);
   RecordProperty("iou", std::to_string(iou));
   std::cout << "IoU " << iou << " (" << both << " / " << either << " pixels)\n";

@@ -143,6 +143,45 @@ TEST(ShadowGroup, FourLightsInOneGroup) {
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
+// Two lights in sibling separators, each over its own half of the floor with its own glass:
+// Coin gives both the same GL light number (the first separator's light is popped before the
+// second's is pushed). Each half must look exactly as it does when its separator is alone in
+// the group, so each light's shadows come from its own map.
+std::string siblingLights(bool left, bool right) {
+  auto half = [](double x) {
+    std::ostringstream iv;
+    iv << "    Separator {\n"
+       << "      DeepShadowLight { location " << x << " 0 1 }\n"
+       << "      Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
+       << "      Coordinate3 { point [ " << x - 0.55 << " -1 0, " << x + 0.55 << " -1 0, "
+       << x + 0.55 << " 1 0, " << x - 0.55 << " 1 0 ] }\n"
+       << "      FaceSet { numVertices 4 }\n"
+       << "      Material { diffuseColor " << (x < 0 ? "1 0 0" : "0 0 1") << " transparency 0.5 }\n"
+       << "      Coordinate3 { point [ " << x - 0.2 << " -0.2 0.5, " << x + 0.2 << " -0.2 0.5, "
+       << x + 0.2 << " 0.2 0.5, " << x - 0.2 << " 0.2 0.5 ] }\n"
+       << "      FaceSet { numVertices 4 }\n    }\n";
+    return iv.str();
+  };
+  return "#Inventor V2.1 ascii\nSeparator {\n"
+         "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+         "  TransparentShadowGroup {\n" +
+         (left ? half(-0.6) : std::string()) + (right ? half(0.6) : std::string()) + "  }\n}\n";
+}
+
+TEST(ShadowGroup, LightsInSiblingSeparatorsKeepTheirOwnMaps) {
+  const Image both = renderIv(siblingLights(true, true), 240);
+  const Image left = renderIv(siblingLights(true, false), 240);
+  const Image right = renderIv(siblingLights(false, true), 240);
+  for (int y = 0; y < 240; ++y)
+    for (int x = 0; x < 240; ++x) {
+      const Image& alone = x < 120 ? left : right;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(both.pixel(x, y)[c], alone.pixel(x, y)[c]) << "pixel " << x << "," << y;
+    }
+  // And each half does show its shadow: under the glass's edge the floor is tinted.
+  EXPECT_GT(both.pixel(60 - 30, 120)[0], both.pixel(60 - 30, 120)[2] + 20);
+}
+
 TEST(ShadowGroup, ShadowStyleDecidesWhoCastsAndWhoReceives) {
   ShadowScene scene;
   Filter noCaster = kRedGlass;
@@ -239,8 +278,9 @@ TEST(ShadowGroup, OutOfRangeFieldsAreClampedWithOneWarningEach) {
   {
     CoinMessageCapture capture;
     renderer->render(root);
-    root->touch();  // forces a rebuild, which resolves the fields again
+    lamp->touch();  // forces a rebuild, which resolves the fields again
     renderer->render(root);
+    EXPECT_EQ(collectDeepShadowStatistics(root).rebuilds, 2);
     for (const auto& message : capture.messages())
       if (message.raw.find("SoDeepShadowLight") != std::string::npos)
         warnings.push_back(message.raw);
