@@ -1,0 +1,93 @@
+#include "nodes/DeepShadowSettings.h"
+
+#include "nodes/SoDeepShadowLight.h"
+
+#include <Inventor/errors/SoDebugError.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+
+namespace ivshadow {
+namespace {
+
+// Lights already warned about, per field, so that a bad value is reported once and not on
+// every frame. Entries go when Coin reuses the address for a new node only in theory; the
+// cost of a missed warning then is one warning fewer.
+std::set<std::pair<const SoDeepShadowLight*, std::string>>& warned() {
+  static std::set<std::pair<const SoDeepShadowLight*, std::string>> fields;
+  return fields;
+}
+
+std::string nodeLabel(const SoDeepShadowLight& light) {
+  const SbName name = light.getName();
+  return name.getLength() > 0 ? std::string("SoDeepShadowLight \"") + name.getString() + "\""
+                              : std::string("SoDeepShadowLight");
+}
+
+void warnOnce(const SoDeepShadowLight& light, const char* field, const std::string& what) {
+  if (!warned().insert({&light, field}).second) return;
+  SoDebugError::postWarning("SoDeepShadowLight", "%s: field %s %s", nodeLabel(light).c_str(), field,
+                            what.c_str());
+}
+
+int clampInt(const SoDeepShadowLight& light, const char* field, int value, int low, int high) {
+  if (value >= low && value <= high) return value;
+  const int clamped = std::clamp(value, low, high);
+  warnOnce(light, field,
+           "is " + std::to_string(value) + ", outside " + std::to_string(low) + ".." +
+               std::to_string(high) + "; using " + std::to_string(clamped));
+  return clamped;
+}
+
+float finiteOr(const SoDeepShadowLight& light, const char* field, float value, float fallback) {
+  if (std::isfinite(value)) return value;
+  std::ostringstream text;
+  text << "is not a finite number; using " << fallback;
+  warnOnce(light, field, text.str());
+  return fallback;
+}
+
+}  // namespace
+
+bool DeepShadowSettings::operator==(const DeepShadowSettings& o) const {
+  return resolution == o.resolution && maxLayers == o.maxLayers && nearRadius == o.nearRadius &&
+         farRadius == o.farRadius && bias == o.bias && shadowColor == o.shadowColor &&
+         colorModel == o.colorModel && halfPrecision == o.halfPrecision &&
+         filterRadius == o.filterRadius;
+}
+
+DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize) {
+  DeepShadowSettings s;
+  s.resolution =
+      clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
+  s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, 64);
+  s.nearRadius = finiteOr(light, "nearRadius", light.nearRadius.getValue(), -1.0f);
+  s.farRadius = finiteOr(light, "farRadius", light.farRadius.getValue(), -1.0f);
+  if (s.nearRadius > 0.0f && s.farRadius > 0.0f && s.nearRadius >= s.farRadius) {
+    warnOnce(light, "nearRadius", "is not below farRadius; fitting both to the casters");
+    s.nearRadius = s.farRadius = -1.0f;
+  }
+  s.bias = finiteOr(light, "bias", light.bias.getValue(), 1.0f);
+  if (s.bias < 0.0f) {
+    warnOnce(light, "bias", "is negative; using 0");
+    s.bias = 0.0f;
+  }
+  s.shadowColor = light.shadowColor.getValue();
+  s.colorModel = light.colorModel.getValue();
+  s.halfPrecision = light.precision.getValue() == SoDeepShadowLight::HALF;
+  if (light.filter.getValue() == SoDeepShadowLight::PCF) {
+    int size = clampInt(light, "filterSize", light.filterSize.getValue(), 1, 9);
+    if (size % 2 == 0) {
+      warnOnce(light, "filterSize", "is even; using " + std::to_string(size + 1));
+      ++size;
+    }
+    s.filterRadius = size / 2;
+  }
+  return s;
+}
+
+}  // namespace ivshadow
