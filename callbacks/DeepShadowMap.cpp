@@ -146,7 +146,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, flagsBuffer);
   program.setInt("uPreviousDepth", 0);
   program.setInt("uPreviousVisibility", 1);
-  program.setInt("uColourModel", request.colourModel);
+  program.setInt("uColourModel", static_cast<int>(request.colourModel));
   program.setVec3("uLightPosition", request.light);
 
   const glm::vec3 light(request.light[0], request.light[1], request.light[2]);

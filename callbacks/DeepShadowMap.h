@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
+#include "callbacks/GlLimits.h"
 
 #include <array>
 #include <cstdint>
@@ -19,7 +20,7 @@ struct MapRequest {
   int layers = 4;
   bool coloured = false;
   bool halfPrecision = false;
-  int colourModel = 1;  // kColour* in deep_shadow_common.glsl
+  ShadowColourModel colourModel = ShadowColourModel::Saturate;
 };
 
 struct MapBuildResult {

@@ -2,6 +2,7 @@
 
 #include "callbacks/CasterBuffers.h"
 #include "callbacks/DeepShadowMap.h"
+#include "callbacks/GlLimits.h"
 #include "callbacks/GlProgram.h"
 
 #include <memory>
@@ -18,7 +19,7 @@ struct SceneTriangles;
 // used and freed with that context current.
 class DeepShadowPass {
  public:
-  static constexpr int kMaxSlots = 8;  // one per GL light
+  static constexpr int kMaxSlots = kMaxGlLights;  // one per GL light
 
   // Checks what the current context offers and builds the program; null with the reason in
   // `whyNot` when the context cannot run the pass.

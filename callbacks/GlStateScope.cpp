@@ -1,15 +1,11 @@
 #include "callbacks/GlStateScope.h"
 
+#include "callbacks/GlLimits.h"
+
 #include <epoxy/gl.h>
 
 namespace ivshadow {
 namespace {
-
-int getInt(GLenum name) {
-  GLint value = 0;
-  glGetIntegerv(name, &value);
-  return value;
-}
 
 // Switches that change which fragments of the pass survive or where they land.
 std::vector<GLenum> fragmentSwitches() {
@@ -26,7 +22,7 @@ std::vector<GLenum> fragmentSwitches() {
                               GL_RASTERIZER_DISCARD,
                               GL_SAMPLE_ALPHA_TO_COVERAGE,
                               GL_DEPTH_TEST};
-  const int clipPlanes = getInt(GL_MAX_CLIP_DISTANCES);
+  const int clipPlanes = glInteger(GL_MAX_CLIP_DISTANCES);
   for (int i = 0; i < clipPlanes; ++i) list.push_back(GL_CLIP_DISTANCE0 + GLenum(i));
   return list;
 }
@@ -34,32 +30,32 @@ std::vector<GLenum> fragmentSwitches() {
 }  // namespace
 
 GlStateScope::GlStateScope(Extent extent, const std::vector<int>& textureUnits) : extent_(extent) {
-  activeTexture_ = getInt(GL_ACTIVE_TEXTURE);
+  activeTexture_ = glInteger(GL_ACTIVE_TEXTURE);
   for (int unit : textureUnits) {
     glActiveTexture(GL_TEXTURE0 + GLenum(unit));
-    units_.push_back({unit, getInt(GL_TEXTURE_BINDING_2D), getInt(GL_TEXTURE_BINDING_2D_ARRAY),
-                      getInt(GL_SAMPLER_BINDING)});
+    units_.push_back({unit, glInteger(GL_TEXTURE_BINDING_2D),
+                      glInteger(GL_TEXTURE_BINDING_2D_ARRAY), glInteger(GL_SAMPLER_BINDING)});
   }
   glActiveTexture(GLenum(activeTexture_));
   if (extent_ != Extent::WholePass) return;
-  drawFramebuffer_ = getInt(GL_DRAW_FRAMEBUFFER_BINDING);
-  readFramebuffer_ = getInt(GL_READ_FRAMEBUFFER_BINDING);
+  drawFramebuffer_ = glInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+  readFramebuffer_ = glInteger(GL_READ_FRAMEBUFFER_BINDING);
   glGetIntegerv(GL_VIEWPORT, viewport_.data());
-  program_ = getInt(GL_CURRENT_PROGRAM);
-  vertexArray_ = getInt(GL_VERTEX_ARRAY_BINDING);
-  arrayBuffer_ = getInt(GL_ARRAY_BUFFER_BINDING);
-  storageBuffer_ = getInt(GL_SHADER_STORAGE_BUFFER_BINDING);
+  program_ = glInteger(GL_CURRENT_PROGRAM);
+  vertexArray_ = glInteger(GL_VERTEX_ARRAY_BINDING);
+  arrayBuffer_ = glInteger(GL_ARRAY_BUFFER_BINDING);
+  storageBuffer_ = glInteger(GL_SHADER_STORAGE_BUFFER_BINDING);
   for (GLuint i = 0; i < 2; ++i)
     glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &storageBufferBindings_[i]);
-  blendFunc_ = {getInt(GL_BLEND_SRC_RGB), getInt(GL_BLEND_DST_RGB), getInt(GL_BLEND_SRC_ALPHA),
-                getInt(GL_BLEND_DST_ALPHA)};
-  blendEquation_ = {getInt(GL_BLEND_EQUATION_RGB), getInt(GL_BLEND_EQUATION_ALPHA)};
-  depthFunc_ = getInt(GL_DEPTH_FUNC);
+  blendFunc_ = {glInteger(GL_BLEND_SRC_RGB), glInteger(GL_BLEND_DST_RGB),
+                glInteger(GL_BLEND_SRC_ALPHA), glInteger(GL_BLEND_DST_ALPHA)};
+  blendEquation_ = {glInteger(GL_BLEND_EQUATION_RGB), glInteger(GL_BLEND_EQUATION_ALPHA)};
+  depthFunc_ = glInteger(GL_DEPTH_FUNC);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
   glGetBooleanv(GL_COLOR_WRITEMASK, colourMask_.data());
   glGetIntegerv(GL_POLYGON_MODE, polygonMode_.data());
-  clipOrigin_ = getInt(GL_CLIP_ORIGIN);
-  clipDepthMode_ = getInt(GL_CLIP_DEPTH_MODE);
+  clipOrigin_ = glInteger(GL_CLIP_ORIGIN);
+  clipDepthMode_ = glInteger(GL_CLIP_DEPTH_MODE);
   for (GLenum cap : fragmentSwitches()) enables_.emplace_back(cap, glIsEnabled(cap) == GL_TRUE);
 }
 

@@ -1,7 +1,7 @@
 #include "callbacks/PeelPass.h"
 
 #include "GlslSources.h"
-#include "callbacks/DeepShadowPass.h"
+#include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
 
 #include <epoxy/gl.h>
@@ -22,12 +22,6 @@ GlTexture makeTarget(GLenum format, int width, int height) {
   return texture;
 }
 
-int current(GLenum name) {
-  GLint value = 0;
-  glGetIntegerv(name, &value);
-  return value;
-}
-
 }  // namespace
 
 std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
@@ -44,8 +38,8 @@ std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
   pass->progress_ = createBuffer();
   glNamedBufferData(pass->progress_.get(), sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
   pass->emptyVertexArray_ = createVertexArray();
-  // The peel textures sit below the deep shadow maps' units (the top 2 * kMaxSlots).
-  pass->firstUnit_ = current(GL_MAX_TEXTURE_IMAGE_UNITS) - 2 * DeepShadowPass::kMaxSlots - 3;
+  // The peel textures sit below the deep shadow maps' units (the top 2 * kMaxGlLights).
+  pass->firstUnit_ = glInteger(GL_MAX_TEXTURE_IMAGE_UNITS) - 2 * kMaxGlLights - 3;
   return pass;
 }
 
@@ -81,7 +75,7 @@ void PeelPass::begin(int x, int y, int width, int height) {
   std::vector<int> units;
   for (int i = 0; i < 3; ++i) units.push_back(firstUnit_ + i);
   saved_ = std::make_unique<GlStateScope>(GlStateScope::Extent::WholePass, units);
-  targetFramebuffer_ = current(GL_DRAW_FRAMEBUFFER_BINDING);
+  targetFramebuffer_ = glInteger(GL_DRAW_FRAMEBUFFER_BINDING);
   viewport_ = {x, y, width, height};
   // Window coordinates index the targets directly, so they reach the viewport's far corner.
   allocate(x + width, y + height);

@@ -41,9 +41,7 @@ void darkenLights(int first) {
 }
 
 unsigned int currentProgram() {
-  GLint program = 0;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-  return static_cast<unsigned int>(program);
+  return static_cast<unsigned int>(glInteger(GL_CURRENT_PROGRAM));
 }
 
 }  // namespace ivshadow

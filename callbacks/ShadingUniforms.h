@@ -1,5 +1,7 @@
 #pragma once
 
+#include "callbacks/GlLimits.h"
+
 #include <array>
 
 namespace ivshadow {
@@ -10,7 +12,7 @@ class DeepShadowPass;
 // SoShaderParameter nodes cannot set them: Coin matches uniform names against
 // glGetActiveUniform, which reports arrays as "name[0]", and does not know sampler arrays.
 struct ShadingUniforms {
-  static constexpr int kMaxLights = 8;
+  static constexpr int kMaxLights = kMaxGlLights;
   int lightCount = 0;
   int mapCount = 0;
   float eyeToLocal[16] = {};  // column-major, as glUniformMatrix4fv reads it

@@ -175,9 +175,10 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     request.layers = map.settings.maxLayers;
     request.coloured = map.coloured;
     request.halfPrecision = map.settings.halfPrecision;
-    request.colourModel = !map.coloured                                         ? 0
-                          : map.settings.colorModel == SoDeepShadowLight::POWER ? 2
-                                                                                : 1;
+    request.colourModel = !map.coloured ? ShadowColourModel::Monochrome
+                          : map.settings.colorModel == SoDeepShadowLight::POWER
+                              ? ShadowColourModel::Power
+                              : ShadowColourModel::Saturate;
     const MapBuildResult built = pass.build(int(slot), request);
     map.faceFirst = built.firstLayer;
     map.faceLayers = built.layersUsed;

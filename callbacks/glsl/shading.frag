@@ -1,7 +1,7 @@
 // Coin's lighting (the fixed-function equations Coin programs through glLight/glMaterial)
 // evaluated per pixel, with each deep shadow light's contribution multiplied by the
 // visibility looked up in its cube deep shadow map.
-const int kMaxLights = 8;
+const int kMaxLights = 8;  // kMaxGlLights in callbacks/GlLimits.h
 
 #ifdef IVSHADOW_PEEL_PASSES
 // The peel passes' variant: the depth test against the opaque picture (less, no writes)
