@@ -18,13 +18,6 @@ GLuint makeRenderbuffer(GLenum format, int width, int height) {
 
 }  // namespace
 
-void GlFramebufferRelease::operator()(unsigned int name) const {
-  glDeleteFramebuffers(1, &name);
-}
-void GlRenderbufferRelease::operator()(unsigned int name) const {
-  glDeleteRenderbuffers(1, &name);
-}
-
 GlFramebufferTarget GlFramebufferTarget::create(int width, int height, std::string& error) {
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
@@ -36,12 +29,11 @@ GlFramebufferTarget GlFramebufferTarget::create(int width, int height, std::stri
   GlFramebufferTarget target;
   target.width_ = width;
   target.height_ = height;
-  target.colour_ = GlObject<GlRenderbufferRelease>(makeRenderbuffer(GL_RGBA8, width, height));
-  target.depthStencil_ =
-      GlObject<GlRenderbufferRelease>(makeRenderbuffer(GL_DEPTH24_STENCIL8, width, height));
+  target.colour_ = GlRenderbuffer(makeRenderbuffer(GL_RGBA8, width, height));
+  target.depthStencil_ = GlRenderbuffer(makeRenderbuffer(GL_DEPTH24_STENCIL8, width, height));
   GLuint fbo = 0;
   glGenFramebuffers(1, &fbo);
-  target.framebuffer_ = GlObject<GlFramebufferRelease>(fbo);
+  target.framebuffer_ = GlFramebuffer(fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
                             target.colour_.get());

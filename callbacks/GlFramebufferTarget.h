@@ -1,18 +1,11 @@
 #pragma once
 
-#include "callbacks/GlObject.h"
+#include "callbacks/GlHandles.h"
 #include "image/Image.h"
 
 #include <string>
 
 namespace ivshadow {
-
-struct GlFramebufferRelease {
-  void operator()(unsigned int name) const;
-};
-struct GlRenderbufferRelease {
-  void operator()(unsigned int name) const;
-};
 
 // An off-screen render target: RGBA8 colour plus a 24-bit depth / 8-bit stencil buffer.
 class GlFramebufferTarget {
@@ -34,9 +27,9 @@ class GlFramebufferTarget {
  private:
   int width_ = 0;
   int height_ = 0;
-  GlObject<GlFramebufferRelease> framebuffer_;
-  GlObject<GlRenderbufferRelease> colour_;
-  GlObject<GlRenderbufferRelease> depthStencil_;
+  GlFramebuffer framebuffer_;
+  GlRenderbuffer colour_;
+  GlRenderbuffer depthStencil_;
 };
 
 }  // namespace ivshadow

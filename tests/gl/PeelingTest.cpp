@@ -132,11 +132,7 @@ Rendered render(const std::string& text,
   auto renderer = OffscreenRenderer::create(kSize, kSize, error);
   if (!renderer) throw std::runtime_error(error);
   renderer->action().setTransparencyType(type);
-  SoInput input;
-  input.setBuffer(text.data(), text.size());
-  SoSeparator* root = SoDB::readAll(&input);
-  if (!root) throw std::runtime_error("test scene does not parse");
-  root->ref();
+  SoSeparator* root = readIv(text);
   renderer->render(root);
   Rendered out{renderer->read(), collectPeelStatistics(root)};
   renderer.reset();
@@ -145,11 +141,7 @@ Rendered render(const std::string& text,
 }
 
 PeelReference reference(const std::string& text) {
-  init();
-  SoInput input;
-  input.setBuffer(text.data(), text.size());
-  SoSeparator* root = SoDB::readAll(&input);
-  root->ref();
+  SoSeparator* root = readIv(text);
   PeelReference result(root, kViewHeight, kSize);
   root->unref();
   return result;

@@ -216,12 +216,7 @@ TEST(ShadowGroup, MapsAreRebuiltOnlyWhenSomethingUnderTheGroupChanged) {
   init();
   ShadowScene scene;
   scene.filters = {kRedGlass};
-  const std::string text = scene.text();
-  SoInput input;
-  input.setBuffer(text.data(), text.size());
-  SoSeparator* root = SoDB::readAll(&input);
-  ASSERT_NE(root, nullptr);
-  root->ref();
+  SoSeparator* root = readIv(scene.text());
   std::string error;
   auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
@@ -262,12 +257,7 @@ TEST(ShadowGroup, OutOfRangeFieldsAreClampedWithOneWarningEach) {
   ShadowScene scene;
   scene.filters = {kRedGlass};
   scene.lightFields = "resolution 0 maxLayers -3";
-  const std::string text = scene.text();
-  SoInput input;
-  input.setBuffer(text.data(), text.size());
-  SoSeparator* root = SoDB::readAll(&input);
-  ASSERT_NE(root, nullptr);
-  root->ref();
+  SoSeparator* root = readIv(scene.text());
   auto* lamp = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
   ASSERT_NE(lamp, nullptr);
   lamp->bias = std::nanf("");  // the file format cannot spell NaN; an application can

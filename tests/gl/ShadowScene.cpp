@@ -107,16 +107,22 @@ Expectation ShadowPicture::operator()(int px, int py) const {
   return e;
 }
 
-Image renderIv(const std::string& text, int size, SoNode** rootOut) {
+SoSeparator* readIv(const std::string& text) {
   init();
-  std::string error;
-  auto renderer = OffscreenRenderer::create(size, size, error);
-  if (!renderer) throw std::runtime_error("no headless GL context: " + error);
   SoInput input;
   input.setBuffer(text.data(), text.size());
   SoSeparator* root = SoDB::readAll(&input);
   if (root == nullptr) throw std::runtime_error("the test scene does not parse:\n" + text);
   root->ref();
+  return root;
+}
+
+Image renderIv(const std::string& text, int size, SoNode** rootOut) {
+  init();
+  std::string error;
+  auto renderer = OffscreenRenderer::create(size, size, error);
+  if (!renderer) throw std::runtime_error("no headless GL context: " + error);
+  SoSeparator* root = readIv(text);
   renderer->render(root);
   Image image = renderer->read();
   if (rootOut != nullptr) {

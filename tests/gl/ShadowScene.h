@@ -8,6 +8,7 @@
 #include <vector>
 
 class SoNode;
+class SoSeparator;
 
 namespace ivshadow::test {
 
@@ -63,6 +64,10 @@ struct ShadowPicture {
 
   Expectation operator()(int px, int py) const;
 };
+
+// Reads Inventor text (after init()); returns the root, referenced. Throws when it does not
+// parse.
+SoSeparator* readIv(const std::string& text);
 
 // Reads Inventor text and renders it headlessly at size x size; returns the root (referenced)
 // through `root` when given so callers can inspect nodes afterwards.
