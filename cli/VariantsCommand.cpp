@@ -2,6 +2,7 @@
 
 #include "cli/ChildProcesses.h"
 #include "cli/ExitStatus.h"
+#include "cli/ProgressBar.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "nodes/IvShadowInit.h"
@@ -10,7 +11,6 @@
 #include "scene/VariantsFile.h"
 
 #include <Inventor/nodes/SoSeparator.h>
-#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -100,19 +100,6 @@ double number(const nlohmann::json& stats, const char* key, const char* inner = 
   return value->is_number() ? value->get<double>() : 0.0;
 }
 
-void progress(int done, int total, const std::string& name, bool terminal) {
-  constexpr int kWidth = 30;
-  const int filled = total > 0 ? done * kWidth / total : kWidth;
-  if (terminal) {
-    std::cerr << "\r[" << std::string(std::size_t(filled), '#')
-              << std::string(std::size_t(kWidth - filled), '.') << "] " << done << "/" << total
-              << " " << name << "\033[K" << std::flush;
-    if (done == total) std::cerr << '\n';
-  } else {
-    std::cerr << "[" << done << "/" << total << "] " << name << '\n';
-  }
-}
-
 void writeReports(const VariantsOptions& options, const std::vector<Variant>& variants,
                   const std::vector<Outcome>& outcomes) {
   std::ostringstream csv;
@@ -175,7 +162,7 @@ int runVariants(const VariantsOptions& options) {
       throw InputError(options.outputDir + ": error: cannot create the output directory");
 
     const std::string self = currentExecutable();
-    const bool terminal = isatty(2) != 0;
+    ProgressBar bar;
     std::vector<Outcome> outcomes(variants.size());
     ChildProcesses children(options.jobs);
     std::size_t next = 0;
@@ -220,7 +207,7 @@ int runVariants(const VariantsOptions& options) {
       }
       std::filesystem::remove(scratch(i, ".stats.json"), made);
       std::filesystem::remove(scratch(i, ".log"), made);
-      progress(++finished, total, variants[i].name, terminal);
+      bar.update(++finished, total, variants[i].name);
     }
 
     writeReports(options, variants, outcomes);

@@ -1,4 +1,5 @@
 #include "cli/CompareCommand.h"
+#include "cli/ReferenceCommand.h"
 #include "cli/RenderCommand.h"
 #include "cli/VariantsCommand.h"
 #include "nodes/IvShadowInit.h"
@@ -16,6 +17,7 @@ const char* kExamples = R"(Examples:
   ivshadow render scene.iv -o red.png --set Glass.diffuseColor="1 0 0" --set Lamp.intensity=0.5
   ivshadow render scene.iv -o coin.png --transparency SORTED_LAYERS_BLEND
   ivshadow variants iv_scenes/coloured_shadows.iv iv_scenes/coloured_shadows.variants -o out/v
+  ivshadow reference scene.iv -o exact.png --size 640x480 --pfm exact.pfm
   ivshadow compare reference.png render.png --diff diff.png
   ivshadow view iv_scenes/glass_over_floor.iv
 
@@ -61,6 +63,23 @@ int main(int argc, char** argv) {
   variantsCommand->add_option("--jobs,-j", variants.jobs, "Variants rendered at once")
       ->capture_default_str();
 
+  ivshadow::ReferenceCommandOptions reference;
+  CLI::App* referenceCommand = app.add_subcommand(
+      "reference", "Render the exact picture on the CPU (Embree ray tracing) to compare with");
+  referenceCommand->add_option("scene", reference.scene, "Open Inventor scene file (.iv)")
+      ->required();
+  referenceCommand->add_option("-o,--output", reference.output, "PNG file to write")->required();
+  referenceCommand->add_option("--size", reference.size, "Image size WIDTHxHEIGHT")
+      ->capture_default_str();
+  referenceCommand->add_option("--pfm", reference.pfm,
+                               "Also write the unrounded colours as a float PFM");
+  referenceCommand
+      ->add_option("--set", reference.assignments,
+                   "Assign NAME.field=VALUE (Inventor syntax) to DEF-named nodes")
+      ->allow_extra_args(false);
+  referenceCommand->add_option("--threads", reference.threads, "Worker threads (0: every core)")
+      ->capture_default_str();
+
   ivshadow::CompareOptions compare;
   CLI::App* compareCommand =
       app.add_subcommand("compare", "Measure how far one PNG is from another (the reference)");
@@ -88,5 +107,6 @@ int main(int argc, char** argv) {
   if (renderCommand->parsed()) return ivshadow::runRender(render);
   if (variantsCommand->parsed()) return ivshadow::runVariants(variants);
   if (compareCommand->parsed()) return ivshadow::runCompare(compare);
+  if (referenceCommand->parsed()) return ivshadow::runReference(reference);
   return ivshadow::runViewer(view, argv[0]);
 }

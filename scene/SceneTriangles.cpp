@@ -18,17 +18,20 @@ namespace {
 
 struct Collector {
   SceneTriangles result;
-  std::map<int, std::vector<TriangleVertex>> byTexture;
-  std::map<std::tuple<const unsigned char*, int, int, int, int>, int> textureIndex;
+  std::map<int, std::pair<std::vector<TriangleVertex>, std::vector<std::uint32_t>>> byTexture;
+  TextureCache textures;
+  std::uint32_t shape = 0;
 };
 
+}  // namespace
+
 bool isGrey(float r, float g, float b) {
-  // Closer than one 8-bit step counts as grey: such a tint would not show.
   constexpr float kStep = 1.0f / 255.0f;
   return std::fabs(r - g) < kStep && std::fabs(g - b) < kStep;
 }
 
-int textureOf(Collector& collector, SoCallbackAction* action) {
+int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures,
+                   TextureCache& cache) {
   SbVec2s size;
   int components = 0;
   const unsigned char* data = action->getTextureImage(size, components);
@@ -36,8 +39,8 @@ int textureOf(Collector& collector, SoCallbackAction* action) {
     return -1;
   const int model = static_cast<int>(action->getTextureModel());
   const auto key = std::make_tuple(data, int(size[0]), int(size[1]), components, model);
-  const auto found = collector.textureIndex.find(key);
-  if (found != collector.textureIndex.end()) return found->second;
+  const auto found = cache.index.find(key);
+  if (found != cache.index.end()) return found->second;
 
   TextureImage image;
   image.width = size[0];
@@ -61,11 +64,13 @@ int textureOf(Collector& collector, SoCallbackAction* action) {
     if (out[0] != out[1] || out[1] != out[2]) image.grey = false;
     if (out[3] != 255) image.opaque = false;
   }
-  const int index = static_cast<int>(collector.result.textures.size());
-  collector.result.textures.push_back(std::move(image));
-  collector.textureIndex.emplace(key, index);
+  const int index = static_cast<int>(textures.size());
+  textures.push_back(std::move(image));
+  cache.index.emplace(key, index);
   return index;
 }
+
+namespace {
 
 SoCallbackAction::Response startGroup(void*, SoCallbackAction* action, const SoNode* node) {
   SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node),
@@ -84,9 +89,10 @@ void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   if (!(SoShadowStyleElement::get(action->getState()) & SoShadowStyleElement::CASTS_SHADOW)) return;
   auto& collector = *static_cast<Collector*>(data);
   const SbMatrix& model = action->getModelMatrix();
-  const int texture = textureOf(collector, action);
+  const int texture = currentTexture(action, collector.result.textures, collector.textures);
   const SbMatrix& textureMatrix = action->getTextureMatrix();
-  auto& out = collector.byTexture[texture];
+  auto& [out, shapes] = collector.byTexture[texture];
+  shapes.push_back(collector.shape);
   for (const SoPrimitiveVertex* v : {v1, v2, v3}) {
     TriangleVertex vertex{};
     SbVec3f p;
@@ -116,23 +122,31 @@ void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   }
 }
 
+SoCallbackAction::Response nextShape(void* data, SoCallbackAction*, const SoNode*) {
+  ++static_cast<Collector*>(data)->shape;
+  return SoCallbackAction::CONTINUE;
+}
+
 }  // namespace
 
 SceneTriangles extractShadowCasters(SoNode* root) {
   Collector collector;
   SoCallbackAction action;
+  action.addPreCallback(SoShape::getClassTypeId(), nextShape, &collector);
   action.addPreCallback(root->getTypeId(), startGroup, nullptr);
   action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
   action.addTriangleCallback(SoShape::getClassTypeId(), triangle, &collector);
   action.apply(root);
 
   SceneTriangles& result = collector.result;
-  for (auto& [texture, vertices] : collector.byTexture) {
+  for (auto& [texture, triangles] : collector.byTexture) {
+    const auto& [vertices, shapes] = triangles;
     TriangleBatch batch;
     batch.texture = texture;
     batch.firstVertex = result.vertices.size();
     batch.vertexCount = vertices.size();
     result.vertices.insert(result.vertices.end(), vertices.begin(), vertices.end());
+    result.shapes.insert(result.shapes.end(), shapes.begin(), shapes.end());
     result.batches.push_back(batch);
   }
   return result;

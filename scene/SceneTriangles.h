@@ -4,9 +4,13 @@
 #include <Inventor/SbColor.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <map>
+#include <tuple>
 #include <vector>
 
 class SoNode;
+class SoCallbackAction;
 
 namespace ivshadow {
 
@@ -43,6 +47,9 @@ struct TriangleBatch {
 struct SceneTriangles {
   std::vector<TriangleVertex> vertices;  // three per triangle, grouped into batches
   std::vector<TriangleBatch> batches;
+  // Per triangle, in the order of `vertices`: which shape it came from (traversal order), so
+  // that two triangles of one surface met on their shared edge count as one surface.
+  std::vector<std::uint32_t> shapes;
   std::vector<TextureImage> textures;
   SbBox3f bounds;
   bool hasTransparent = false;          // some triangle lets light through
@@ -55,5 +62,16 @@ struct SceneTriangles {
 // CASTS_SHADOW (the default inside a SoTransparentShadowGroup). Fully clear triangles are
 // kept; they cast nothing, which the map builder handles per fragment (texture alpha).
 SceneTriangles extractShadowCasters(SoNode* root);
+
+// Whether a colour is grey to within one 8-bit step (such a tint would not show).
+bool isGrey(float r, float g, float b);
+
+// The current texture of `action` (index into `textures`, added on first use; -1 for none).
+// `cache` maps Coin's image data to indices so that each image is copied once.
+struct TextureCache {
+  std::map<std::tuple<const unsigned char*, int, int, int, int>, int> index;
+};
+int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures,
+                   TextureCache& cache);
 
 }  // namespace ivshadow

@@ -1,0 +1,92 @@
+#include "cli/ReferenceCommand.h"
+
+#include "cli/ExitStatus.h"
+#include "cli/ProgressBar.h"
+#include "image/AtomicFile.h"
+#include "image/ImageSize.h"
+#include "image/PfmFile.h"
+#include "image/PngFile.h"
+#include "nodes/IvShadowInit.h"
+#include "raytrace/ReferenceRenderer.h"
+#include "scene/FieldAssignment.h"
+#include "scene/InputError.h"
+#include "scene/SceneLoader.h"
+#include "scene/ViewSetup.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <chrono>
+#include <csignal>
+#include <future>
+#include <iostream>
+
+namespace ivshadow {
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onInterrupt(int) {
+  interrupted.store(true);
+}
+
+}  // namespace
+
+int runReference(const ReferenceCommandOptions& options) {
+  return withExitStatus([&] {
+    const ImageSize size = ImageSize::parse(options.size, "--size");
+    std::vector<FieldAssignment> assignments;
+    for (const std::string& text : options.assignments)
+      assignments.push_back(FieldAssignment::parse(text));
+    AtomicFile::checkWritable(options.output, "the image");
+    if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
+
+    init();
+    LoadedScene scene = loadScene(options.scene);
+    for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
+    for (const FieldAssignment& assignment : assignments)
+      assignment.apply(scene.root.get(), options.scene);
+    const ViewSetup view = ViewSetup::prepare(
+        scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
+
+    ReferenceOptions reference;
+    reference.width = size.width;
+    reference.height = size.height;
+    reference.threads = options.threads;
+    std::atomic<int> rows{0};
+    reference.rowsDone = &rows;
+    reference.cancel = &interrupted;
+    interrupted = false;
+    auto previous = std::signal(SIGINT, onInterrupt);
+    const auto start = std::chrono::steady_clock::now();
+    auto future =
+        std::async(std::launch::async, [&] { return renderReference(view.root.get(), reference); });
+    ProgressBar bar;
+    bool shown = false;
+    while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
+      // Only renders that make the user wait get a bar.
+      if (std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) continue;
+      if (bar.terminal() || !shown) bar.update(rows.load(), size.height, "rows");
+      shown = true;
+    }
+    std::optional<ReferenceResult> result = future.get();
+    std::signal(SIGINT, previous);
+    if (shown && bar.terminal() && rows.load() < size.height) std::cerr << '\n';
+    if (!result) {
+      std::cerr << "ivshadow: interrupted; nothing written\n";
+      return 130;
+    }
+    for (const std::string& warning : result->warnings)
+      std::cerr << options.scene << ": warning: " << warning << '\n';
+    if (!options.pfm.empty())
+      writePfm(options.pfm, result->image.width, result->image.height, result->image.rgb);
+    writePng(options.output, result->image.toImage());
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "wrote " << options.output << " (" << size.toString() << ", " << result->triangles
+              << " triangles, " << result->shadowRays << " shadow rays, " << ms << " ms)\n";
+    return 0;
+  });
+}
+
+}  // namespace ivshadow

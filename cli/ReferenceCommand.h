@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ivshadow {
+
+struct ReferenceCommandOptions {
+  std::string scene;
+  std::string output;  // PNG
+  std::string pfm;     // optional: unrounded float RGB
+  std::string size = "800x600";
+  std::vector<std::string> assignments;  // NAME.field=VALUE
+  int threads = 0;
+};
+
+// `ivshadow reference`: the exact CPU picture (raytrace/ReferenceRenderer.h). Exit 0, 2 on
+// bad input, 130 when interrupted (Ctrl-C), 1 otherwise; never leaves a partial file.
+int runReference(const ReferenceCommandOptions& options);
+
+}  // namespace ivshadow

@@ -1,0 +1,58 @@
+#include "image/PfmFile.h"
+
+#include "image/AtomicFile.h"
+#include "scene/InputError.h"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+namespace ivshadow {
+namespace {
+
+bool littleEndianHost() {
+  const std::uint16_t one = 1;
+  unsigned char first = 0;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+}  // namespace
+
+void writePfm(const std::string& path, int width, int height, const std::vector<float>& rgb) {
+  AtomicFile file(path);
+  {
+    std::ofstream out(file.temporaryPath(), std::ios::binary);
+    // A negative scale says little-endian; PFM stores rows bottom to top.
+    out << "PF\n"
+        << width << ' ' << height << '\n'
+        << (littleEndianHost() ? "-1.0" : "1.0") << '\n';
+    for (int y = height - 1; y >= 0; --y)
+      out.write(reinterpret_cast<const char*>(&rgb[std::size_t(y) * std::size_t(width) * 3]),
+                std::streamsize(std::size_t(width) * 3 * sizeof(float)));
+    if (!out.flush()) throw std::runtime_error(path + ": cannot write the float image");
+  }
+  file.commit();
+}
+
+std::vector<float> readPfm(const std::string& path, int& width, int& height) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": error: cannot open the float image");
+  std::string magic;
+  float scale = 0.0f;
+  in >> magic >> width >> height >> scale;
+  in.get();
+  if (magic != "PF" || width <= 0 || height <= 0 || !in)
+    throw InputError(path + ":1: error: expected a colour PFM header 'PF', width, height, scale");
+  if ((scale < 0.0f) != littleEndianHost())
+    throw InputError(path + ":3: error: byte order of this PFM differs from the machine's");
+  std::vector<float> rgb(std::size_t(width) * std::size_t(height) * 3);
+  for (int y = height - 1; y >= 0; --y)
+    in.read(reinterpret_cast<char*>(&rgb[std::size_t(y) * std::size_t(width) * 3]),
+            std::streamsize(std::size_t(width) * 3 * sizeof(float)));
+  if (!in) throw InputError(path + ": error: the float image ends early");
+  return rgb;
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,165 @@
+#include "raytrace/CasterScene.h"
+
+#include "raytrace/SurfaceOptics.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace ivshadow {
+namespace {
+
+// Embree hands the filter function the context it was given; the shadow ray's running
+// product travels in it.
+struct ShadowRayContext : RTCIntersectContext {
+  const CasterScene* scene = nullptr;
+  ShadowColourModel model = ShadowColourModel::Monochrome;
+  glm::vec3 visibility{1.0f};
+  // Surfaces already counted: Embree may report a triangle twice (spatial splits) and a ray
+  // through a shared edge meets both triangles; one shape at one distance is one surface.
+  std::array<std::pair<std::uint32_t, float>, 64> seen{};
+  std::size_t seenCount = 0;
+  float sameSurface = 0.0f;  // in ray parameter units
+};
+
+bool alreadySeen(ShadowRayContext& context, std::uint32_t shape, float t) {
+  for (std::size_t i = 0; i < std::min(context.seenCount, context.seen.size()); ++i)
+    if (context.seen[i].first == shape &&
+        std::fabs(context.seen[i].second - t) <= context.sameSurface)
+      return true;
+  if (context.seenCount < context.seen.size()) context.seen[context.seenCount] = {shape, t};
+  ++context.seenCount;
+  return false;
+}
+
+void shadowFilter(const RTCFilterFunctionNArguments* args) {
+  auto& context = *static_cast<ShadowRayContext*>(args->context);
+  const unsigned int primitive = RTCHitN_primID(args->hit, args->N, 0);
+  const float u = RTCHitN_u(args->hit, args->N, 0);
+  const float v = RTCHitN_v(args->hit, args->N, 0);
+  const float t = RTCRayN_tfar(args->ray, args->N, 0);
+  const glm::vec4 colour = context.scene->surfaceColour(primitive, u, v);
+  // A fully clear surface casts nothing, and a surface met before is not met again.
+  if (colour.a <= 0.0f || alreadySeen(context, context.scene->shapeOf(primitive), t)) {
+    args->valid[0] = 0;
+    return;
+  }
+  if (isOpaque(colour.a)) {
+    context.visibility = glm::vec3(0.0f);
+    return;  // accepted: the ray is blocked and traversal stops
+  }
+  context.visibility *= transmittance(glm::clamp(colour, 0.0f, 1.0f), context.model);
+  args->valid[0] = 0;  // let light through: look for the next surface
+}
+
+}  // namespace
+
+std::unique_ptr<CasterScene> CasterScene::build(RTCDevice device, SceneTriangles casters,
+                                                std::string& error) {
+  std::unique_ptr<CasterScene> result(new CasterScene);
+  result->casters_ = std::move(casters);
+  const SceneTriangles& triangles = result->casters_;
+  result->triangleTexture_.resize(triangles.triangleCount(), -1);
+  for (const TriangleBatch& batch : triangles.batches)
+    std::fill_n(result->triangleTexture_.begin() + std::ptrdiff_t(batch.firstVertex / 3),
+                batch.vertexCount / 3, batch.texture);
+
+  result->scene_ = EmbreeScene(rtcNewScene(device));
+  if (!result->scene_) {
+    error = "Embree could not create a scene";
+    return nullptr;
+  }
+  rtcSetSceneFlags(result->scene_.get(), RTC_SCENE_FLAG_ROBUST);
+  const std::size_t count = triangles.triangleCount();
+  if (count > 0) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), count * 3));
+    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), count));
+    if (positions == nullptr || indices == nullptr) {
+      rtcReleaseGeometry(geometry);
+      error = "Embree could not allocate " + std::to_string(count) + " triangles";
+      return nullptr;
+    }
+    for (std::size_t i = 0; i < count * 3; ++i) {
+      for (int k = 0; k < 3; ++k)
+        positions[i * 3 + std::size_t(k)] = triangles.vertices[i].position[k];
+      indices[i] = static_cast<unsigned int>(i);
+    }
+    rtcSetGeometryOccludedFilterFunction(geometry, shadowFilter);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(result->scene_.get(), geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(result->scene_.get());
+  if (rtcGetDeviceError(device) != RTC_ERROR_NONE) {
+    error = "Embree could not build the bounding volume hierarchy of " + std::to_string(count) +
+            " triangles";
+    return nullptr;
+  }
+  return result;
+}
+
+CasterScene::~CasterScene() = default;
+
+glm::vec4 CasterScene::surfaceColour(unsigned int primitive, float u, float v) const {
+  const TriangleVertex* vertex = &casters_.vertices[std::size_t(primitive) * 3];
+  const float w = 1.0f - u - v;
+  glm::vec4 colour(0.0f);
+  float s = 0.0f, t = 0.0f;
+  const float weights[3] = {w, u, v};
+  for (int i = 0; i < 3; ++i) {
+    colour += weights[i] * glm::vec4(vertex[i].colour[0], vertex[i].colour[1], vertex[i].colour[2],
+                                     vertex[i].colour[3]);
+    s += weights[i] * vertex[i].texCoord[0];
+    t += weights[i] * vertex[i].texCoord[1];
+  }
+  const int texture = triangleTexture_[primitive];
+  if (texture < 0) return colour;
+  const TextureImage& image = casters_.textures[std::size_t(texture)];
+  const glm::vec3 blend(image.blendColour[0], image.blendColour[1], image.blendColour[2]);
+  return applyTextureModel(colour, sampleTexture(image, s, t), image.model, blend);
+}
+
+glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& normal,
+                                     const glm::vec3& to, ShadowColourModel model) const {
+  if (casters_.vertices.empty()) return glm::vec3(1.0f);
+  // Float positions carry a relative error near 1e-7; stepping 1e-5 of the larger of the
+  // point's magnitude and the ray's length off the surface clears it by two orders.
+  const glm::vec3 toLight = to - from;
+  const float length = glm::length(toLight);
+  if (!(length > 0.0f)) return glm::vec3(1.0f);
+  const float magnitude = std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)});
+  const float offset = 1e-5f * std::max(magnitude, length);
+  const float side = glm::dot(normal, toLight) >= 0.0f ? 1.0f : -1.0f;
+  const float normalLength = glm::length(normal);
+  const glm::vec3 origin =
+      normalLength > 0.0f ? from + normal * (side * offset / normalLength) : from;
+  const glm::vec3 direction = to - origin;
+
+  ShadowRayContext context;
+  rtcInitIntersectContext(&context);
+  context.scene = this;
+  context.model = model;
+  context.sameSurface = 1e-5f;
+  RTCRay ray{};
+  ray.org_x = origin.x;
+  ray.org_y = origin.y;
+  ray.org_z = origin.z;
+  ray.dir_x = direction.x;
+  ray.dir_y = direction.y;
+  ray.dir_z = direction.z;
+  ray.tnear = std::min(offset / length, 0.5f);
+  ray.tfar = 1.0f;  // the light itself
+  ray.mask = 0xFFFFFFFFu;
+  ray.flags = 0;
+  rtcOccluded1(scene_.get(), &context, &ray);
+  // Embree marks a blocked ray with tfar = -inf (an accepted hit: an opaque surface).
+  if (ray.tfar < 0.0f) return glm::vec3(0.0f);
+  return context.visibility;
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "callbacks/GlLimits.h"
+#include "raytrace/EmbreeHandles.h"
+#include "scene/SceneTriangles.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace ivshadow {
+
+// The shadow casters of one group as an Embree scene, answering the exact question a deep
+// shadow map approximates: how much light of each colour gets from a point to a light through
+// every surface in between. The casters and the surface model are the GL path's own
+// (extractShadowCasters, SurfaceOptics), so the answer differs from the map only by the map's
+// discretisation.
+class CasterScene {
+ public:
+  // Null with the reason in `error` when Embree fails (no memory, bad device).
+  static std::unique_ptr<CasterScene> build(RTCDevice device, SceneTriangles casters,
+                                            std::string& error);
+  ~CasterScene();
+  CasterScene(const CasterScene&) = delete;
+  CasterScene& operator=(const CasterScene&) = delete;
+
+  // Transmittance per channel from the surface point `from` (with geometric normal `normal`,
+  // either orientation) to the light at `to`. The point's own surface is stepped over by a
+  // scale-aware offset along the normal, so grazing light does not shadow its own surface.
+  glm::vec3 transmittance(const glm::vec3& from, const glm::vec3& normal, const glm::vec3& to,
+                          ShadowColourModel model) const;
+
+  const SceneTriangles& casters() const { return casters_; }
+  bool coloured() const { return casters_.hasColouredTransparent; }
+
+  // Colour and opacity of triangle `primitive` at barycentrics (u, v), texture applied.
+  glm::vec4 surfaceColour(unsigned int primitive, float u, float v) const;
+  std::uint32_t shapeOf(unsigned int primitive) const { return casters_.shapes[primitive]; }
+
+ private:
+  CasterScene() = default;
+  SceneTriangles casters_;
+  std::vector<int> triangleTexture_;
+  EmbreeScene scene_;
+};
+
+}  // namespace ivshadow

@@ -1,0 +1,693 @@
+#include "raytrace/ReferenceRenderer.h"
+
+#include "nodes/SoDeepShadowLight.h"
+#include "nodes/SoTransparentShadowGroup.h"
+#include "raytrace/CasterScene.h"
+#include "raytrace/EmbreeHandles.h"
+#include "raytrace/SurfaceOptics.h"
+#include "scene/SceneTriangles.h"
+
+#include <Inventor/SbMatrix.h>
+#include <Inventor/SbViewVolume.h>
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/SoPrimitiveVertex.h>
+#include <Inventor/actions/SoCallbackAction.h>
+#include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
+#include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
+#include <Inventor/elements/SoEnvironmentElement.h>
+#include <Inventor/elements/SoLightElement.h>
+#include <Inventor/lists/SoNodeList.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoPointLight.h>
+#include <Inventor/nodes/SoShape.h>
+#include <Inventor/nodes/SoShapeHints.h>
+#include <Inventor/nodes/SoSpotLight.h>
+
+#include <glm/common.hpp>
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+namespace ivshadow {
+namespace {
+
+glm::vec3 toGlm(const SbVec3f& v) {
+  return glm::vec3(v[0], v[1], v[2]);
+}
+
+enum class LightType { Directional, Point, Spot };
+
+struct Light {
+  LightType type = LightType::Point;
+  glm::vec3 colour{1.0f};     // colour × intensity (Coin's GL diffuse and specular)
+  glm::vec3 eyeVector{0.0f};  // eye space: position, or direction towards the light
+  glm::vec3 eyeSpotDirection{0.0f, 0.0f, -1.0f};
+  glm::vec3 position{0.0f};  // world space (filled once the camera is known)
+  glm::vec3 towardsLight{0.0f};
+  glm::vec3 spotDirection{0.0f};
+  glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // constant, linear, quadratic
+  float spotCosCutoff = -1.0f;
+  float spotExponent = 0.0f;
+  const SoDeepShadowLight* deep = nullptr;
+};
+
+struct Group {
+  SbMatrix toWorld;
+  const SoNode* node = nullptr;
+  std::vector<int> outsideLights;  // lit the group from outside (SoLightElement at entry)
+  std::vector<int> lights;         // every light turned on in the group's subgraph
+  std::unique_ptr<CasterScene> casters;
+};
+
+struct Material {
+  glm::vec3 ambient{0.2f};
+  glm::vec3 specular{0.0f};
+  glm::vec3 emission{0.0f};
+  float shininess = 0.0f;  // GL exponent (Coin's 0..1 × 128)
+  glm::vec3 globalAmbient{0.2f};
+  // Coin's GL fog (SoGLEnvironmentElement): 0 none, 1 linear (HAZE), 2 exp (FOG),
+  // 3 exp2 (SMOKE), with the distances and density it derives from the visibility.
+  int fogType = 0;
+  glm::vec3 fogColour{0.0f};
+  float fogStart = 0.0f;
+  float fogEnd = 1.0f;
+  float fogDensity = 0.0f;
+};
+
+struct Triangle {
+  glm::vec3 normal[3];
+  glm::vec4 colour[3];
+  glm::vec2 texCoord[3];
+  glm::vec3 geometricNormal;  // from the winding: counter-clockwise front
+  int material = 0;
+  int texture = -1;
+  int lightSet = -1;  // outside groups
+  int group = -1;     // innermost active SoTransparentShadowGroup
+  bool lit = true;
+  bool twoSided = false;
+  bool clockwise = false;
+  bool shadowed = false;
+  std::uint32_t shape = 0;
+};
+
+struct Extraction {
+  std::vector<glm::vec3> positions;  // three per triangle, world space
+  std::vector<Triangle> triangles;
+  std::vector<Material> materials;
+  std::vector<TextureImage> textures;
+  TextureCache textureCache;
+  std::vector<Light> lights;
+  std::map<const SoNode*, int> lightOfNode;  // the latest record of each light node
+  std::vector<std::vector<int>> lightSets;
+  std::map<std::vector<int>, int> lightSetIndex;
+  std::vector<Group> groups;
+  std::vector<int> groupStack;
+  std::map<const SoNode*, std::string> skipped;  // shapes without triangles
+  SbMatrix viewing = SbMatrix::identity();
+  SbMatrix projection = SbMatrix::identity();
+  bool haveCamera = false;
+  std::uint32_t shape = 0;
+};
+
+std::vector<int> currentLights(Extraction& data, SoState* state) {
+  std::vector<int> result;
+  const SoNodeList& lights = SoLightElement::getLights(state);
+  for (int i = 0; i < lights.getLength(); ++i) {
+    const auto found = data.lightOfNode.find(lights[i]);
+    if (found != data.lightOfNode.end()) result.push_back(found->second);
+  }
+  return result;
+}
+
+int lightSetOf(Extraction& data, std::vector<int> lights) {
+  std::sort(lights.begin(), lights.end());
+  lights.erase(std::unique(lights.begin(), lights.end()), lights.end());
+  const auto found = data.lightSetIndex.find(lights);
+  if (found != data.lightSetIndex.end()) return found->second;
+  const int index = int(data.lightSets.size());
+  data.lightSets.push_back(lights);
+  data.lightSetIndex.emplace(lights, index);
+  return index;
+}
+
+SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, const SoNode* node) {
+  auto& data = *static_cast<Extraction*>(user);
+  if (!static_cast<const SoTransparentShadowGroup*>(node)->isActive.getValue())
+    return SoCallbackAction::CONTINUE;
+  Group group;
+  group.node = node;
+  group.toWorld = action->getModelMatrix();
+  group.outsideLights = currentLights(data, action->getState());
+  data.groupStack.push_back(int(data.groups.size()));
+  data.groups.push_back(std::move(group));
+  // As in extractShadowCasters: inside a group every shape casts and receives by default.
+  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node),
+                            SoShadowStyleElement::CASTS_SHADOW_AND_SHADOWED);
+  return SoCallbackAction::CONTINUE;
+}
+
+SoCallbackAction::Response groupLeave(void* user, SoCallbackAction*, const SoNode* node) {
+  auto& data = *static_cast<Extraction*>(user);
+  if (!data.groupStack.empty() && data.groups[std::size_t(data.groupStack.back())].node == node)
+    data.groupStack.pop_back();
+  return SoCallbackAction::CONTINUE;
+}
+
+SoCallbackAction::Response shadowStyle(void*, SoCallbackAction* action, const SoNode* node) {
+  const auto* style = static_cast<const SoShadowStyle*>(node);
+  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node), style->style.getValue());
+  return SoCallbackAction::CONTINUE;
+}
+
+SoCallbackAction::Response light(void* user, SoCallbackAction* action, const SoNode* node) {
+  auto& data = *static_cast<Extraction*>(user);
+  const auto* base = static_cast<const SoLight*>(node);
+  if (!base->on.getValue()) return SoCallbackAction::CONTINUE;
+  // GL transforms a light by the modelview matrix in force where it is traversed: lights
+  // before the camera are fixed in eye space (the headlight).
+  const SbMatrix toEye = action->getModelMatrix() * action->getViewingMatrix();
+  Light record;
+  record.colour = toGlm(base->color.getValue()) * base->intensity.getValue();
+  const SbVec3f attenuation = SoEnvironmentElement::getLightAttenuation(action->getState());
+  record.attenuation = glm::vec3(attenuation[2], attenuation[1], attenuation[0]);
+  if (node->isOfType(SoDirectionalLight::getClassTypeId())) {
+    record.type = LightType::Directional;
+    SbVec3f direction;
+    toEye.multDirMatrix(-static_cast<const SoDirectionalLight*>(node)->direction.getValue(),
+                        direction);
+    record.eyeVector = toGlm(direction);
+  } else if (node->isOfType(SoSpotLight::getClassTypeId())) {
+    const auto* spot = static_cast<const SoSpotLight*>(node);
+    record.type = LightType::Spot;
+    SbVec3f position, direction;
+    toEye.multVecMatrix(spot->location.getValue(), position);
+    toEye.multDirMatrix(spot->direction.getValue(), direction);
+    record.eyeVector = toGlm(position);
+    record.eyeSpotDirection = toGlm(direction);
+    // Coin's GL_SPOT_CUTOFF and GL_SPOT_EXPONENT.
+    const float cutoff = std::min(glm::degrees(spot->cutOffAngle.getValue()), 90.0f);
+    record.spotCosCutoff = std::cos(glm::radians(cutoff));
+    record.spotExponent = spot->dropOffRate.getValue() * 128.0f;
+  } else if (node->isOfType(SoPointLight::getClassTypeId())) {
+    record.type = LightType::Point;
+    SbVec3f position;
+    toEye.multVecMatrix(static_cast<const SoPointLight*>(node)->location.getValue(), position);
+    record.eyeVector = toGlm(position);
+    if (node->isOfType(SoDeepShadowLight::getClassTypeId()))
+      record.deep = static_cast<const SoDeepShadowLight*>(node);
+  } else {
+    return SoCallbackAction::CONTINUE;
+  }
+  const int index = int(data.lights.size());
+  data.lights.push_back(record);
+  data.lightOfNode[node] = index;
+  for (int group : data.groupStack) data.groups[std::size_t(group)].lights.push_back(index);
+  return SoCallbackAction::CONTINUE;
+}
+
+SoCallbackAction::Response shapeStart(void* user, SoCallbackAction*, const SoNode*) {
+  ++static_cast<Extraction*>(user)->shape;
+  return SoCallbackAction::CONTINUE;
+}
+
+void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
+              const SoPrimitiveVertex* v2, const SoPrimitiveVertex* v3) {
+  auto& data = *static_cast<Extraction*>(user);
+  SoState* state = action->getState();
+  data.viewing = action->getViewingMatrix();
+  data.projection = action->getProjectionMatrix();
+  data.haveCamera = true;
+  const SbMatrix& model = action->getModelMatrix();
+  const SbMatrix normalMatrix = model.inverse().transpose();
+  const SbMatrix& textureMatrix = action->getTextureMatrix();
+
+  Triangle out;
+  out.shape = data.shape;
+  out.texture = currentTexture(action, data.textures, data.textureCache);
+  out.lit = action->getLightModel() != SoLightModel::BASE_COLOR;
+  // Coin turns two-sided lighting on for shapes of known vertex order that are not solid.
+  out.clockwise = action->getVertexOrdering() == SoShapeHints::CLOCKWISE;
+  out.twoSided = action->getVertexOrdering() != SoShapeHints::UNKNOWN_ORDERING &&
+                 action->getShapeType() != SoShapeHints::SOLID;
+  out.group = data.groupStack.empty() ? -1 : data.groupStack.back();
+  out.shadowed =
+      out.group >= 0 && (SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED) != 0;
+  if (out.group < 0) out.lightSet = lightSetOf(data, currentLights(data, state));
+
+  SbColor ambient, diffuse, specular, emission;
+  float shininess = 0.0f, transparency = 0.0f;
+  action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
+                      v1->getMaterialIndex());
+  Material material;
+  material.ambient = toGlm(ambient);
+  material.specular = toGlm(specular);
+  material.emission = toGlm(emission);
+  material.shininess = shininess * 128.0f;
+  float ambientIntensity = 0.0f, fogVisibility = 0.0f, fogStart = 0.0f;
+  SbColor ambientColour, fogColour;
+  SbVec3f attenuation;
+  int32_t fogType = 0;
+  SoEnvironmentElement::get(state, ambientIntensity, ambientColour, attenuation, fogType, fogColour,
+                            fogVisibility, fogStart);
+  material.globalAmbient = toGlm(ambientColour) * ambientIntensity;
+  if (fogType != SoEnvironmentElement::NONE) {
+    const SbViewVolume& volume = action->getViewVolume();
+    const float far =
+        fogVisibility > 0.0f ? fogVisibility : volume.getNearDist() + volume.getDepth();
+    // Coin's density puts 1/256 of the colour through at the visibility distance.
+    const float ln256 = std::log(256.0f);
+    material.fogType = fogType == SoEnvironmentElement::HAZE  ? 1
+                       : fogType == SoEnvironmentElement::FOG ? 2
+                                                              : 3;
+    material.fogColour = toGlm(fogColour);
+    material.fogStart = fogStart;
+    material.fogEnd = far;
+    material.fogDensity = material.fogType == 2 ? ln256 / far : std::sqrt(ln256) / far;
+  }
+  out.material = int(data.materials.size());
+  data.materials.push_back(material);
+
+  const SoPrimitiveVertex* vertices[3] = {v1, v2, v3};
+  glm::vec3 world[3];
+  for (int i = 0; i < 3; ++i) {
+    const SoPrimitiveVertex* v = vertices[i];
+    SbVec3f p, n;
+    model.multVecMatrix(v->getPoint(), p);
+    normalMatrix.multDirMatrix(v->getNormal(), n);
+    world[i] = toGlm(p);
+    out.normal[i] = toGlm(n);
+    action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
+                        v->getMaterialIndex());
+    out.colour[i] = glm::vec4(toGlm(diffuse), 1.0f - transparency);
+    SbVec4f tc;
+    textureMatrix.multVecMatrix(v->getTextureCoords(), tc);
+    const float w = tc[3] != 0.0f ? tc[3] : 1.0f;
+    out.texCoord[i] = glm::vec2(tc[0] / w, tc[1] / w);
+    data.positions.push_back(world[i]);
+  }
+  out.geometricNormal = glm::cross(world[1] - world[0], world[2] - world[0]);
+  data.triangles.push_back(out);
+}
+
+void notTriangles(SoCallbackAction* action, Extraction& data) {
+  const SoNode* node = action->getCurPathTail();
+  if (data.skipped.count(node)) return;
+  std::string name = node->getTypeId().getName().getString();
+  if (node->getName().getLength() > 0)
+    name += std::string(" '") + node->getName().getString() + "'";
+  data.skipped.emplace(node, name);
+}
+
+void lineSegment(void* user, SoCallbackAction* action, const SoPrimitiveVertex*,
+                 const SoPrimitiveVertex*) {
+  notTriangles(action, *static_cast<Extraction*>(user));
+}
+
+void point(void* user, SoCallbackAction* action, const SoPrimitiveVertex*) {
+  notTriangles(action, *static_cast<Extraction*>(user));
+}
+
+struct Hit {
+  float t;
+  unsigned int primitive;
+  float u;
+  float v;
+};
+
+// Every surface a camera ray meets, collected by Embree's filter function.
+struct CameraRayContext : RTCIntersectContext {
+  const Extraction* data = nullptr;
+  std::vector<Hit>* hits = nullptr;
+};
+
+glm::vec4 baseColour(const Extraction& data, const Triangle& tri, float u, float v,
+                     glm::vec4* texel) {
+  const float w = 1.0f - u - v;
+  glm::vec4 colour = w * tri.colour[0] + u * tri.colour[1] + v * tri.colour[2];
+  if (tri.texture >= 0) {
+    const glm::vec2 st = w * tri.texCoord[0] + u * tri.texCoord[1] + v * tri.texCoord[2];
+    *texel = sampleTexture(data.textures[std::size_t(tri.texture)], st.x, st.y);
+  }
+  return colour;
+}
+
+float opacity(const Extraction& data, const Triangle& tri, float u, float v) {
+  glm::vec4 texel(1.0f);
+  const glm::vec4 colour = baseColour(data, tri, u, v, &texel);
+  if (tri.texture < 0) return colour.a;
+  const TextureImage& image = data.textures[std::size_t(tri.texture)];
+  const glm::vec3 blend(image.blendColour[0], image.blendColour[1], image.blendColour[2]);
+  return applyTextureModel(colour, texel, image.model, blend).a;
+}
+
+void cameraFilter(const RTCFilterFunctionNArguments* args) {
+  auto& context = *static_cast<CameraRayContext*>(args->context);
+  Hit hit;
+  hit.primitive = RTCHitN_primID(args->hit, args->N, 0);
+  hit.u = RTCHitN_u(args->hit, args->N, 0);
+  hit.v = RTCHitN_v(args->hit, args->N, 0);
+  hit.t = RTCRayN_tfar(args->ray, args->N, 0);
+  const float alpha = opacity(*context.data, context.data->triangles[hit.primitive], hit.u, hit.v);
+  // An opaque surface is accepted: Embree then only looks for nearer ones. The others are
+  // collected and passed over.
+  if (isOpaque(alpha)) return;
+  if (alpha > 0.0f) context.hits->push_back(hit);
+  args->valid[0] = 0;
+}
+
+class Tracer {
+ public:
+  Tracer(const Extraction& data, RTCScene scene, const ReferenceOptions& options)
+      : data_(data), scene_(scene), options_(options) {
+    const SbMatrix clipToWorld = (data.viewing * data.projection).inverse();
+    clipToWorld_ = clipToWorld;
+    SbVec3f back;
+    data.viewing.inverse().multDirMatrix(SbVec3f(0.0f, 0.0f, 1.0f), back);
+    back.normalize();
+    viewDirection_ = toGlm(back);
+  }
+
+  glm::vec3 pixel(int x, int y, std::vector<Hit>& hits, std::size_t& shadowRays) const {
+    const float nx = (float(x) + 0.5f) / float(options_.width) * 2.0f - 1.0f;
+    const float ny = 1.0f - (float(y) + 0.5f) / float(options_.height) * 2.0f;
+    SbVec3f nearPoint, farPoint;
+    clipToWorld_.multVecMatrix(SbVec3f(nx, ny, -1.0f), nearPoint);
+    clipToWorld_.multVecMatrix(SbVec3f(nx, ny, 1.0f), farPoint);
+    const glm::vec3 origin = toGlm(nearPoint);
+    const glm::vec3 direction = toGlm(farPoint) - origin;
+
+    hits.clear();
+    CameraRayContext context;
+    rtcInitIntersectContext(&context);
+    context.data = &data_;
+    context.hits = &hits;
+    RTCRayHit rayHit{};
+    rayHit.ray.org_x = origin.x;
+    rayHit.ray.org_y = origin.y;
+    rayHit.ray.org_z = origin.z;
+    rayHit.ray.dir_x = direction.x;
+    rayHit.ray.dir_y = direction.y;
+    rayHit.ray.dir_z = direction.z;
+    rayHit.ray.tnear = 0.0f;
+    rayHit.ray.tfar = 1.0f;  // the far plane clips as in GL
+    rayHit.ray.mask = 0xFFFFFFFFu;
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rayHit);
+    const bool opaqueHit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    const float limit = rayHit.ray.tfar;
+    hits.erase(std::remove_if(hits.begin(), hits.end(),
+                              [&](const Hit& h) { return opaqueHit && h.t >= limit; }),
+               hits.end());
+    if (opaqueHit) hits.push_back(Hit{limit, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v});
+    // Exact depth order; coincident surfaces keep the order Coin traversed them in.
+    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+      return a.t != b.t ? a.t < b.t : a.primitive < b.primitive;
+    });
+
+    glm::vec3 colour(0.0f);
+    float transmitted = 1.0f;
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+      const Hit& hit = hits[i];
+      const Triangle& tri = data_.triangles[hit.primitive];
+      // One surface met twice (a shared edge, a spatial split) is composited once.
+      bool duplicate = false;
+      for (std::size_t j = 0; j < i && !duplicate; ++j)
+        duplicate = data_.triangles[hits[j].primitive].shape == tri.shape &&
+                    std::fabs(hits[j].t - hit.t) <= 2e-6f * hit.t;
+      if (duplicate) continue;
+      const glm::vec3 position = origin + hit.t * direction;
+      const glm::vec4 shaded = shade(tri, hit, position, direction, shadowRays);
+      const float alpha = isOpaque(shaded.a) ? 1.0f : glm::clamp(shaded.a, 0.0f, 1.0f);
+      colour += transmitted * alpha * glm::vec3(shaded);
+      transmitted *= 1.0f - alpha;
+      if (transmitted <= 0.0f) break;
+    }
+    colour += transmitted *
+              glm::vec3(options_.background[0], options_.background[1], options_.background[2]);
+    return colour;
+  }
+
+ private:
+  // shading.frag's shade(), on the CPU. Shapes inside an active group are lit per pixel, as
+  // the group's shading program does; elsewhere Coin's fixed-function GL lights each vertex
+  // and interpolates (Gouraud), and so does this.
+  glm::vec4 shade(const Triangle& tri, const Hit& hit, const glm::vec3& position,
+                  const glm::vec3& rayDirection, std::size_t& shadowRays) const {
+    glm::vec4 texel(1.0f);
+    glm::vec4 colour = baseColour(data_, tri, hit.u, hit.v, &texel);
+    if (tri.lit) {
+      bool front = glm::dot(tri.geometricNormal, rayDirection) < 0.0f;
+      if (tri.clockwise) front = !front;
+      const float side = tri.twoSided && !front ? -1.0f : 1.0f;
+      const float w = 1.0f - hit.u - hit.v;
+      glm::vec3 lit;
+      if (tri.group >= 0) {
+        const glm::vec3 normal = w * tri.normal[0] + hit.u * tri.normal[1] + hit.v * tri.normal[2];
+        lit = lighting(tri, side * normal, position, glm::vec3(colour), shadowRays);
+      } else {
+        const float weights[3] = {w, hit.u, hit.v};
+        lit = glm::vec3(0.0f);
+        for (std::size_t i = 0; i < 3; ++i) {
+          const glm::vec3& corner =
+              data_.positions[std::size_t(&tri - data_.triangles.data()) * 3 + i];
+          lit += weights[i] *
+                 lighting(tri, side * tri.normal[i], corner, glm::vec3(tri.colour[i]), shadowRays);
+        }
+      }
+      colour = glm::vec4(lit, colour.a);
+    }
+    if (tri.texture >= 0) {
+      const TextureImage& image = data_.textures[std::size_t(tri.texture)];
+      const glm::vec3 blend(image.blendColour[0], image.blendColour[1], image.blendColour[2]);
+      colour = applyTextureModel(colour, texel, image.model, blend);
+    }
+    const Material& material = data_.materials[std::size_t(tri.material)];
+    if (material.fogType != 0) {
+      SbVec3f eye;
+      data_.viewing.multVecMatrix(SbVec3f(position.x, position.y, position.z), eye);
+      const float z = std::fabs(eye[2]);
+      const float fog =
+          material.fogType == 1   ? (material.fogEnd - z) / (material.fogEnd - material.fogStart)
+          : material.fogType == 2 ? std::exp(-material.fogDensity * z)
+                                  : std::exp(-material.fogDensity * material.fogDensity * z * z);
+      colour = glm::vec4(
+          glm::mix(material.fogColour, glm::vec3(colour), glm::clamp(fog, 0.0f, 1.0f)), colour.a);
+    }
+    return colour;
+  }
+
+  // Coin's lighting equation at one point, clamped as GL clamps a lit colour.
+  glm::vec3 lighting(const Triangle& tri, glm::vec3 normal, const glm::vec3& position,
+                     const glm::vec3& diffuse, std::size_t& shadowRays) const {
+    const float length = glm::length(normal);
+    normal = length > 0.0f ? normal / length : glm::vec3(0.0f, 0.0f, 1.0f);
+    const Material& material = data_.materials[std::size_t(tri.material)];
+    glm::vec3 lit = material.emission + material.globalAmbient * material.ambient;
+    const Group* group = tri.group >= 0 ? &data_.groups[std::size_t(tri.group)] : nullptr;
+    const std::vector<int>* sets[2] = {nullptr, nullptr};
+    if (group) {
+      sets[0] = &group->outsideLights;
+      sets[1] = &group->lights;
+    } else {
+      sets[0] = &data_.lightSets[std::size_t(tri.lightSet)];
+    }
+    for (const std::vector<int>* set : sets) {
+      if (set == nullptr) continue;
+      for (int index : *set)
+        lit += contribution(data_.lights[std::size_t(index)], tri, group, normal, position, diffuse,
+                            material, shadowRays);
+    }
+    return glm::clamp(lit, 0.0f, 1.0f);
+  }
+
+  glm::vec3 contribution(const Light& light, const Triangle& tri, const Group* group,
+                         const glm::vec3& normal, const glm::vec3& position,
+                         const glm::vec3& diffuse, const Material& material,
+                         std::size_t& shadowRays) const {
+    glm::vec3 toLight;
+    float attenuation = 1.0f;
+    if (light.type == LightType::Directional) {
+      toLight = glm::normalize(light.towardsLight);
+    } else {
+      const glm::vec3 v = light.position - position;
+      const float distance = glm::length(v);
+      toLight = distance > 0.0f ? v / distance : glm::vec3(0.0f, 0.0f, 1.0f);
+      attenuation = 1.0f / (light.attenuation.x + light.attenuation.y * distance +
+                            light.attenuation.z * distance * distance);
+      if (light.type == LightType::Spot) {
+        const float spotCos = glm::dot(-toLight, glm::normalize(light.spotDirection));
+        attenuation *= spotCos < light.spotCosCutoff ? 0.0f : std::pow(spotCos, light.spotExponent);
+      }
+    }
+    const float nDotL = glm::dot(normal, toLight);
+    if (!(nDotL > 0.0f)) return glm::vec3(0.0f);
+    const glm::vec3 halfVector = glm::normalize(toLight + viewDirection_);
+    const float nDotH = std::max(glm::dot(normal, halfVector), 0.0f);
+    glm::vec3 direct = nDotL * light.colour * diffuse;
+    if (nDotH > 0.0f)
+      direct += std::pow(nDotH, material.shininess) * light.colour * material.specular;
+    if (light.deep != nullptr && group != nullptr && tri.shadowed && group->casters &&
+        std::find(group->lights.begin(), group->lights.end(), int(&light - data_.lights.data())) !=
+            group->lights.end()) {
+      ++shadowRays;
+      direct *= group->casters->transmittance(position, tri.geometricNormal, light.position,
+                                              modelOf(*light.deep, *group->casters));
+    }
+    return attenuation * direct;
+  }
+
+  static ShadowColourModel modelOf(const SoDeepShadowLight& light, const CasterScene& casters) {
+    const int mode = light.shadowColor.getValue();
+    const bool coloured = mode == SoDeepShadowLight::COLORED ||
+                          (mode == SoDeepShadowLight::AUTO && casters.coloured());
+    if (!coloured) return ShadowColourModel::Monochrome;
+    return light.colorModel.getValue() == SoDeepShadowLight::POWER ? ShadowColourModel::Power
+                                                                   : ShadowColourModel::Saturate;
+  }
+
+  const Extraction& data_;
+  RTCScene scene_;
+  const ReferenceOptions& options_;
+  SbMatrix clipToWorld_;
+  glm::vec3 viewDirection_{0.0f, 0.0f, 1.0f};
+};
+
+}  // namespace
+
+Image FloatImage::toImage() const {
+  Image image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float* in = &rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3];
+      std::uint8_t* out = image.pixel(x, y);
+      for (int c = 0; c < 3; ++c) {
+        const float v = std::isfinite(in[c]) ? std::clamp(in[c], 0.0f, 1.0f) : 0.0f;
+        out[c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+      }
+      out[3] = 255;
+    }
+  return image;
+}
+
+std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOptions& options) {
+  Extraction data;
+  {
+    SoCallbackAction action(SbViewportRegion(short(options.width), short(options.height)));
+    action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
+    action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
+    action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
+    action.addPreCallback(SoLight::getClassTypeId(), light, &data);
+    action.addPreCallback(SoShape::getClassTypeId(), shapeStart, &data);
+    action.addTriangleCallback(SoShape::getClassTypeId(), triangle, &data);
+    action.addLineSegmentCallback(SoShape::getClassTypeId(), lineSegment, &data);
+    action.addPointCallback(SoShape::getClassTypeId(), point, &data);
+    action.apply(root);
+  }
+
+  // Lights were recorded in eye space, as GL keeps them; shading happens in world space.
+  const SbMatrix eyeToWorld = data.viewing.inverse();
+  for (Light& light : data.lights) {
+    SbVec3f v;
+    if (light.type == LightType::Directional) {
+      eyeToWorld.multDirMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
+      light.towardsLight = toGlm(v);
+    } else {
+      eyeToWorld.multVecMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
+      light.position = toGlm(v);
+      eyeToWorld.multDirMatrix(
+          SbVec3f(light.eyeSpotDirection.x, light.eyeSpotDirection.y, light.eyeSpotDirection.z), v);
+      light.spotDirection = toGlm(v);
+    }
+  }
+
+  std::string error;
+  EmbreeDevice device = createEmbreeDevice(error);
+  if (!device) throw std::runtime_error(error);
+  for (Group& group : data.groups) {
+    SceneTriangles casters = extractShadowCasters(const_cast<SoNode*>(group.node));
+    for (TriangleVertex& vertex : casters.vertices) {
+      SbVec3f p;
+      group.toWorld.multVecMatrix(SbVec3f(vertex.position), p);
+      for (int i = 0; i < 3; ++i) vertex.position[i] = p[i];
+    }
+    group.casters = CasterScene::build(device.get(), std::move(casters), error);
+    if (!group.casters) throw std::runtime_error(error);
+  }
+
+  EmbreeScene scene(rtcNewScene(device.get()));
+  rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
+  const std::size_t count = data.triangles.size();
+  if (count > 0) {
+    RTCGeometry geometry = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), count * 3));
+    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), count));
+    if (positions == nullptr || indices == nullptr) {
+      rtcReleaseGeometry(geometry);
+      throw std::runtime_error("Embree could not allocate " + std::to_string(count) + " triangles");
+    }
+    for (std::size_t i = 0; i < count * 3; ++i) {
+      for (int k = 0; k < 3; ++k) positions[i * 3 + std::size_t(k)] = data.positions[i][k];
+      indices[i] = static_cast<unsigned int>(i);
+    }
+    rtcSetGeometryIntersectFilterFunction(geometry, cameraFilter);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene.get(), geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(scene.get());
+
+  ReferenceResult result;
+  result.triangles = count;
+  for (const auto& [node, name] : data.skipped)
+    result.warnings.push_back(name + " has no triangles; the reference does not draw it");
+  result.image.width = options.width;
+  result.image.height = options.height;
+  result.image.rgb.assign(std::size_t(options.width) * std::size_t(options.height) * 3, 0.0f);
+  if (!data.haveCamera) return result;
+
+  const Tracer tracer(data, scene.get(), options);
+  std::atomic<int> nextRow{0};
+  std::atomic<std::size_t> shadowRays{0};
+  const auto work = [&] {
+    std::vector<Hit> hits;
+    std::size_t rays = 0;
+    for (int y = nextRow++; y < options.height; y = nextRow++) {
+      if (options.cancel && options.cancel->load()) break;
+      for (int x = 0; x < options.width; ++x) {
+        const glm::vec3 c = tracer.pixel(x, y, hits, rays);
+        float* out =
+            &result.image.rgb[(std::size_t(y) * std::size_t(options.width) + std::size_t(x)) * 3];
+        out[0] = c.r;
+        out[1] = c.g;
+        out[2] = c.b;
+      }
+      if (options.rowsDone) ++*options.rowsDone;
+    }
+    shadowRays += rays;
+  };
+  const int threads =
+      options.threads > 0 ? options.threads : std::max(1, int(std::thread::hardware_concurrency()));
+  std::vector<std::thread> workers;
+  for (int i = 1; i < threads; ++i) workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers) worker.join();
+  if (options.cancel && options.cancel->load()) return std::nullopt;
+  result.shadowRays = shadowRays;
+  return result;
+}
+
+}  // namespace ivshadow

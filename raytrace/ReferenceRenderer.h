@@ -1,0 +1,55 @@
+#pragma once
+
+#include "image/Image.h"
+
+#include <Inventor/SbColor.h>
+
+#include <atomic>
+#include <optional>
+#include <string>
+#include <vector>
+
+class SoNode;
+
+namespace ivshadow {
+
+// A picture in linear floating-point RGB, rows top to bottom, before 8-bit rounding.
+struct FloatImage {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgb;
+
+  // Rounded to 8 bits as GL stores a colour (alpha 255).
+  Image toImage() const;
+};
+
+struct ReferenceOptions {
+  int width = 800;
+  int height = 600;
+  SbColor background{0.0f, 0.0f, 0.0f};
+  int threads = 0;  // 0: every core
+  // Read by the workers between rows: set it (from a signal handler) to stop early.
+  const std::atomic<bool>* cancel = nullptr;
+  // Rows finished so far, updated as the workers go; may be read from another thread.
+  std::atomic<int>* rowsDone = nullptr;
+};
+
+struct ReferenceResult {
+  FloatImage image;
+  std::vector<std::string> warnings;  // shapes it could not draw, named
+  std::size_t triangles = 0;
+  std::size_t shadowRays = 0;
+};
+
+// The exact answer the GL path approximates, computed on the CPU with Embree. `root` is a
+// scene made ready for viewing (ViewSetup::prepare with the same viewport size): its camera,
+// lights, materials, textures and every shape Coin can turn into triangles are read through a
+// SoCallbackAction. Each pixel's ray meets every surface and composites them in exact depth
+// order; each surface is shaded with the GL path's per-pixel Coin lighting, and every
+// SoDeepShadowLight of an active SoTransparentShadowGroup is attenuated by the transmittance
+// of every caster of that group between the point and the light (same colour model, same
+// SoShadowStyle rules). Returns nothing when cancelled; throws std::runtime_error when Embree
+// fails.
+std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOptions& options);
+
+}  // namespace ivshadow

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "callbacks/GlLimits.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace ivshadow {
+
+struct TextureImage;
+
+// The CPU twins of deep_shadow_common.glsl: how a surface colours and filters light. The ray
+// tracers use them so that only the discretisation differs from the GL path, never the model.
+
+// Opacity within half an 8-bit step of 1 counts as opaque (Coin sends 8-bit colours).
+inline bool isOpaque(float alpha) {
+  return alpha >= 1.0f - 0.5f / 255.0f;
+}
+
+// Fraction of light per channel that passes a surface of colour c.rgb and opacity c.a.
+glm::vec3 transmittance(const glm::vec4& c, ShadowColourModel model);
+
+// Coin's texture models (SoMultiTextureImageElement::Model values = GL enums); 0 = none.
+glm::vec4 applyTextureModel(const glm::vec4& colour, const glm::vec4& texel, int model,
+                            const glm::vec3& blendColour);
+
+// Samples `image` at (s, t) as GL would: nearest or bilinear, repeat or clamp to edge.
+glm::vec4 sampleTexture(const TextureImage& image, float s, float t);
+
+}  // namespace ivshadow

@@ -1,0 +1,122 @@
+// `ivshadow reference` as a user runs it, and its agreement with the GL path where both use
+// the same model and nothing is approximated.
+#include "image/ImageComparison.h"
+#include "image/PfmFile.h"
+#include "image/PngFile.h"
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace ivshadow {
+namespace {
+
+using test::run;
+
+std::string scene(const std::string& name) {
+  return test::scenesDir() + "/" + name;
+}
+
+TEST(ReferenceCommand, WritesThePngAndTheUnroundedFloats) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "reference", scene("coloured_shadows.iv"), "-o", dir + "/ref.png",
+           "--size", "160x120", "--pfm", dir + "/ref.pfm"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const Image png = readPng(dir + "/ref.png");
+  int width = 0, height = 0;
+  const std::vector<float> rgb = readPfm(dir + "/ref.pfm", width, height);
+  ASSERT_EQ(width, 160);
+  ASSERT_EQ(height, 120);
+  ASSERT_EQ(png.width(), 160);
+  int lit = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float v =
+            rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(c)];
+        ASSERT_TRUE(std::isfinite(v)) << x << "," << y;
+        // The PNG is the float picture rounded to the nearest 8-bit step.
+        ASSERT_EQ(int(png.pixel(x, y)[c]), int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)));
+        lit += v > 0.1f;
+      }
+  EXPECT_GT(lit, width * height);  // a picture, not a black frame
+}
+
+TEST(ReferenceCommand, BadInputExitsTwoWithoutOutput) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult missing =
+      run({test::ivshadowExe(), "reference", scene("does_not_exist.iv"), "-o", dir + "/a.png"});
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.err.find("does_not_exist.iv"), std::string::npos) << missing.err;
+  const test::ProcessResult size = run({test::ivshadowExe(), "reference", scene("lit_plane.iv"),
+                                        "-o", dir + "/a.png", "--size", "0x9"});
+  EXPECT_EQ(size.exitCode, 2);
+  EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
+  EXPECT_FALSE(test::fileExists(dir + "/a.png"));
+}
+
+TEST(ReferenceCommand, CtrlCStopsWithoutAPartialFile) {
+  const std::string dir = test::outputDir();
+  const std::string out = dir + "/big.png";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // A million triangles at full HD takes several seconds here: long enough to interrupt.
+    execl(test::ivshadowExe().c_str(), "ivshadow", "reference", scene("stress_1m.iv").c_str(), "-o",
+          out.c_str(), "--size", "1920x1080", "--pfm", (dir + "/big.pfm").c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(child, SIGINT);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_FALSE(test::fileExists(out));
+  EXPECT_FALSE(test::fileExists(dir + "/big.pfm"));
+}
+
+// Scenes without deep shadows or transparency: GL and the reference evaluate the same
+// Gouraud lighting, textures and fog (shading_features has every Coin light type, a spot
+// cone, textures and HAZE fog). What remains is rasterisation against a ray through the pixel
+// centre on silhouettes and float rounding: at least 50 dB and 99.9 % of pixels within 2/255.
+class ReferenceAgreement : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ReferenceAgreement, SameModelSamePicture) {
+  const std::string dir = test::outputDir();
+  const std::string name = GetParam();
+  ASSERT_EQ(
+      run({test::ivshadowExe(), "render", scene(name), "-o", dir + "/gl.png", "--size", "320x240"})
+          .exitCode,
+      0);
+  const test::ProcessResult reference = run({test::ivshadowExe(), "reference", scene(name), "-o",
+                                             dir + "/reference.png", "--size", "320x240"});
+  ASSERT_EQ(reference.exitCode, 0) << reference.err;
+  const Image gl = readPng(dir + "/gl.png");
+  const Image exact = readPng(dir + "/reference.png");
+  const ImageComparison metrics = ImageComparison::compare(exact, gl, "reference", "gl");
+  if (metrics.all.psnr < 50.0 || metrics.all.shareAbove2 > 0.001)
+    writePng(dir + "/diff.png", errorHeatMap(exact, gl, 0));
+  EXPECT_GE(metrics.all.psnr, 50.0) << "actual, reference and diff.png in " << dir;
+  EXPECT_LE(metrics.all.shareAbove2, 0.001) << "actual, reference and diff.png in " << dir;
+}
+
+INSTANTIATE_TEST_SUITE_P(PlainScenes, ReferenceAgreement,
+                         ::testing::Values("shading_features.iv", "glass_over_floor.iv",
+                                           "lit_plane.iv"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           std::string n = info.param;
+                           return n.substr(0, n.find('.'));
+                         });
+
+}  // namespace
+}  // namespace ivshadow
