@@ -1,6 +1,7 @@
 #include "cli/CompareCommand.h"
 #include "cli/ReferenceCommand.h"
 #include "cli/RenderCommand.h"
+#include "cli/TradeCommand.h"
 #include "cli/VariantsCommand.h"
 #include "nodes/IvShadowInit.h"
 #include "viewer/ViewerApplication.h"
@@ -18,6 +19,7 @@ const char* kExamples = R"(Examples:
   ivshadow render scene.iv -o coin.png --transparency SORTED_LAYERS_BLEND
   ivshadow variants iv_scenes/coloured_shadows.iv iv_scenes/coloured_shadows.variants -o out/v
   ivshadow reference scene.iv -o exact.png --size 640x480 --pfm exact.pfm
+  ivshadow trade iv_scenes/coloured_shadows.iv -o out/trade --layers 1,4 --filter none
   ivshadow compare reference.png render.png --diff diff.png
   ivshadow view iv_scenes/glass_over_floor.iv
 
@@ -80,6 +82,28 @@ int main(int argc, char** argv) {
   referenceCommand->add_option("--threads", reference.threads, "Worker threads (0: every core)")
       ->capture_default_str();
 
+  ivshadow::TradeOptions trade;
+  CLI::App* tradeCommand = app.add_subcommand(
+      "trade", "Time every deep shadow setting and measure its error against the reference");
+  tradeCommand->add_option("scene", trade.scene, "Open Inventor scene file (.iv)")->required();
+  tradeCommand->add_option("-o,--output", trade.outputDir, "Directory for trade.csv, trade.png")
+      ->required();
+  tradeCommand->add_option("--size", trade.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  tradeCommand->add_option("--resolution", trade.resolutions, "Cube face sizes, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  tradeCommand->add_option("--layers", trade.layers, "Layer caps, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  tradeCommand->add_option("--precision", trade.precisions, "half and/or float")
+      ->delimiter(',')
+      ->capture_default_str();
+  tradeCommand->add_option("--filter", trade.filters, "none and/or pcf")
+      ->delimiter(',')
+      ->capture_default_str();
+  tradeCommand->add_option("--frames", trade.frames, "Frames timed per setting (median)")
+      ->capture_default_str();
+
   ivshadow::CompareOptions compare;
   CLI::App* compareCommand =
       app.add_subcommand("compare", "Measure how far one PNG is from another (the reference)");
@@ -108,5 +132,6 @@ int main(int argc, char** argv) {
   if (variantsCommand->parsed()) return ivshadow::runVariants(variants);
   if (compareCommand->parsed()) return ivshadow::runCompare(compare);
   if (referenceCommand->parsed()) return ivshadow::runReference(reference);
+  if (tradeCommand->parsed()) return ivshadow::runTrade(trade);
   return ivshadow::runViewer(view, argv[0]);
 }

@@ -2,6 +2,10 @@
 
 #include "headless/OffscreenRenderer.h"
 #include "nodes/IvShadowInit.h"
+#include "raytrace/ReferenceRenderer.h"
+#include "scene/ViewSetup.h"
+
+#include <Inventor/SbViewportRegion.h>
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -131,6 +135,19 @@ Image renderIv(const std::string& text, int size, SoNode** rootOut) {
     root->unref();
   }
   return image;
+}
+
+Image referenceIv(const std::string& text, int size, std::vector<float>* floats) {
+  SoSeparator* root = readIv(text);
+  const ViewSetup view = ViewSetup::prepare(root, SbViewportRegion(short(size), short(size)));
+  ReferenceOptions options;
+  options.width = size;
+  options.height = size;
+  std::optional<ReferenceResult> result = renderReference(view.root.get(), options);
+  root->unref();
+  if (!result) throw std::runtime_error("the reference render was cancelled");
+  if (floats != nullptr) *floats = result->image.rgb;
+  return result->image.toImage();
 }
 
 }  // namespace ivshadow::test

@@ -73,4 +73,8 @@ SoSeparator* readIv(const std::string& text);
 // through `root` when given so callers can inspect nodes afterwards.
 Image renderIv(const std::string& text, int size, SoNode** root = nullptr);
 
+// The exact CPU reference of the same text at size x size (ivshadow reference); `floats`
+// receives the unrounded RGB when given.
+Image referenceIv(const std::string& text, int size, std::vector<float>* floats = nullptr);
+
 }  // namespace ivshadow::test

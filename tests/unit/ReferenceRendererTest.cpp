@@ -21,21 +21,9 @@ constexpr double kTolerance = 1.0;
 const Filter kRedGlass{0.3, 0.5, {1.0, 0.0, 0.0}, 0.5, ""};
 const Filter kGreenGlass{0.4, 0.25, {0.0, 1.0, 0.0}, 0.5, ""};
 
-ReferenceResult renderReferenceIv(const std::string& text, int size) {
-  SoSeparator* root = readIv(text);
-  const ViewSetup view = ViewSetup::prepare(root, SbViewportRegion(short(size), short(size)));
-  ReferenceOptions options;
-  options.width = size;
-  options.height = size;
-  std::optional<ReferenceResult> result = renderReference(view.root.get(), options);
-  root->unref();
-  if (!result) throw std::runtime_error("the reference render was cancelled");
-  return *result;
-}
-
 void expectPicture(const ShadowScene& scene, const ShadowPicture& picture) {
-  const ReferenceResult result = renderReferenceIv(scene.text(), ShadowScene::kSize);
-  const std::string failure = compareWithExpectation(result.image.toImage(), picture, kTolerance);
+  const std::string failure =
+      compareWithExpectation(referenceIv(scene.text(), ShadowScene::kSize), picture, kTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
@@ -127,7 +115,7 @@ TEST(ReferenceRenderer, AlphaTexturedCheckerboard) {
       "Complexity { textureQuality 0.1 } "
       "Texture2 { image 2 2 2 0xFFFF 0xFF00 0xFF00 0xFFFF model MODULATE }";
   scene.filters = {checker};
-  const Image image = renderReferenceIv(scene.text(), ShadowScene::kSize).image.toImage();
+  const Image image = referenceIv(scene.text(), ShadowScene::kSize);
   struct Probe {
     double x, y;
     bool lit;
@@ -154,7 +142,7 @@ TEST(ReferenceRenderer, ShadowStyleDecidesWhoCastsAndWhoReceives) {
   Filter clear = kRedGlass;
   clear.transparency = 1.0;
   expected.filters = {clear};
-  const Image image = renderReferenceIv(noCast.text(), ShadowScene::kSize).image.toImage();
+  const Image image = referenceIv(noCast.text(), ShadowScene::kSize);
   ShadowPicture picture{&expected, ColourModel::Saturate};
   const std::string failure = compareWithExpectation(
       image,
@@ -170,12 +158,17 @@ TEST(ReferenceRenderer, ShadowStyleDecidesWhoCastsAndWhoReceives) {
 }
 
 TEST(ReferenceRenderer, LinesAndPointsAreNamedAsNotDrawn) {
-  const ReferenceResult result = renderReferenceIv(
+  SoSeparator* root = readIv(
       "#Inventor V2.1 ascii\nSeparator { DEF Wire LineSet { vertexProperty VertexProperty { "
-      "vertex [ 0 0 0, 1 1 0 ] } numVertices 2 } }",
-      32);
-  ASSERT_EQ(result.warnings.size(), 1u);
-  EXPECT_NE(result.warnings[0].find("LineSet 'Wire'"), std::string::npos) << result.warnings[0];
+      "vertex [ 0 0 0, 1 1 0 ] } numVertices 2 } }");
+  const ViewSetup view = ViewSetup::prepare(root, SbViewportRegion(32, 32));
+  ReferenceOptions options;
+  options.width = options.height = 32;
+  const std::optional<ReferenceResult> result = renderReference(view.root.get(), options);
+  root->unref();
+  ASSERT_TRUE(result.has_value());
+  ASSERT_EQ(result->warnings.size(), 1u);
+  EXPECT_NE(result->warnings[0].find("LineSet 'Wire'"), std::string::npos) << result->warnings[0];
 }
 
 }  // namespace

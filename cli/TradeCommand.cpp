@@ -1,0 +1,217 @@
+#include "cli/TradeCommand.h"
+
+#include "callbacks/GlCapabilities.h"
+#include "cli/ExitStatus.h"
+#include "cli/ProgressBar.h"
+#include "cli/TradePlot.h"
+#include "headless/FrameStatistics.h"
+#include "headless/OffscreenRenderer.h"
+#include "image/AtomicFile.h"
+#include "image/ImageComparison.h"
+#include "image/ImageSize.h"
+#include "image/PngFile.h"
+#include "nodes/DeepShadowStatistics.h"
+#include "nodes/IvShadowInit.h"
+#include "nodes/SoDeepShadowLight.h"
+#include "nodes/SoTransparentShadowGroup.h"
+#include "raytrace/ReferenceRenderer.h"
+#include "scene/InputError.h"
+#include "scene/SceneLoader.h"
+#include "scene/ViewSetup.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace ivshadow {
+namespace {
+
+template <typename Node>
+std::vector<Node*> allNodes(SoNode* root) {
+  SoSearchAction search;
+  search.setType(Node::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(TRUE);
+  search.apply(root);
+  std::vector<Node*> nodes;
+  for (int i = 0; i < search.getPaths().getLength(); ++i)
+    nodes.push_back(static_cast<Node*>(search.getPaths()[i]->getTail()));
+  return nodes;
+}
+
+struct Setting {
+  std::string label;
+  int resolution = 0;
+  int layers = 0;
+  std::string precision;
+  std::string filter;
+};
+
+struct Row {
+  Setting setting;
+  std::string kind;  // "deep shadow map", "baseline"
+  double buildMs = 0.0;
+  double frameMs = 0.0;
+  std::uint64_t bytes = 0;
+  ImageComparison metrics;
+};
+
+void checkList(const std::vector<std::string>& values, const std::vector<std::string>& allowed,
+               const std::string& option) {
+  for (const std::string& value : values)
+    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+      throw InputError(option + " " + value + ": error: expected one of " + allowed.front() + ", " +
+                       allowed.back());
+}
+
+double frameMedian(OffscreenRenderer& renderer, SoNode* root, int frames) {
+  std::vector<double> wall;
+  for (int i = 0; i < frames; ++i) wall.push_back(renderer.render(root).wallMs);
+  return FrameStatistics::median(wall);
+}
+
+std::string csvLine(const Row& row) {
+  std::ostringstream out;
+  out << std::setprecision(6) << '"' << row.setting.label << "\"," << row.kind << ','
+      << row.setting.resolution << ',' << row.setting.layers << ',' << row.setting.precision << ','
+      << row.setting.filter << ',' << row.buildMs << ',' << row.frameMs << ','
+      << row.buildMs + row.frameMs << ',' << row.metrics.all.rmse << ',' << row.metrics.all.psnr
+      << ',' << row.metrics.all.maxError << ',' << row.metrics.all.shareAbove2 << ',' << row.bytes;
+  return out.str();
+}
+
+}  // namespace
+
+int runTrade(const TradeOptions& options) {
+  return withExitStatus([&] {
+    const ImageSize size = ImageSize::parse(options.size, "--size");
+    if (options.frames < 1)
+      throw InputError("--frames " + std::to_string(options.frames) +
+                       ": error: expected a whole number of at least 1");
+    for (int r : options.resolutions)
+      if (r < 1) throw InputError("--resolution " + std::to_string(r) + ": error: expected >= 1");
+    for (int l : options.layers)
+      if (l < 1 || l > 64)
+        throw InputError("--layers " + std::to_string(l) + ": error: expected 1 .. 64");
+    checkList(options.precisions, {"half", "float"}, "--precision");
+    checkList(options.filters, {"none", "pcf"}, "--filter");
+    std::filesystem::create_directories(options.outputDir);
+    AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
+
+    init();
+    LoadedScene scene = loadScene(options.scene);
+    for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
+    const std::vector<SoDeepShadowLight*> lights = allNodes<SoDeepShadowLight>(scene.root.get());
+    const std::vector<SoTransparentShadowGroup*> groups =
+        allNodes<SoTransparentShadowGroup>(scene.root.get());
+    if (lights.empty() || groups.empty())
+      throw InputError(options.scene +
+                       ": error: expected a DeepShadowLight inside a TransparentShadowGroup; "
+                       "there is no deep shadow setting to trade");
+    const ViewSetup view = ViewSetup::prepare(
+        scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
+
+    std::string error;
+    std::unique_ptr<OffscreenRenderer> renderer =
+        OffscreenRenderer::create(size.width, size.height, error);
+    if (!renderer) {
+      std::cerr << "ivshadow: error: no GL context for headless rendering: " << error << '\n';
+      return 3;
+    }
+
+    std::vector<Setting> settings;
+    for (int resolution : options.resolutions)
+      for (int layers : options.layers)
+        for (const std::string& precision : options.precisions)
+          for (const std::string& filter : options.filters)
+            settings.push_back(Setting{std::to_string(resolution) + " " + std::to_string(layers) +
+                                           "L " + precision + (filter == "pcf" ? " pcf" : ""),
+                                       resolution, layers, precision, filter});
+    const int total = int(settings.size()) + 2;
+    ProgressBar bar;
+    int done = 0;
+
+    ReferenceOptions referenceOptions;
+    referenceOptions.width = size.width;
+    referenceOptions.height = size.height;
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<ReferenceResult> reference = renderReference(view.root.get(), referenceOptions);
+    const double referenceMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const Image exact = reference->image.toImage();
+    writePng(options.outputDir + "/reference.png", exact);
+    bar.update(++done, total, "exact reference");
+
+    std::vector<Row> rows;
+    Row referenceRow;
+    referenceRow.setting.label = "exact (CPU reference)";
+    referenceRow.kind = "baseline";
+    referenceRow.frameMs = referenceMs;
+    referenceRow.metrics = ImageComparison::compare(exact, exact, "reference", "reference");
+    rows.push_back(referenceRow);
+
+    for (SoTransparentShadowGroup* group : groups) group->isActive.setValue(FALSE);
+    renderer->render(view.root.get());
+    Row plain;
+    plain.setting.label = "no shadows (plain Coin)";
+    plain.kind = "baseline";
+    plain.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
+    plain.metrics = ImageComparison::compare(exact, renderer->read(), "reference", "plain");
+    rows.push_back(plain);
+    for (SoTransparentShadowGroup* group : groups) group->isActive.setValue(TRUE);
+    bar.update(++done, total, plain.setting.label);
+    // The first render with the group compiles its shaders; no setting should pay for that.
+    renderer->render(view.root.get());
+
+    for (const Setting& setting : settings) {
+      for (SoDeepShadowLight* light : lights) {
+        light->resolution.setValue(setting.resolution);
+        light->maxLayers.setValue(setting.layers);
+        light->precision.setValue(setting.precision == "half" ? SoDeepShadowLight::HALF
+                                                              : SoDeepShadowLight::FLOAT);
+        light->filter.setValue(setting.filter == "pcf" ? SoDeepShadowLight::PCF
+                                                       : SoDeepShadowLight::NONE);
+      }
+      Row row;
+      row.setting = setting;
+      row.kind = "deep shadow map";
+      renderer->render(view.root.get());  // builds the maps
+      const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
+      row.buildMs = stats.lastBuildMs;
+      for (const DeepShadowLightStatistics& light : stats.lights) row.bytes += light.bytes;
+      row.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
+      row.metrics = ImageComparison::compare(exact, renderer->read(), "reference", "render");
+      rows.push_back(row);
+      bar.update(++done, total, setting.label);
+    }
+
+    std::ostringstream csv;
+    csv << "setting,kind,resolution,layers,precision,filter,build_ms,frame_ms_median,"
+           "rebuild_frame_ms,rmse,psnr_db,max_abs_error,share_above_2,map_bytes\n";
+    std::vector<TradePoint> points;
+    for (const Row& row : rows) {
+      csv << csvLine(row) << '\n';
+      points.push_back(TradePoint{row.setting.label, row.buildMs + row.frameMs,
+                                  row.metrics.all.rmse, row.kind == "baseline", false});
+    }
+    markParetoFront(points);
+    writeTextFileAtomically(options.outputDir + "/trade.csv", csv.str());
+    writeTradePlot(options.outputDir + "/trade.png",
+                   std::filesystem::path(options.scene).filename().string() + " at " +
+                       size.toString() + " on " + renderer->capabilities().renderer,
+                   points);
+    std::cout << "wrote " << options.outputDir << "/trade.csv and trade.png (" << settings.size()
+              << " settings, reference " << referenceMs << " ms)\n";
+    return 0;
+  });
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,144 @@
+#include "cli/TradePlot.h"
+
+#include "image/AtomicFile.h"
+
+#include <QFont>
+#include <QGuiApplication>
+#include <QImage>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+
+namespace ivshadow {
+
+void markParetoFront(std::vector<TradePoint>& points) {
+  for (TradePoint& p : points) {
+    p.pareto = !p.baseline;
+    for (const TradePoint& q : points) {
+      if (&q == &p || q.baseline) continue;
+      const bool noWorse = q.timeMs <= p.timeMs && q.error <= p.error;
+      const bool better = q.timeMs < p.timeMs || q.error < p.error;
+      if (noWorse && better) {
+        p.pareto = false;
+        break;
+      }
+    }
+  }
+}
+
+void writeTradePlot(const std::string& path, const std::string& title,
+                    const std::vector<TradePoint>& points) {
+  // Text needs a QGuiApplication; a command-line run has no display, so it gets Qt's
+  // offscreen platform.
+  std::unique_ptr<QGuiApplication> app;
+  if (QGuiApplication::instance() == nullptr) {
+    if (std::getenv("QT_QPA_PLATFORM") == nullptr) setenv("QT_QPA_PLATFORM", "offscreen", 1);
+    static int argc = 1;
+    static char name[] = "ivshadow";
+    static char* argv[] = {name, nullptr};
+    app = std::make_unique<QGuiApplication>(argc, argv);
+  }
+  constexpr int kWidth = 1000, kHeight = 700;
+  constexpr int kLeft = 90, kRight = 30, kTop = 50, kBottom = 70;
+  QImage image(kWidth, kHeight, QImage::Format_RGB32);
+  image.fill(Qt::white);
+  QPainter painter(&image);
+  painter.setRenderHint(QPainter::Antialiasing);
+  QFont font("DejaVu Sans", 10);
+  painter.setFont(font);
+
+  double tMin = 1e300, tMax = 0.0, eMax = 0.0;
+  for (const TradePoint& p : points) {
+    tMin = std::min(tMin, std::max(p.timeMs, 1e-3));
+    tMax = std::max(tMax, std::max(p.timeMs, 1e-3));
+    eMax = std::max(eMax, p.error);
+  }
+  if (points.empty()) tMin = tMax = 1.0;
+  const double lo = std::floor(std::log10(tMin)),
+               hi = std::max(lo + 1.0, std::ceil(std::log10(tMax)));
+  eMax = eMax > 0.0 ? eMax * 1.1 : 1.0;
+  const double plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
+  const auto x = [&](double ms) {
+    return kLeft + (std::log10(std::max(ms, 1e-3)) - lo) / (hi - lo) * plotW;
+  };
+  const auto y = [&](double error) { return kTop + plotH - error / eMax * plotH; };
+
+  painter.setPen(QPen(QColor(220, 220, 220), 1));
+  for (double decade = lo; decade <= hi; decade += 1.0) {
+    for (int m = 1; m < 10; ++m) {
+      const double ms = std::pow(10.0, decade) * m;
+      if (ms > std::pow(10.0, hi)) break;
+      painter.drawLine(QPointF(x(ms), kTop), QPointF(x(ms), kTop + plotH));
+    }
+  }
+  for (int i = 0; i <= 5; ++i)
+    painter.drawLine(QPointF(kLeft, y(eMax * i / 5)), QPointF(kLeft + plotW, y(eMax * i / 5)));
+  painter.setPen(QPen(Qt::black, 1));
+  painter.drawRect(QRectF(kLeft, kTop, plotW, plotH));
+  for (double decade = lo; decade <= hi; decade += 1.0) {
+    const double ms = std::pow(10.0, decade);
+    painter.drawText(QRectF(x(ms) - 40, kTop + plotH + 5, 80, 20), Qt::AlignCenter,
+                     QString::number(ms) + " ms");
+  }
+  for (int i = 0; i <= 5; ++i)
+    painter.drawText(QRectF(0, y(eMax * i / 5) - 10, kLeft - 8, 20),
+                     Qt::AlignRight | Qt::AlignVCenter, QString::number(eMax * i / 5, 'f', 2));
+  painter.drawText(QRectF(kLeft, kHeight - 35, plotW, 25), Qt::AlignCenter,
+                   "time per setting (ms, log scale)");
+  painter.save();
+  painter.translate(20, kTop + plotH / 2);
+  painter.rotate(-90);
+  painter.drawText(QRectF(-plotH / 2, -12, plotH, 24), Qt::AlignCenter,
+                   "RMSE against the exact reference (8-bit steps)");
+  painter.restore();
+  QFont bold = font;
+  bold.setBold(true);
+  bold.setPointSize(12);
+  painter.setFont(bold);
+  painter.drawText(QRectF(0, 10, kWidth, 30), Qt::AlignCenter, QString::fromStdString(title));
+  painter.setFont(font);
+
+  std::vector<const TradePoint*> front;
+  for (const TradePoint& p : points)
+    if (p.pareto) front.push_back(&p);
+  std::sort(front.begin(), front.end(),
+            [](const TradePoint* a, const TradePoint* b) { return a->timeMs < b->timeMs; });
+  painter.setPen(QPen(QColor(200, 40, 40), 2));
+  for (std::size_t i = 1; i < front.size(); ++i)
+    painter.drawLine(QPointF(x(front[i - 1]->timeMs), y(front[i - 1]->error)),
+                     QPointF(x(front[i]->timeMs), y(front[i]->error)));
+  for (const TradePoint& p : points) {
+    const QPointF at(x(p.timeMs), y(p.error));
+    if (p.baseline) {
+      painter.setPen(QPen(QColor(30, 90, 200), 2));
+      painter.setBrush(Qt::NoBrush);
+      painter.drawRect(QRectF(at.x() - 5, at.y() - 5, 10, 10));
+      painter.drawText(at + QPointF(8, -6), QString::fromStdString(p.label));
+    } else if (p.pareto) {
+      painter.setPen(QPen(QColor(200, 40, 40), 1));
+      painter.setBrush(QColor(200, 40, 40));
+      painter.drawEllipse(at, 5, 5);
+      painter.drawText(at + QPointF(8, -6), QString::fromStdString(p.label));
+    } else {
+      painter.setPen(QPen(QColor(120, 120, 120), 1));
+      painter.setBrush(QColor(160, 160, 160));
+      painter.drawEllipse(at, 3.5, 3.5);
+    }
+  }
+  painter.setPen(Qt::black);
+  painter.drawText(QRectF(kLeft + 10, kTop + 8, plotW - 20, 20), Qt::AlignRight,
+                   "red: Pareto front (labelled)   grey: other settings   blue squares: baselines");
+  painter.end();
+
+  AtomicFile file(path);
+  if (!image.save(QString::fromStdString(file.temporaryPath()), "PNG"))
+    throw std::runtime_error(path + ": cannot write the plot");
+  file.commit();
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ivshadow {
+
+struct TradePoint {
+  std::string label;
+  double timeMs = 0.0;  // x: cost
+  double error = 0.0;   // y: RMSE in 8-bit steps against the reference
+  bool baseline = false;
+  bool pareto = false;
+};
+
+// Marks the points no other point beats in both time and error (the Pareto front).
+void markParetoFront(std::vector<TradePoint>& points);
+
+// Draws error against time (log time axis), one dot per setting, the Pareto front joined and
+// labelled, baselines as squares; writes a PNG atomically. Needs no display (Qt's offscreen
+// platform is used when there is none).
+void writeTradePlot(const std::string& path, const std::string& title,
+                    const std::vector<TradePoint>& points);
+
+}  // namespace ivshadow

@@ -1,0 +1,88 @@
+#include "image/PngFile.h"
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace ivshadow {
+namespace {
+
+using test::run;
+
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.push_back(field);
+      field.clear();
+    } else {
+      field += c;
+    }
+  }
+  fields.push_back(field);
+  return fields;
+}
+
+TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o", dir,
+           "--size", "160x120", "--resolution", "32,512", "--layers", "1,4", "--precision", "float",
+           "--filter", "none", "--frames", "2"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  std::ifstream in(dir + "/trade.csv");
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = csvFields(line);
+  ASSERT_EQ(header[0], "setting");
+  std::map<std::string, std::vector<std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = csvFields(line);
+    ASSERT_EQ(fields.size(), header.size()) << line;
+    rows[fields[0]] = fields;
+  }
+  // Two baselines and 2 x 2 settings.
+  ASSERT_EQ(rows.size(), 6u);
+  const auto value = [&](const std::string& row, const std::string& column) {
+    const auto at = std::find(header.begin(), header.end(), column) - header.begin();
+    return std::stod(rows.at(row).at(std::size_t(at)));
+  };
+  EXPECT_EQ(value("exact (CPU reference)", "rmse"), 0.0);
+  // A finer map with more layers is closer to the exact answer than a 32-texel single
+  // layer, and any shadows are closer than none.
+  EXPECT_LT(value("512 4L float", "rmse"), value("32 1L float", "rmse"));
+  EXPECT_LT(value("32 1L float", "rmse"), value("no shadows (plain Coin)", "rmse"));
+  EXPECT_GT(value("512 4L float", "build_ms"), 0.0);
+  EXPECT_GT(value("512 4L float", "map_bytes"), value("32 1L float", "map_bytes"));
+  EXPECT_EQ(readPng(dir + "/trade.png").width(), 1000);
+}
+
+TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
+  const std::string dir = test::outputDir();
+  for (const std::vector<std::string>& option : {std::vector<std::string>{"--layers", "0"},
+                                                 std::vector<std::string>{"--precision", "double"},
+                                                 std::vector<std::string>{"--filter", "gauss"}}) {
+    std::vector<std::string> command{test::ivshadowExe(), "trade",
+                                     test::scenesDir() + "/coloured_shadows.iv", "-o", dir};
+    command.insert(command.end(), option.begin(), option.end());
+    const test::ProcessResult result = run(command);
+    EXPECT_EQ(result.exitCode, 2) << option[0];
+    EXPECT_NE(result.err.find(option[0]), std::string::npos) << result.err;
+  }
+  const test::ProcessResult noLight =
+      run({test::ivshadowExe(), "trade", test::scenesDir() + "/lit_plane.iv", "-o", dir});
+  EXPECT_EQ(noLight.exitCode, 2);
+  EXPECT_NE(noLight.err.find("lit_plane.iv"), std::string::npos) << noLight.err;
+  EXPECT_FALSE(test::fileExists(dir + "/trade.csv"));
+}
+
+}  // namespace
+}  // namespace ivshadow
