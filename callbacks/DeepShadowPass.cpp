@@ -20,10 +20,10 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   glGetIntegerv(GL_MAX_DRAW_BUFFERS, &drawBuffers);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &textureSize);
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
-  // The maps take the top 2 * kMaxSlots units, depth peeling the 3 below them, and Coin's
-  // own textures keep at least 4 at the bottom.
-  if (units < 2 * kMaxSlots + 3 + 4) {
-    whyNot = "at least " + std::to_string(2 * kMaxSlots + 3 + 4) +
+  // The maps take the top 2 * kMaxSlots units, depth peeling the 3 below them, the traced
+  // shadows of RAYS lights 4 more, and Coin's own textures keep at least 4 at the bottom.
+  if (units < 2 * kMaxSlots + 3 + 4 + 4) {
+    whyNot = "at least " + std::to_string(2 * kMaxSlots + 3 + 4 + 4) +
              " fragment texture units are needed; this context offers " + std::to_string(units);
     return nullptr;
   }

@@ -1,6 +1,7 @@
 #include "callbacks/ShadingUniforms.h"
 
 #include "callbacks/DeepShadowPass.h"
+#include "callbacks/RayShadowPass.h"
 
 #include <epoxy/gl.h>
 
@@ -28,6 +29,13 @@ void ShadingUniforms::apply(unsigned int program, const DeepShadowPass& pass) co
   glProgramUniform1iv(program, at("uMapColoured"), kMaxLights, mapColoured.data());
   glProgramUniform1iv(program, at("uMapFaceFirst"), 6 * kMaxLights, mapFaceFirst.data());
   glProgramUniform1iv(program, at("uMapFaceLayers"), 6 * kMaxLights, mapFaceLayers.data());
+  glProgramUniform1iv(program, at("uMapRay"), kMaxLights, mapRay.data());
+  glProgramUniform1i(program, at("uRayLayers"), rayLayers);
+  // The ray samplers always get their own units, used or not (see the map samplers above).
+  glProgramUniform1i(program, at("uRayOpaque"), RayShadowPass::unit(0));
+  glProgramUniform1i(program, at("uRayPrevious"), RayShadowPass::unit(1));
+  glProgramUniform1i(program, at("uRayDepth"), RayShadowPass::unit(2));
+  glProgramUniform1i(program, at("uRayVisibility"), RayShadowPass::unit(3));
 }
 
 void darkenLights(int first) {

@@ -23,6 +23,15 @@ struct ShadingUniforms {
   std::array<int, kMaxLights> mapColoured{};
   std::array<int, 6 * kMaxLights> mapFaceFirst{};
   std::array<int, 6 * kMaxLights> mapFaceLayers{};
+  // Per slot: the index of its RAYS light among the traced ones, -1 for a slot with a map.
+  std::array<int, kMaxLights> mapRay = noRays();
+  int rayLayers = 0;  // captured surface layers of the traced visibility
+
+  static std::array<int, kMaxLights> noRays() {
+    std::array<int, kMaxLights> none{};
+    none.fill(-1);
+    return none;
+  }
 
   // Sets the uniforms on `program` (the program Coin made current for this group).
   void apply(unsigned int program, const DeepShadowPass& pass) const;

@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <optional>
 
@@ -55,6 +56,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["dsm_caster_triangles"] = shadows.casterTriangles;
   std::uint64_t bytes = 0;
   nlohmann::json lights = nlohmann::json::array();
+  std::vector<std::string> methods;
   for (const DeepShadowLightStatistics& light : shadows.lights) {
     bytes += light.bytes;
     lights.push_back({{"light", light.name},
@@ -65,8 +67,22 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
                       {"colored", light.coloured},
                       {"resolution", light.resolution},
                       {"near_radius", light.nearRadius},
-                      {"far_radius", light.farRadius}});
+                      {"far_radius", light.farRadius},
+                      {"method", light.method}});
+    if (std::find(methods.begin(), methods.end(), light.method) == methods.end())
+      methods.push_back(light.method);
   }
+  // The shadow method of each deep shadow light after AUTO was resolved, joined when they
+  // differ ("MAP+RAYS"); empty without deep shadow lights.
+  std::string method;
+  for (const std::string& m : methods) method += (method.empty() ? "" : "+") + m;
+  stats["passes"]["shadow_method"] = method;
+  stats["passes"]["rays_ms"] = shadows.raysMs;
+  stats["passes"]["bvh_build_ms"] = shadows.bvhBuildMs;
+  stats["rays_traced"] = shadows.raysTraced;
+  stats["ray_frames"] = shadows.rayFrames;
+  stats["bvh_bytes"] = shadows.bvhBytes;
+  stats["bvh_builds"] = shadows.bvhBuilds;
   stats["dsm_layers_used"] = lights;
   stats["dsm_bytes"] = bytes;
   // Peeling runs every frame; these are the last frame's figures, summed over separators.

@@ -49,6 +49,7 @@ std::vector<Node*> allNodes(SoNode* root) {
 
 struct Setting {
   std::string label;
+  bool rays = false;
   int resolution = 0;
   int layers = 0;
   std::string precision;
@@ -103,6 +104,9 @@ int runTrade(const TradeOptions& options) {
         throw InputError("--layers " + std::to_string(l) + ": error: expected 1 .. 64");
     checkList(options.precisions, {"half", "float"}, "--precision");
     checkList(options.filters, {"none", "pcf"}, "--filter");
+    checkList(options.methods, {"map", "rays"}, "--method");
+    const bool maps = std::count(options.methods.begin(), options.methods.end(), "map") > 0;
+    const bool rays = std::count(options.methods.begin(), options.methods.end(), "rays") > 0;
     std::filesystem::create_directories(options.outputDir);
     AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
 
@@ -128,13 +132,14 @@ int runTrade(const TradeOptions& options) {
     }
 
     std::vector<Setting> settings;
-    for (int resolution : options.resolutions)
+    if (rays) settings.push_back(Setting{"rays (exact, CPU)", true, 0, 0, "", ""});
+    for (int resolution : maps ? options.resolutions : std::vector<int>{})
       for (int layers : options.layers)
         for (const std::string& precision : options.precisions)
           for (const std::string& filter : options.filters)
             settings.push_back(Setting{std::to_string(resolution) + " " + std::to_string(layers) +
                                            "L " + precision + (filter == "pcf" ? " pcf" : ""),
-                                       resolution, layers, precision, filter});
+                                       false, resolution, layers, precision, filter});
     const int total = int(settings.size()) + 2;
     ProgressBar bar;
     int done = 0;
@@ -173,6 +178,8 @@ int runTrade(const TradeOptions& options) {
 
     for (const Setting& setting : settings) {
       for (SoDeepShadowLight* light : lights) {
+        light->method.setValue(setting.rays ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP);
+        if (setting.rays) continue;
         light->resolution.setValue(setting.resolution);
         light->maxLayers.setValue(setting.layers);
         light->precision.setValue(setting.precision == "half" ? SoDeepShadowLight::HALF
@@ -182,18 +189,21 @@ int runTrade(const TradeOptions& options) {
       }
       Row row;
       row.setting = setting;
-      row.kind = "deep shadow map";
+      row.kind = setting.rays ? "rays" : "deep shadow map";
       // Each build is timed on its own (touching a light forces one), median of --frames.
       std::vector<double> builds;
       for (int i = 0; i < options.frames; ++i) {
         if (i > 0)
           for (SoDeepShadowLight* light : lights) light->location.touch();
         renderer->render(view.root.get());
-        builds.push_back(collectDeepShadowStatistics(view.root.get()).lastBuildMs);
+        // A map is built when the light moves; traced shadows are traced again instead.
+        const DeepShadowStatistics built = collectDeepShadowStatistics(view.root.get());
+        builds.push_back(setting.rays ? built.raysMs : built.lastBuildMs);
       }
       row.buildMs = FrameStatistics::median(builds);
       const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
       for (const DeepShadowLightStatistics& light : stats.lights) row.bytes += light.bytes;
+      if (setting.rays) row.bytes = stats.bvhBytes;
       row.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
       row.metrics = ImageComparison::compare(exact, renderer->read(), "reference", "render");
       rows.push_back(row);

@@ -101,6 +101,9 @@ int main(int argc, char** argv) {
   tradeCommand->add_option("--filter", trade.filters, "none and/or pcf")
       ->delimiter(',')
       ->capture_default_str();
+  tradeCommand->add_option("--method", trade.methods, "map and/or rays")
+      ->delimiter(',')
+      ->capture_default_str();
   tradeCommand->add_option("--frames", trade.frames, "Frames timed per setting (median)")
       ->capture_default_str();
 

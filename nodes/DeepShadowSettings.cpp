@@ -57,7 +57,7 @@ bool DeepShadowSettings::operator==(const DeepShadowSettings& o) const {
   return resolution == o.resolution && maxLayers == o.maxLayers && nearRadius == o.nearRadius &&
          farRadius == o.farRadius && bias == o.bias && shadowColor == o.shadowColor &&
          colorModel == o.colorModel && halfPrecision == o.halfPrecision &&
-         filterRadius == o.filterRadius;
+         filterRadius == o.filterRadius && method == o.method;
 }
 
 DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize) {
@@ -87,6 +87,7 @@ DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize)
     }
     s.filterRadius = size / 2;
   }
+  s.method = light.method.getValue();
   return s;
 }
 

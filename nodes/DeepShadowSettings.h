@@ -15,6 +15,7 @@ struct DeepShadowSettings {
   int colorModel = 0;   // SoDeepShadowLight::ColorModel
   bool halfPrecision = false;
   int filterRadius = 0;  // 0 = nearest texel, r = (2r+1)^2 taps
+  int method = 0;        // SoDeepShadowLight::Method as set (AUTO not yet resolved)
 
   bool operator==(const DeepShadowSettings& other) const;
   bool operator!=(const DeepShadowSettings& other) const { return !(*this == other); }

@@ -14,6 +14,12 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.totalBuildMs += stats.totalBuildMs;
     total.rebuilds += stats.rebuilds;
     total.casterTriangles += stats.casterTriangles;
+    total.raysMs += stats.raysMs;
+    total.bvhBuildMs += stats.bvhBuildMs;
+    total.raysTraced += stats.raysTraced;
+    total.bvhBytes += stats.bvhBytes;
+    total.rayFrames += stats.rayFrames;
+    total.bvhBuilds += stats.bvhBuilds;
   });
   return total;
 }

@@ -18,6 +18,7 @@ struct DeepShadowLightStatistics {
   int resolution = 0;
   float nearRadius = 0.0f;
   float farRadius = 0.0f;
+  std::string method;  // "MAP" or "RAYS", after AUTO was resolved
 };
 
 struct DeepShadowStatistics {
@@ -26,6 +27,13 @@ struct DeepShadowStatistics {
   double totalBuildMs = 0.0;
   int rebuilds = 0;  // times the maps were rebuilt
   int casterTriangles = 0;
+  // The RAYS method (lights that trace shadow rays instead of keeping a map).
+  double raysMs = 0.0;           // last trace: capture passes, tracing and upload, wall time
+  double bvhBuildMs = 0.0;       // last build of the casters' Embree scene
+  std::uint64_t raysTraced = 0;  // last trace
+  std::uint64_t bvhBytes = 0;    // what Embree holds for the casters
+  int rayFrames = 0;             // frames that traced (others reused an unchanged trace)
+  int bvhBuilds = 0;             // times the casters' Embree scene was built
 };
 
 }  // namespace ivshadow

@@ -52,6 +52,11 @@ void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) 
 }
 
 void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
+  // A group capturing surfaces for its RAYS lights wants every layer drawn with its program.
+  if (TransparentShadowGroupImpl::capturing()) {
+    renderPlainly(action, inPath);
+    return;
+  }
   // Inside a deep shadow group its program, uniforms and maps are already in place.
   if (TransparentShadowGroupImpl::activeGroup() != nullptr) {
     peel(action, inPath);

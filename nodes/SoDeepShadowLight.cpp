@@ -23,6 +23,7 @@ SoDeepShadowLight::SoDeepShadowLight() {
   SO_NODE_ADD_FIELD(precision, (FLOAT));
   SO_NODE_ADD_FIELD(filter, (NONE));
   SO_NODE_ADD_FIELD(filterSize, (3));
+  SO_NODE_ADD_FIELD(method, (AUTO_METHOD));
 
   SO_NODE_DEFINE_ENUM_VALUE(ShadowColor, AUTO);
   SO_NODE_DEFINE_ENUM_VALUE(ShadowColor, MONOCHROME);
@@ -37,6 +38,12 @@ SoDeepShadowLight::SoDeepShadowLight() {
   SO_NODE_DEFINE_ENUM_VALUE(Filter, NONE);
   SO_NODE_DEFINE_ENUM_VALUE(Filter, PCF);
   SO_NODE_SET_SF_ENUM_TYPE(filter, Filter);
+  // AUTO is taken by ShadowColor in this class's scope; files say AUTO all the same, so the
+  // name is given by hand (what SO_NODE_DEFINE_ENUM_VALUE expands to, with another name).
+  fieldData->addEnumValue("Method", "AUTO", AUTO_METHOD);
+  SO_NODE_DEFINE_ENUM_VALUE(Method, MAP);
+  SO_NODE_DEFINE_ENUM_VALUE(Method, RAYS);
+  SO_NODE_SET_SF_ENUM_TYPE(method, Method);
 }
 
 SoDeepShadowLight::~SoDeepShadowLight() = default;

@@ -31,8 +31,15 @@
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
         filter NONE          # NONE or PCF
         filterSize 3         # PCF kernel width in texels, odd, 1 .. 9
+        method AUTO          # AUTO, MAP (cube deep shadow map) or RAYS (exact, Embree on the CPU)
     }
   \endcode
+
+  With `method RAYS` the light keeps no map: after the camera's depth is known, one shadow ray
+  per pixel (per visible surface layer) is traced on the CPU through the group's casters,
+  multiplying the transmittance of every surface crossed; resolution, maxLayers, bias,
+  precision and filter then do not apply. AUTO picks RAYS on software rasterisers (llvmpipe,
+  softpipe, swrast), where it is both faster and exact, and MAP on GPUs.
 
   Out-of-range values are clamped when the map is built, with one warning naming the node and
   the field.
@@ -58,6 +65,11 @@ class SoDeepShadowLight : public SoPointLight {
     FLOAT,  //!< 32-bit visibility
     HALF    //!< 16-bit visibility, half the memory
   };
+  enum Method {
+    AUTO_METHOD = 0,  //!< RAYS on a software rasteriser, MAP on a GPU (file name: AUTO)
+    MAP = 1,          //!< the cube deep shadow map
+    RAYS = 2          //!< exact shadow rays on the CPU (Embree)
+  };
   enum Filter {
     NONE,  //!< nearest texel
     PCF    //!< average of filterSize x filterSize texels
@@ -73,6 +85,7 @@ class SoDeepShadowLight : public SoPointLight {
   SoSFEnum precision;
   SoSFEnum filter;
   SoSFInt32 filterSize;
+  SoSFEnum method;
 
  protected:
   ~SoDeepShadowLight() override;

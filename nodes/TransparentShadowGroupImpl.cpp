@@ -1,9 +1,12 @@
 #include "nodes/TransparentShadowGroupImpl.h"
 
 #include "callbacks/DeepShadowPass.h"
+#include "callbacks/GlCapabilities.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "nodes/SoDeepShadowLight.h"
+#include "raytrace/ScreenShadowTracer.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -11,13 +14,16 @@
 #include <Inventor/actions/SoGetMatrixAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/elements/SoCacheElement.h>
+#include <Inventor/elements/SoDepthBufferElement.h>
 #include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
 #include <Inventor/elements/SoGLLazyElement.h>
 #include <Inventor/elements/SoLightElement.h>
 #include <Inventor/elements/SoModelMatrixElement.h>
+#include <Inventor/elements/SoProjectionMatrixElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/elements/SoViewingMatrixElement.h>
+#include <Inventor/elements/SoViewportRegionElement.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/misc/SoNotification.h>
 #include <Inventor/nodes/SoCamera.h>
@@ -25,9 +31,11 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShaderProgram.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 
 namespace ivshadow {
@@ -55,7 +63,61 @@ void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, flo
 
 namespace {
 thread_local TransparentShadowGroupImpl* activeGroupNow = nullptr;
+thread_local bool capturingNow = false;
+
+const char* methodName(int method) {
+  return method == SoDeepShadowLight::RAYS ? "RAYS" : "MAP";
+}
+
+// Embree may use at most half the machine's memory (IVSHADOW_EMBREE_MEMORY_LIMIT, in bytes,
+// overrides it): past that a light keeps its map rather than the process running out.
+std::int64_t embreeMemoryLimit() {
+  if (const char* text = std::getenv("IVSHADOW_EMBREE_MEMORY_LIMIT")) return std::atoll(text);
+  return std::int64_t(sysconf(_SC_PHYS_PAGES)) * std::int64_t(sysconf(_SC_PAGE_SIZE)) / 2;
+}
+
+std::string lightName(const SoDeepShadowLight& light) {
+  const std::string name = light.getName().getString();
+  return name.empty() ? std::string("(unnamed)") : "'" + name + "'";
+}
+
+// Coin's transparency type for the traversals below: NONE draws transparent shapes at once
+// and unblended, where the capture program sees them.
+void setTransparencyType(SoState* state, SoGLRenderAction::TransparencyType type) {
+  SoShapeStyleElement::setTransparencyType(state, int32_t(type));
+  SoLazyElement::setTransparencyType(state, int32_t(type));
+}
 }  // namespace
+
+bool TransparentShadowGroupImpl::capturing() {
+  return capturingNow;
+}
+
+bool TransparentShadowGroupImpl::rayCastersReady(const SoDeepShadowLight& light) {
+  if (embreeError_.empty() && (!rayCasters_ || rayCastersVersion_ != castersVersion_)) {
+    const auto start = std::chrono::steady_clock::now();
+    rayCasters_.reset();
+    if (!embreeDevice_) {
+      embreeMemory_.limit = embreeMemoryLimit();
+      embreeDevice_ = createEmbreeDevice(embreeError_, &embreeMemory_);
+    }
+    if (embreeDevice_)
+      rayCasters_ = CasterScene::build(embreeDevice_.get(), casters_, embreeError_);
+    rayCastersVersion_ = castersVersion_;
+    ++statistics_.bvhBuilds;
+    statistics_.bvhBuildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    statistics_.bvhBytes = std::uint64_t(std::max<std::int64_t>(embreeMemory_.bytes.load(), 0));
+    if (!rayCasters_ && embreeError_.empty()) embreeError_ = "Embree failed";
+  }
+  if (rayCasters_) return true;
+  static std::set<const SoDeepShadowLight*> warned;
+  if (warned.insert(&light).second)
+    SoDebugError::postWarning("SoDeepShadowLight",
+                              "light %s: cannot trace shadow rays (%s); using its deep shadow map",
+                              lightName(light).c_str(), embreeError_.c_str());
+  return false;
+}
 
 TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows,
                                                        ChildrenRenderer renderChildren)
@@ -155,6 +217,18 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     map.nearRadius = map.settings.nearRadius > 0.0f ? map.settings.nearRadius
                                                     : std::max(nearest * 0.99f, far * 1e-5f);
     if (map.nearRadius >= map.farRadius) map.nearRadius = map.farRadius * 1e-5f;
+    int method = map.settings.method;
+    if (method == SoDeepShadowLight::AUTO_METHOD) {
+      method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
+      static std::set<const SoDeepShadowLight*> logged;
+      if (logged.insert(entry.light).second)
+        SoDebugError::postInfo("SoDeepShadowLight", "light %s: method AUTO uses %s on %s",
+                               lightName(*entry.light).c_str(), methodName(method),
+                               context.renderer.c_str());
+    }
+    if (method == SoDeepShadowLight::RAYS && !rayCastersReady(*entry.light))
+      method = SoDeepShadowLight::MAP;
+    map.rays = method == SoDeepShadowLight::RAYS;
     switch (map.settings.shadowColor) {
       case SoDeepShadowLight::COLORED:
         map.coloured = true;
@@ -167,6 +241,17 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
         break;
     }
 
+    map.model = !map.coloured ? ShadowColourModel::Monochrome
+                : map.settings.colorModel == SoDeepShadowLight::POWER ? ShadowColourModel::Power
+                                                                      : ShadowColourModel::Saturate;
+    DeepShadowLightStatistics light;
+    light.name = entry.light->getName().getString();
+    light.coloured = map.coloured;
+    light.method = methodName(method);
+    if (map.rays) {
+      statistics_.lights.push_back(light);
+      continue;
+    }
     MapRequest request;
     for (int i = 0; i < 3; ++i) request.light[i] = map.position[i];
     request.nearRadius = map.nearRadius;
@@ -175,21 +260,15 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     request.layers = map.settings.maxLayers;
     request.coloured = map.coloured;
     request.halfPrecision = map.settings.halfPrecision;
-    request.colourModel = !map.coloured ? ShadowColourModel::Monochrome
-                          : map.settings.colorModel == SoDeepShadowLight::POWER
-                              ? ShadowColourModel::Power
-                              : ShadowColourModel::Saturate;
+    request.colourModel = map.model;
     const MapBuildResult built = pass.build(int(slot), request);
     map.faceFirst = built.firstLayer;
     map.faceLayers = built.layersUsed;
 
-    DeepShadowLightStatistics light;
-    light.name = entry.light->getName().getString();
     light.layersUsed = built.layersUsed;
     light.passes = built.passes;
     light.bytes = pass.mapBytes(int(slot));
     light.peakBytes = pass.mapPeakBytes(int(slot));
-    light.coloured = map.coloured;
     light.resolution = request.resolution;
     light.nearRadius = map.nearRadius;
     light.farRadius = map.farRadius;
@@ -249,6 +328,9 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     }
     auto context = std::make_unique<Context>();
     context->pass = std::move(pass);
+    const GlCapabilities capabilities = GlCapabilities::queryCurrent();
+    context->softwareRenderer = capabilities.isSoftwareRenderer();
+    context->renderer = capabilities.renderer;
     return context;
   });
   if (found == nullptr) return false;
@@ -283,6 +365,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   uniforms.lightCount = std::min(kMaxLights, outside + subgraphLightsOn_);
   const SbMatrix toEye = localToEye(state);
   uniforms.mapCount = int(std::min(lights_.size(), context.maps.size()));
+  int rayCount = 0;
   for (std::size_t slot = 0; slot < std::size_t(uniforms.mapCount); ++slot) {
     const MapState& map = context.maps[slot];
     SbVec3f eye;
@@ -299,6 +382,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     uniforms.mapParams[slot * 4 + 2] = map.settings.bias;
     uniforms.mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
     uniforms.mapColoured[slot] = map.coloured ? 1 : 0;
+    if (map.rays) uniforms.mapRay[slot] = rayCount++;
   }
   const SbMatrix eyeToLocal = toEye.inverse();
   for (int row = 0; row < 4; ++row)
@@ -307,9 +391,16 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   uniforms.fogType = fogType(state);
   uniforms.apply(program, *context.pass);
   darkenLights(outside);
+  if (rayCount > 0) {
+    traceRays(action, context, program, inPath);
+    uniforms.rayLayers = context.rays->layers();
+    uniforms.apply(program, *context.pass);
+  }
 
   {
     const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(context.maps.size()));
+    const std::unique_ptr<GlStateScope> traced =
+        rayCount > 0 ? context.rays->bind() : std::unique_ptr<GlStateScope>();
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     TransparentShadowGroupImpl* outer = activeGroupNow;
     if (deepShadows_) activeGroupNow = this;
@@ -321,6 +412,73 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     state->pop();
   }
   return true;
+}
+
+void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& context,
+                                           unsigned int program, bool inPath) {
+  SoState* state = action->getState();
+  const SbViewportRegion& region = SoViewportRegionElement::get(state);
+  const SbVec2s origin = region.getViewportOriginPixels();
+  const SbVec2s size = region.getViewportSizePixels();
+  TraceKey key;
+  key.mapsVersion = mapsVersion_;
+  key.viewport = {origin[0], origin[1], size[0], size[1]};
+  const SbMatrix* matrices[3] = {&SoViewingMatrixElement::get(state),
+                                 &SoProjectionMatrixElement::get(state),
+                                 &SoModelMatrixElement::get(state)};
+  for (int m = 0; m < 3; ++m)
+    for (int i = 0; i < 16; ++i)
+      key.matrices[std::size_t(m * 16 + i)] = (*matrices[m])[i / 4][i % 4];
+  // Nothing that the traced shadows depend on changed: the last trace still holds.
+  if (context.traceValid && key == context.traced) return;
+  const auto start = std::chrono::steady_clock::now();
+  if (!context.rays) context.rays = std::make_unique<RayShadowPass>();
+  RayShadowPass& rays = *context.rays;
+
+  std::vector<SurfaceLayer> layers;
+  state->push();
+  setTransparencyType(state, SoGLRenderAction::NONE);
+  SoDepthBufferElement::set(state, TRUE, TRUE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
+  capturingNow = true;
+  // A render cache recorded here would hold the capture's state and uniforms and replay them
+  // in the shading pass (Mesa then fails the display list): the captures record none.
+  const int renderCaches = SoSeparator::getNumRenderCaches();
+  SoSeparator::setNumRenderCaches(0);
+  rays.beginCapture(origin[0], origin[1], size[0], size[1]);
+  for (int layer = 0; layer <= RayShadowPass::kMaxTransparentLayers; ++layer) {
+    rays.startLayer(layer, program);
+    renderChildren_(action, inPath);
+    SurfaceLayer captured;
+    const bool any = rays.finishLayer(layer, captured);
+    if (layer > 0 && !any) break;  // no transparent surface left in front of the opaque one
+    layers.push_back(std::move(captured));
+  }
+  rays.endCapture(program);
+  SoSeparator::setNumRenderCaches(renderCaches);
+  capturingNow = false;
+  state->pop();
+  // The captures drew into targets Coin did not choose; GL is restored, and Coin must not
+  // trust what it believes it last sent.
+  SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
+
+  std::vector<RayLight> lights;
+  for (const MapState& map : context.maps) {
+    if (!map.rays) continue;
+    RayLight light;
+    for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
+    light.model = map.model;
+    lights.push_back(light);
+  }
+  std::size_t traced = 0;
+  const std::vector<float> visibility =
+      rayCasters_ ? traceScreenShadows(*rayCasters_, layers, lights, traced) : std::vector<float>();
+  rays.upload(layers, visibility, visibility.empty() ? 0 : int(lights.size()));
+  context.traced = key;
+  context.traceValid = true;
+  statistics_.raysTraced = traced;
+  statistics_.raysMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ++statistics_.rayFrames;
 }
 
 }  // namespace ivshadow

@@ -5,6 +5,8 @@
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/PerContext.h"
 #include "nodes/ShadingProgram.h"
+#include "raytrace/CasterScene.h"
+#include "raytrace/EmbreeHandles.h"
 #include "scene/CoinRef.h"
 #include "scene/SceneTriangles.h"
 
@@ -28,6 +30,7 @@ class SoSeparator;
 namespace ivshadow {
 
 class DeepShadowPass;
+class RayShadowPass;
 
 // The work behind SoTransparentShadowGroup: finds the deep shadow lights, keeps the casters
 // and the maps up to date per GL context, and renders the children with the shading program.
@@ -51,6 +54,9 @@ class TransparentShadowGroupImpl {
   // The innermost group with deep shadows rendering its children right now on this thread,
   // or null: a peeling separator inside one shades its layers with that group's shading.
   static TransparentShadowGroupImpl* activeGroup();
+  // True while a group draws its children into the capture targets of RAYS lights: a
+  // peeling separator then draws its children plainly, with the group's capture program.
+  static bool capturing();
 
   // While the children render: binds the peel-pass variant of the shading program (through
   // Coin, in the action's current state) with the same uniforms, and returns its GL name
@@ -70,18 +76,38 @@ class TransparentShadowGroupImpl {
     float farRadius = 0.0f;
     std::array<int, 6> faceFirst{};
     std::array<int, 6> faceLayers{};
+    bool rays = false;  // method RAYS: no map, traced per pixel
+    ShadowColourModel model = ShadowColourModel::Monochrome;
+  };
+  // What a trace of RAYS lights depends on: an equal key reuses the last trace.
+  struct TraceKey {
+    std::uint64_t mapsVersion = 0;
+    std::array<int, 4> viewport{};
+    std::array<float, 48> matrices{};  // viewing, projection, model
+    bool operator==(const TraceKey& o) const {
+      return mapsVersion == o.mapsVersion && viewport == o.viewport && matrices == o.matrices;
+    }
   };
   struct Context {
     std::unique_ptr<DeepShadowPass> pass;
     std::uint64_t castersVersion = 0;
     std::uint64_t mapsVersion = 0;
     std::vector<MapState> maps;  // per light slot: what this context's maps hold
+    bool softwareRenderer = false;
+    std::string renderer;
+    std::unique_ptr<RayShadowPass> rays;
+    TraceKey traced;
+    bool traceValid = false;
   };
 
   void findLights();
   SbMatrix localToEye(SoState* state) const;
   int fogType(SoState* state) const;
   void buildMaps(SoGLRenderAction* action, Context& context);
+  // The Embree scene of the casters, built when they changed; false (with one warning naming
+  // `light`) when Embree cannot hold it, and the light then uses its map.
+  bool rayCastersReady(const SoDeepShadowLight& light);
+  void traceRays(SoGLRenderAction* action, Context& context, unsigned int program, bool inPath);
   SoSeparator* owner_;
   bool deepShadows_;
   ChildrenRenderer renderChildren_;
@@ -101,6 +127,11 @@ class TransparentShadowGroupImpl {
   std::uint64_t castersVersion_ = 0;
   std::uint64_t mapsVersion_ = 1;
   DeepShadowStatistics statistics_;
+  EmbreeMemory embreeMemory_;
+  EmbreeDevice embreeDevice_;
+  std::unique_ptr<CasterScene> rayCasters_;
+  std::uint64_t rayCastersVersion_ = 0;
+  std::string embreeError_;  // set once Embree failed: RAYS lights fall back to maps
 };
 
 }  // namespace ivshadow

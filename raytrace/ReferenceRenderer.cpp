@@ -4,6 +4,7 @@
 #include "nodes/SoTransparentShadowGroup.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
+#include "raytrace/ParallelRows.h"
 #include "raytrace/SurfaceOptics.h"
 #include "scene/SceneTriangles.h"
 
@@ -38,7 +39,6 @@
 #include <map>
 #include <set>
 #include <stdexcept>
-#include <thread>
 
 namespace ivshadow {
 namespace {
@@ -660,33 +660,26 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   if (!data.haveCamera) return result;
 
   const Tracer tracer(data, scene.get(), options);
-  std::atomic<int> nextRow{0};
-  std::atomic<std::size_t> shadowRays{0};
-  const auto work = [&] {
-    std::vector<Hit> hits;
-    std::size_t rays = 0;
-    for (int y = nextRow++; y < options.height; y = nextRow++) {
-      if (options.cancel && options.cancel->load()) break;
-      for (int x = 0; x < options.width; ++x) {
-        const glm::vec3 c = tracer.pixel(x, y, hits, rays);
-        float* out =
-            &result.image.rgb[(std::size_t(y) * std::size_t(options.width) + std::size_t(x)) * 3];
-        out[0] = c.r;
-        out[1] = c.g;
-        out[2] = c.b;
-      }
-      if (options.rowsDone) ++*options.rowsDone;
-    }
-    shadowRays += rays;
-  };
-  const int threads =
-      options.threads > 0 ? options.threads : std::max(1, int(std::thread::hardware_concurrency()));
-  std::vector<std::thread> workers;
-  for (int i = 1; i < threads; ++i) workers.emplace_back(work);
-  work();
-  for (std::thread& worker : workers) worker.join();
+  const int workers = workerCount(options.threads);
+  std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers));
+  std::vector<std::size_t> rays(static_cast<std::size_t>(workers), 0);
+  parallelRows(
+      options.height, workers,
+      [&](int y, int worker) {
+        for (int x = 0; x < options.width; ++x) {
+          const glm::vec3 c =
+              tracer.pixel(x, y, hits[std::size_t(worker)], rays[std::size_t(worker)]);
+          float* out =
+              &result.image.rgb[(std::size_t(y) * std::size_t(options.width) + std::size_t(x)) * 3];
+          out[0] = c.r;
+          out[1] = c.g;
+          out[2] = c.b;
+        }
+        if (options.rowsDone) ++*options.rowsDone;
+      },
+      options.cancel);
   if (options.cancel && options.cancel->load()) return std::nullopt;
-  result.shadowRays = shadowRays;
+  for (std::size_t count : rays) result.shadowRays += count;
   return result;
 }
 

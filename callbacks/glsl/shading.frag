@@ -32,6 +32,32 @@ uniform vec4 uMapParams[kMaxLights];  // resolution, unused, bias (texels), filt
 uniform int uMapColoured[kMaxLights];
 uniform int uMapFaceFirst[kMaxLights * 6];   // array layer of each face's first layer
 uniform int uMapFaceLayers[kMaxLights * 6];  // layers stored for each face
+// Lights with method RAYS keep no map: their visibility was traced on the CPU per pixel and
+// per captured surface layer (callbacks/RayShadowPass.h).
+uniform int uMapRay[kMaxLights];  // index among the traced lights, -1 for a map
+uniform sampler2DArray uRayDepth;       // window depth of each captured layer (1: none)
+uniform sampler2DArray uRayVisibility;  // layer ray * uRayLayers + captured layer
+uniform int uRayLayers;  // the ray textures are indexed by window coordinates
+
+// The traced visibility of the captured surface this fragment is (same depth). A fragment
+// deeper than every captured transparent layer takes the layer nearest in depth.
+vec3 rayVisibility(int ray) {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float z = gl_FragCoord.z;
+  int best = -1;
+  float bestDistance = 2.0;
+  for (int layer = 0; layer < uRayLayers; ++layer) {
+    float captured = texelFetch(uRayDepth, ivec3(pixel, layer), 0).r;
+    if (captured >= 1.0) continue;
+    float distance = abs(captured - z);
+    if (distance < bestDistance) {
+      best = layer;
+      bestDistance = distance;
+    }
+  }
+  if (best < 0) return vec3(1.0);
+  return texelFetch(uRayVisibility, ivec3(pixel, ray * uRayLayers + best), 0).rgb;
+}
 
 vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
   vec3 visibility = vec3(1.0);
@@ -113,7 +139,9 @@ vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColou
       direct += pow(nDotH, gl_FrontMaterial.shininess) * light.specular.rgb *
                 gl_FrontMaterial.specular.rgb;
     int slot = mapOfLight(light);
-    if (slot >= 0) direct *= deepShadowVisibility(slot, localPosition, nDotL);
+    if (slot >= 0)
+      direct *= uMapRay[slot] >= 0 ? rayVisibility(uMapRay[slot])
+                                   : deepShadowVisibility(slot, localPosition, nDotL);
     colour += direct;
   }
   return attenuation * colour;
@@ -152,6 +180,8 @@ const int kPeelOpaque = 1;       // the opaque pass: only fully opaque fragments
 const int kPeelInit = 2;         // first pass: the depth range of transparent fragments
 const int kPeelFrontToBack = 3;  // one layer per pass, nearest first
 const int kPeelDual = 4;         // the nearest and the farthest layer per pass
+const int kRayOpaque = 5;       // capture: the nearest opaque surface's position
+const int kRayTransparent = 6;  // capture: the nearest transparent one behind the last
 uniform int uPeelMode;
 uniform sampler2D uPeelDepth;
 uniform sampler2D uPeelFront;
@@ -200,9 +230,40 @@ void peel(vec4 texel, float alpha) {
   }
 }
 
+// Capture passes for RAYS lights: attachment 0 gets the surface's position in the group's
+// coordinates and its window depth, attachment 1 its geometric normal and 2.0 in alpha (a
+// shape Coin draws without this program writes a colour, alpha <= 1, and is not traced).
+uniform sampler2D uRayOpaque;    // the opaque capture (alpha: window depth)
+uniform sampler2D uRayPrevious;  // the previous transparent capture
+uniform int uRayFirstTransparent;
+
+void capture(float alpha) {
+  // Derivatives first: after a discard they are undefined.
+  vec3 local = (uEyeToLocal * vec4(vEyePosition, 1.0)).xyz;
+  vec3 normal = cross(dFdx(local), dFdy(local));
+  if (alpha <= 0.0) discard;
+  float z = gl_FragCoord.z;
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  const float kSameLayer = 1e-6;
+  if (uPeelMode == kRayOpaque) {
+    if (!isOpaque(alpha)) discard;
+  } else {
+    if (isOpaque(alpha)) discard;
+    if (z >= texelFetch(uRayOpaque, pixel, 0).a - kSameLayer) discard;
+    if (uRayFirstTransparent == 0 && z <= texelFetch(uRayPrevious, pixel, 0).a + kSameLayer)
+      discard;
+  }
+  gl_FragData[0] = vec4(local, z);
+  gl_FragData[1] = vec4(normal, 2.0);
+}
+
 void main() {
   vec4 texel = coin_texunit0_model != kTextureNone ? texture(textureMap0, gl_TexCoord[0].st)
                                                    : vec4(1.0);
+  if (uPeelMode == kRayOpaque || uPeelMode == kRayTransparent) {
+    capture(applyTextureModel(gl_Color, texel, coin_texunit0_model, gl_TextureEnvColor[0].rgb).a);
+    return;
+  }
   if (uPeelMode >= kPeelInit) {
     // The opacity alone decides what a peel pass does; most fragments need no shading.
     float alpha =

@@ -1,0 +1,168 @@
+#include "callbacks/RayShadowPass.h"
+
+#include "callbacks/GlLimits.h"
+#include "callbacks/GlStateScope.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+namespace {
+
+constexpr int kOpaqueUnit = 0;    // capture: the opaque layer (sampler2D)
+constexpr int kPreviousUnit = 1;  // capture: the previous transparent layer (sampler2D)
+constexpr int kDepthUnit = 2;     // shading: captured depths (sampler2DArray)
+constexpr int kVisibilityUnit = 3;
+
+GlTexture makeTarget(GLenum format, int width, int height) {
+  GlTexture texture = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.get(), 1, format, width, height);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return texture;
+}
+
+// Layer k's capture target: the opaque one, then the two transparent ones in turn.
+std::size_t targetOf(int layer) {
+  return layer == 0 ? 0u : std::size_t(1 + (layer - 1) % 2);
+}
+
+}  // namespace
+
+int RayShadowPass::unit(int i) {
+  return glInteger(GL_MAX_TEXTURE_IMAGE_UNITS) - 2 * kMaxGlLights - 3 - 4 + i;
+}
+
+void RayShadowPass::allocate(int width, int height) {
+  if (width == width_ && height == height_) return;
+  width_ = width;
+  height_ = height;
+  positions_.clear();
+  normals_.clear();
+  framebuffers_.clear();
+  depth_ = makeTarget(GL_DEPTH_COMPONENT32F, width, height);
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  for (int i = 0; i < 3; ++i) {
+    positions_.push_back(makeTarget(GL_RGBA32F, width, height));
+    normals_.push_back(makeTarget(GL_RGBA16F, width, height));
+    framebuffers_.push_back(createFramebuffer());
+    const GLuint fbo = framebuffers_.back().get();
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, positions_.back().get(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, normals_.back().get(), 0);
+    glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_.get(), 0);
+    glNamedFramebufferDrawBuffers(fbo, 2, buffers);
+  }
+}
+
+void RayShadowPass::beginCapture(int x, int y, int width, int height) {
+  saved_ = std::make_unique<GlStateScope>(GlStateScope::Extent::WholePass,
+                                          std::vector<int>{unit(kOpaqueUnit), unit(kPreviousUnit)});
+  viewport_ = {x, y, width, height};
+  allocate(x + width, y + height);
+  // Capture writes positions, not colours: blending would mix them.
+  glDisable(GL_BLEND);
+}
+
+void RayShadowPass::startLayer(int layer, unsigned int program) {
+  const std::size_t target = targetOf(layer);
+  const GLuint fbo = framebuffers_[target].get();
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // window depth 1: nothing here
+  const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  const float far = 1.0f;
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 0, empty);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 1, none);
+  glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  glBindTextureUnit(GLuint(unit(kOpaqueUnit)), positions_[0].get());
+  // The previous transparent layer sits in the other transparent target (never the one
+  // written now, so nothing is read while it is drawn to).
+  glBindTextureUnit(GLuint(unit(kPreviousUnit)),
+                    positions_[layer >= 2 ? targetOf(layer - 1) : 0].get());
+  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), layer == 0 ? 5 : 6);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uRayFirstTransparent"),
+                     layer <= 1 ? 1 : 0);
+}
+
+bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
+  const std::size_t target = targetOf(layer);
+  out.width = width_;
+  out.height = height_;
+  const std::size_t floats = std::size_t(width_) * std::size_t(height_) * 4;
+  out.position.resize(floats);
+  out.normal.resize(floats);
+  glGetTextureImage(positions_[target].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(floats * sizeof(float)),
+                    out.position.data());
+  glGetTextureImage(normals_[target].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(floats * sizeof(float)),
+                    out.normal.data());
+  for (std::size_t pixel = 0; pixel < floats / 4; ++pixel)
+    if (out.traced(pixel)) return true;
+  return false;
+}
+
+void RayShadowPass::endCapture(unsigned int program) {
+  saved_.reset();
+  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), 0);
+}
+
+void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers,
+                           const std::vector<float>& visibility, int rays) {
+  const int count = int(layers.size());
+  if (count == 0 || rays == 0) {
+    uploadedLayers_ = 0;
+    uploadedRays_ = 0;
+    return;
+  }
+  const int width = layers.front().width, height = layers.front().height;
+  if (width != shadingWidth_ || height != shadingHeight_ || count != uploadedLayers_ ||
+      rays != uploadedRays_) {
+    shadingDepth_ = createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(shadingDepth_.get(), 1, GL_R32F, width, height, count);
+    shadingVisibility_ = createTexture(GL_TEXTURE_2D_ARRAY);
+    // 16-bit floats hold a visibility to 1e-3 relative: far below an 8-bit step.
+    glTextureStorage3D(shadingVisibility_.get(), 1, GL_RGBA16F, width, height, count * rays);
+    for (const GlTexture* texture : {&shadingDepth_, &shadingVisibility_}) {
+      glTextureParameteri(texture->get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(texture->get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    shadingWidth_ = width;
+    shadingHeight_ = height;
+  }
+  uploadedLayers_ = count;
+  uploadedRays_ = rays;
+  // Each layer's depth: the alpha of its positions, taken with a stride of 4 floats.
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  std::vector<float> depth(std::size_t(width) * std::size_t(height));
+  for (int l = 0; l < count; ++l) {
+    const SurfaceLayer& layer = layers[std::size_t(l)];
+    for (std::size_t i = 0; i < depth.size(); ++i)
+      depth[i] = layer.traced(i) ? layer.position[i * 4 + 3] : 1.0f;
+    glTextureSubImage3D(shadingDepth_.get(), 0, 0, 0, l, width, height, 1, GL_RED, GL_FLOAT,
+                        depth.data());
+  }
+  glTextureSubImage3D(shadingVisibility_.get(), 0, 0, 0, 0, width, height, count * rays, GL_RGBA,
+                      GL_FLOAT, visibility.data());
+}
+
+std::unique_ptr<GlStateScope> RayShadowPass::bind() const {
+  auto scope =
+      std::make_unique<GlStateScope>(GlStateScope::Extent::TextureUnits,
+                                     std::vector<int>{unit(kDepthUnit), unit(kVisibilityUnit)});
+  if (shadingDepth_) {
+    glBindTextureUnit(GLuint(unit(kDepthUnit)), shadingDepth_.get());
+    glBindTextureUnit(GLuint(unit(kVisibilityUnit)), shadingVisibility_.get());
+  }
+  return scope;
+}
+
+std::uint64_t RayShadowPass::bytes() const {
+  const std::uint64_t capture = std::uint64_t(width_) * std::uint64_t(height_) * (3 * (16 + 8) + 4);
+  const std::uint64_t shading = std::uint64_t(shadingWidth_) * std::uint64_t(shadingHeight_) *
+                                (std::uint64_t(uploadedLayers_) * 4 +
+                                 std::uint64_t(uploadedLayers_) * std::uint64_t(uploadedRays_) * 8);
+  return capture + shading;
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,70 @@
+#pragma once
+
+#include "callbacks/GlHandles.h"
+#include "raytrace/ScreenShadowTracer.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace ivshadow {
+
+class GlStateScope;
+
+// The GL side of SoDeepShadowLight's RAYS method in one context. Before the group's children
+// are shaded, Coin draws them into capture targets: first the nearest opaque surface of each
+// pixel, then up to kMaxTransparentLayers transparent surfaces in front of it, nearest first.
+// Each capture is read back (positions, normals) for the CPU tracer; the traced visibility is
+// uploaded as a texture array that the shading program reads instead of a map. A frame is
+//   beginCapture(); [startLayer(k); <Coin draws>; finishLayer(k)]...; endCapture();
+//   upload(); bind() while the children are shaded.
+class RayShadowPass {
+ public:
+  static constexpr int kMaxTransparentLayers = 6;
+
+  RayShadowPass() = default;
+
+  // Texture unit i (0..3) of the ray samplers: below the peel units, above Coin's.
+  static int unit(int i);
+
+  // Saves GL state and sizes the capture targets to the viewport's far corner (window
+  // coordinates index them).
+  void beginCapture(int x, int y, int width, int height);
+  // Binds layer k's target (0: opaque), clears it and sets the program's capture uniforms.
+  void startLayer(int layer, unsigned int program);
+  // Reads layer k back; returns false when it caught no traced surface (deeper layers would
+  // catch nothing either).
+  bool finishLayer(int layer, SurfaceLayer& out);
+  // Restores the GL state and puts `program` back in its shading mode.
+  void endCapture(unsigned int program);
+
+  // Uploads the captured depths and the visibility of `rays` lights for the shading pass.
+  void upload(const std::vector<SurfaceLayer>& layers, const std::vector<float>& visibility,
+              int rays);
+  int layers() const { return uploadedLayers_; }
+  // Binds the shading textures until the returned scope ends.
+  std::unique_ptr<GlStateScope> bind() const;
+  // GPU memory held between frames: capture targets and shading textures.
+  std::uint64_t bytes() const;
+
+ private:
+  void allocate(int width, int height);
+
+  int width_ = 0;
+  int height_ = 0;
+  // Capture targets: [0] the opaque layer, [1] and [2] alternate for transparent layers.
+  std::vector<GlTexture> positions_;
+  std::vector<GlTexture> normals_;
+  GlTexture depth_;
+  std::vector<GlFramebuffer> framebuffers_;
+  std::unique_ptr<GlStateScope> saved_;
+  std::vector<int> viewport_;
+  GlTexture shadingDepth_;
+  GlTexture shadingVisibility_;
+  int uploadedLayers_ = 0;
+  int uploadedRays_ = 0;
+  int shadingWidth_ = 0;
+  int shadingHeight_ = 0;
+};
+
+}  // namespace ivshadow
