@@ -49,4 +49,12 @@ GlRenderbuffer createRenderbuffer() {
   return GlRenderbuffer(name);
 }
 
+GlTexture createTarget2D(unsigned int format, int width, int height) {
+  GlTexture texture = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.get(), 1, format, width, height);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return texture;
+}
+
 }  // namespace ivshadow

@@ -37,5 +37,7 @@ GlBuffer createBuffer();
 GlVertexArray createVertexArray();
 GlFramebuffer createFramebuffer();
 GlRenderbuffer createRenderbuffer();
+// A 2D texture of one level and nearest sampling: a render target read by texel.
+GlTexture createTarget2D(unsigned int format, int width, int height);
 
 }  // namespace ivshadow

@@ -14,14 +14,6 @@ constexpr int kDepthRangeOffset = 0;
 constexpr int kFrontOffset = 1;
 constexpr int kBackLayerOffset = 2;
 
-GlTexture makeTarget(GLenum format, int width, int height) {
-  GlTexture texture = createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(texture.get(), 1, format, width, height);
-  glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return texture;
-}
-
 }  // namespace
 
 std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
@@ -50,12 +42,12 @@ void PeelPass::allocate(int width, int height) {
   width_ = width;
   height_ = height;
   for (int i = 0; i < 2; ++i) {
-    depthRange_[i] = makeTarget(GL_RG32F, width, height);
-    front_[i] = makeTarget(GL_RGBA32F, width, height);
+    depthRange_[i] = createTarget2D(GL_RG32F, width, height);
+    front_[i] = createTarget2D(GL_RGBA32F, width, height);
   }
-  backLayer_ = makeTarget(GL_RGBA32F, width, height);
-  backAccumulation_ = makeTarget(GL_RGBA32F, width, height);
-  opaqueDepth_ = makeTarget(GL_DEPTH_COMPONENT32F, width, height);
+  backLayer_ = createTarget2D(GL_RGBA32F, width, height);
+  backAccumulation_ = createTarget2D(GL_RGBA32F, width, height);
+  opaqueDepth_ = createTarget2D(GL_DEPTH_COMPONENT32F, width, height);
   const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   for (int i = 0; i < 2; ++i) {
     peelFramebuffer_[i] = createFramebuffer();

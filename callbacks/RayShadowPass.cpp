@@ -13,14 +13,6 @@ constexpr int kPreviousUnit = 1;  // capture: the previous transparent layer (sa
 constexpr int kDepthUnit = 2;     // shading: captured depths (sampler2DArray)
 constexpr int kVisibilityUnit = 3;
 
-GlTexture makeTarget(GLenum format, int width, int height) {
-  GlTexture texture = createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(texture.get(), 1, format, width, height);
-  glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return texture;
-}
-
 // Layer k's capture target: the opaque one, then the two transparent ones in turn.
 std::size_t targetOf(int layer) {
   return layer == 0 ? 0u : std::size_t(1 + (layer - 1) % 2);
@@ -39,11 +31,12 @@ void RayShadowPass::allocate(int width, int height) {
   positions_.clear();
   normals_.clear();
   framebuffers_.clear();
-  depth_ = makeTarget(GL_DEPTH_COMPONENT32F, width, height);
+  depth_ = createTarget2D(GL_DEPTH_COMPONENT32F, width, height);
   const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   for (int i = 0; i < 3; ++i) {
-    positions_.push_back(makeTarget(GL_RGBA32F, width, height));
-    normals_.push_back(makeTarget(GL_RGBA16F, width, height));
+    positions_.push_back(createTarget2D(GL_RGBA32F, width, height));
+    // 32-bit like the positions: Mesa reads float targets back with a plain copy.
+    normals_.push_back(createTarget2D(GL_RGBA32F, width, height));
     framebuffers_.push_back(createFramebuffer());
     const GLuint fbo = framebuffers_.back().get();
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, positions_.back().get(), 0);
@@ -91,6 +84,7 @@ bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
   out.width = width_;
   out.height = height_;
   const std::size_t floats = std::size_t(width_) * std::size_t(height_) * 4;
+  // Same size as last frame: the memory is reused, not cleared (the read-back fills it).
   out.position.resize(floats);
   out.normal.resize(floats);
   glGetTextureImage(positions_[target].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(floats * sizeof(float)),
@@ -107,9 +101,8 @@ void RayShadowPass::endCapture(unsigned int program) {
   glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), 0);
 }
 
-void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers,
-                           const std::vector<float>& visibility, int rays) {
-  const int count = int(layers.size());
+void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
+                           const std::vector<std::uint16_t>& visibility, int rays) {
   if (count == 0 || rays == 0) {
     uploadedLayers_ = 0;
     uploadedRays_ = 0;
@@ -134,7 +127,8 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers,
   uploadedRays_ = rays;
   // Each layer's depth: the alpha of its positions, taken with a stride of 4 floats.
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  std::vector<float> depth(std::size_t(width) * std::size_t(height));
+  std::vector<float>& depth = depthScratch_;
+  depth.resize(std::size_t(width) * std::size_t(height));
   for (int l = 0; l < count; ++l) {
     const SurfaceLayer& layer = layers[std::size_t(l)];
     for (std::size_t i = 0; i < depth.size(); ++i)
@@ -143,7 +137,7 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers,
                         depth.data());
   }
   glTextureSubImage3D(shadingVisibility_.get(), 0, 0, 0, 0, width, height, count * rays, GL_RGBA,
-                      GL_FLOAT, visibility.data());
+                      GL_HALF_FLOAT, visibility.data());
 }
 
 std::unique_ptr<GlStateScope> RayShadowPass::bind() const {
@@ -158,7 +152,8 @@ std::unique_ptr<GlStateScope> RayShadowPass::bind() const {
 }
 
 std::uint64_t RayShadowPass::bytes() const {
-  const std::uint64_t capture = std::uint64_t(width_) * std::uint64_t(height_) * (3 * (16 + 8) + 4);
+  const std::uint64_t capture =
+      std::uint64_t(width_) * std::uint64_t(height_) * (3 * (16 + 16) + 4);
   const std::uint64_t shading = std::uint64_t(shadingWidth_) * std::uint64_t(shadingHeight_) *
                                 (std::uint64_t(uploadedLayers_) * 4 +
                                  std::uint64_t(uploadedLayers_) * std::uint64_t(uploadedRays_) * 8);

@@ -20,7 +20,7 @@ class GlStateScope;
 //   upload(); bind() while the children are shaded.
 class RayShadowPass {
  public:
-  static constexpr int kMaxTransparentLayers = 6;
+  static constexpr int kMaxTransparentLayers = 4;
 
   RayShadowPass() = default;
 
@@ -38,9 +38,10 @@ class RayShadowPass {
   // Restores the GL state and puts `program` back in its shading mode.
   void endCapture(unsigned int program);
 
-  // Uploads the captured depths and the visibility of `rays` lights for the shading pass.
-  void upload(const std::vector<SurfaceLayer>& layers, const std::vector<float>& visibility,
-              int rays);
+  // Uploads the captured depths of the first `count` layers and the visibility of `rays`
+  // lights for the shading pass.
+  void upload(const std::vector<SurfaceLayer>& layers, int count,
+              const std::vector<std::uint16_t>& visibility, int rays);
   int layers() const { return uploadedLayers_; }
   // Binds the shading textures until the returned scope ends.
   std::unique_ptr<GlStateScope> bind() const;
@@ -65,6 +66,7 @@ class RayShadowPass {
   int uploadedRays_ = 0;
   int shadingWidth_ = 0;
   int shadingHeight_ = 0;
+  std::vector<float> depthScratch_;
 };
 
 }  // namespace ivshadow

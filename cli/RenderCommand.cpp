@@ -2,6 +2,7 @@
 
 #include "callbacks/GlCapabilities.h"
 #include "cli/ExitStatus.h"
+#include "cli/OpenRenderer.h"
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
@@ -78,6 +79,9 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   for (const std::string& m : methods) method += (method.empty() ? "" : "+") + m;
   stats["passes"]["shadow_method"] = method;
   stats["passes"]["rays_ms"] = shadows.raysMs;
+  stats["passes"]["rays_capture_ms"] = shadows.rayCaptureMs;
+  stats["passes"]["rays_trace_ms"] = shadows.rayTraceMs;
+  stats["ray_layers"] = shadows.rayLayers;
   stats["passes"]["bvh_build_ms"] = shadows.bvhBuildMs;
   stats["rays_traced"] = shadows.raysTraced;
   stats["ray_frames"] = shadows.rayFrames;
@@ -119,13 +123,8 @@ int runRender(const RenderOptions& options) {
       assignment.apply(scene.root.get(), options.scene);
     }
 
-    std::string error;
-    std::unique_ptr<OffscreenRenderer> renderer =
-        OffscreenRenderer::create(size.width, size.height, error);
-    if (!renderer) {
-      std::cerr << "ivshadow: error: no GL context for headless rendering: " << error << '\n';
-      return 3;
-    }
+    std::unique_ptr<OffscreenRenderer> renderer = openRenderer(size);
+    if (!renderer) return 3;
     if (transparency) renderer->action().setTransparencyType(*transparency);
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(),

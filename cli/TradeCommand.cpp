@@ -2,6 +2,7 @@
 
 #include "callbacks/GlCapabilities.h"
 #include "cli/ExitStatus.h"
+#include "cli/OpenRenderer.h"
 #include "cli/ProgressBar.h"
 #include "cli/TradePlot.h"
 #include "headless/FrameStatistics.h"
@@ -123,13 +124,8 @@ int runTrade(const TradeOptions& options) {
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
 
-    std::string error;
-    std::unique_ptr<OffscreenRenderer> renderer =
-        OffscreenRenderer::create(size.width, size.height, error);
-    if (!renderer) {
-      std::cerr << "ivshadow: error: no GL context for headless rendering: " << error << '\n';
-      return 3;
-    }
+    std::unique_ptr<OffscreenRenderer> renderer = openRenderer(size);
+    if (!renderer) return 3;
 
     std::vector<Setting> settings;
     if (rays) settings.push_back(Setting{"rays (exact, CPU)", true, 0, 0, "", ""});

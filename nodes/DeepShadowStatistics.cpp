@@ -3,6 +3,8 @@
 #include "nodes/NodesOfType.h"
 #include "nodes/SoTransparentShadowGroup.h"
 
+#include <algorithm>
+
 namespace ivshadow {
 
 DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
@@ -15,6 +17,9 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.rebuilds += stats.rebuilds;
     total.casterTriangles += stats.casterTriangles;
     total.raysMs += stats.raysMs;
+    total.rayCaptureMs += stats.rayCaptureMs;
+    total.rayTraceMs += stats.rayTraceMs;
+    total.rayLayers = std::max(total.rayLayers, stats.rayLayers);
     total.bvhBuildMs += stats.bvhBuildMs;
     total.raysTraced += stats.raysTraced;
     total.bvhBytes += stats.bvhBytes;

@@ -29,6 +29,9 @@ struct DeepShadowStatistics {
   int casterTriangles = 0;
   // The RAYS method (lights that trace shadow rays instead of keeping a map).
   double raysMs = 0.0;           // last trace: capture passes, tracing and upload, wall time
+  double rayCaptureMs = 0.0;     // ... of which the capture traversals and read-backs
+  double rayTraceMs = 0.0;       // ... the rays on the CPU
+  int rayLayers = 0;             // surface layers captured in the last trace
   double bvhBuildMs = 0.0;       // last build of the casters' Embree scene
   std::uint64_t raysTraced = 0;  // last trace
   std::uint64_t bvhBytes = 0;    // what Embree holds for the casters

@@ -6,7 +6,6 @@
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "nodes/SoDeepShadowLight.h"
-#include "raytrace/ScreenShadowTracer.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -435,7 +434,8 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   if (!context.rays) context.rays = std::make_unique<RayShadowPass>();
   RayShadowPass& rays = *context.rays;
 
-  std::vector<SurfaceLayer> layers;
+  std::vector<SurfaceLayer>& layers = context.surfaces;
+  std::size_t layerCount = 0;
   state->push();
   setTransparencyType(state, SoGLRenderAction::NONE);
   SoDepthBufferElement::set(state, TRUE, TRUE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
@@ -445,13 +445,16 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   const int renderCaches = SoSeparator::getNumRenderCaches();
   SoSeparator::setNumRenderCaches(0);
   rays.beginCapture(origin[0], origin[1], size[0], size[1]);
-  for (int layer = 0; layer <= RayShadowPass::kMaxTransparentLayers; ++layer) {
+  // Without a transparent caster there is rarely a transparent surface to capture: one pass
+  // then does (a transparent shape that only receives takes the opaque surface's shadow).
+  const int lastLayer = casters_.hasTransparent ? RayShadowPass::kMaxTransparentLayers : 0;
+  for (int layer = 0; layer <= lastLayer; ++layer) {
     rays.startLayer(layer, program);
     renderChildren_(action, inPath);
-    SurfaceLayer captured;
-    const bool any = rays.finishLayer(layer, captured);
+    if (layers.size() <= std::size_t(layer)) layers.emplace_back();
+    const bool any = rays.finishLayer(layer, layers[std::size_t(layer)]);
     if (layer > 0 && !any) break;  // no transparent surface left in front of the opaque one
-    layers.push_back(std::move(captured));
+    ++layerCount;
   }
   rays.endCapture(program);
   SoSeparator::setNumRenderCaches(renderCaches);
@@ -461,6 +464,7 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   // trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 
+  const auto captured = std::chrono::steady_clock::now();
   std::vector<RayLight> lights;
   for (const MapState& map : context.maps) {
     if (!map.rays) continue;
@@ -469,13 +473,18 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
     light.model = map.model;
     lights.push_back(light);
   }
-  std::size_t traced = 0;
-  const std::vector<float> visibility =
-      rayCasters_ ? traceScreenShadows(*rayCasters_, layers, lights, traced) : std::vector<float>();
-  rays.upload(layers, visibility, visibility.empty() ? 0 : int(lights.size()));
+  const std::size_t traced =
+      rayCasters_ ? traceScreenShadows(*rayCasters_, layers, layerCount, lights, context.visibility)
+                  : 0;
+  const auto tracedAt = std::chrono::steady_clock::now();
+  rays.upload(layers, int(layerCount), context.visibility,
+              context.visibility.empty() ? 0 : int(lights.size()));
   context.traced = key;
   context.traceValid = true;
   statistics_.raysTraced = traced;
+  statistics_.rayLayers = int(layerCount);
+  statistics_.rayCaptureMs = std::chrono::duration<double, std::milli>(captured - start).count();
+  statistics_.rayTraceMs = std::chrono::duration<double, std::milli>(tracedAt - captured).count();
   statistics_.raysMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics_.rayFrames;

@@ -7,6 +7,7 @@
 #include "nodes/ShadingProgram.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
+#include "raytrace/ScreenShadowTracer.h"
 #include "scene/CoinRef.h"
 #include "scene/SceneTriangles.h"
 
@@ -96,6 +97,9 @@ class TransparentShadowGroupImpl {
     bool softwareRenderer = false;
     std::string renderer;
     std::unique_ptr<RayShadowPass> rays;
+    // The last trace's captures and visibility, kept so that their memory is reused.
+    std::vector<SurfaceLayer> surfaces;
+    std::vector<std::uint16_t> visibility;
     TraceKey traced;
     bool traceValid = false;
   };

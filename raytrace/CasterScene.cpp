@@ -66,40 +66,10 @@ std::unique_ptr<CasterScene> CasterScene::build(RTCDevice device, SceneTriangles
     std::fill_n(result->triangleTexture_.begin() + std::ptrdiff_t(batch.firstVertex / 3),
                 batch.vertexCount / 3, batch.texture);
 
-  result->scene_ = EmbreeScene(rtcNewScene(device));
-  if (!result->scene_) {
-    error = "Embree could not create a scene";
-    return nullptr;
-  }
-  rtcSetSceneFlags(result->scene_.get(), RTC_SCENE_FLAG_ROBUST);
-  const std::size_t count = triangles.triangleCount();
-  if (count > 0) {
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), count * 3));
-    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), count));
-    if (positions == nullptr || indices == nullptr) {
-      rtcReleaseGeometry(geometry);
-      error = "Embree could not allocate " + std::to_string(count) + " triangles";
-      return nullptr;
-    }
-    for (std::size_t i = 0; i < count * 3; ++i) {
-      for (int k = 0; k < 3; ++k)
-        positions[i * 3 + std::size_t(k)] = triangles.vertices[i].position[k];
-      indices[i] = static_cast<unsigned int>(i);
-    }
-    rtcSetGeometryOccludedFilterFunction(geometry, shadowFilter);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(result->scene_.get(), geometry);
-    rtcReleaseGeometry(geometry);
-  }
-  rtcCommitScene(result->scene_.get());
-  if (rtcGetDeviceError(device) != RTC_ERROR_NONE) {
-    error = "Embree could not build the bounding volume hierarchy of " + std::to_string(count) +
-            " triangles";
-    return nullptr;
-  }
+  result->scene_ = buildTriangleScene(
+      device, triangles.triangleCount(),
+      [&triangles](std::size_t i) { return triangles.vertices[i].position; }, shadowFilter, error);
+  if (!result->scene_) return nullptr;
   return result;
 }
 

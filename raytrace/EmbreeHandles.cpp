@@ -26,4 +26,45 @@ EmbreeDevice createEmbreeDevice(std::string& error, EmbreeMemory* memory) {
   return EmbreeDevice(device);
 }
 
+EmbreeScene buildTriangleScene(RTCDevice device, std::size_t count,
+                               const std::function<const float*(std::size_t)>& corner,
+                               RTCFilterFunctionN filter, std::string& error) {
+  EmbreeScene scene(rtcNewScene(device));
+  if (!scene) {
+    error = "Embree could not create a scene";
+    return EmbreeScene();
+  }
+  // Robust: no ray slips through the shared edge of two triangles.
+  rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
+  if (count > 0) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), count * 3));
+    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), count));
+    if (positions == nullptr || indices == nullptr) {
+      rtcReleaseGeometry(geometry);
+      error = "Embree could not allocate " + std::to_string(count) + " triangles";
+      return EmbreeScene();
+    }
+    for (std::size_t i = 0; i < count * 3; ++i) {
+      const float* p = corner(i);
+      for (std::size_t k = 0; k < 3; ++k) positions[i * 3 + k] = p[k];
+      indices[i] = static_cast<unsigned int>(i);
+    }
+    rtcSetGeometryIntersectFilterFunction(geometry, filter);
+    rtcSetGeometryOccludedFilterFunction(geometry, filter);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene.get(), geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(scene.get());
+  if (rtcGetDeviceError(device) != RTC_ERROR_NONE) {
+    error = "Embree could not build the bounding volume hierarchy of " + std::to_string(count) +
+            " triangles (out of memory?)";
+    return EmbreeScene();
+  }
+  return scene;
+}
+
 }  // namespace ivshadow

@@ -626,29 +626,11 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
     if (!group.casters) throw std::runtime_error(error);
   }
 
-  EmbreeScene scene(rtcNewScene(device.get()));
-  rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
   const std::size_t count = data.triangles.size();
-  if (count > 0) {
-    RTCGeometry geometry = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), count * 3));
-    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), count));
-    if (positions == nullptr || indices == nullptr) {
-      rtcReleaseGeometry(geometry);
-      throw std::runtime_error("Embree could not allocate " + std::to_string(count) + " triangles");
-    }
-    for (std::size_t i = 0; i < count * 3; ++i) {
-      for (int k = 0; k < 3; ++k) positions[i * 3 + std::size_t(k)] = data.positions[i][k];
-      indices[i] = static_cast<unsigned int>(i);
-    }
-    rtcSetGeometryIntersectFilterFunction(geometry, cameraFilter);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene.get(), geometry);
-    rtcReleaseGeometry(geometry);
-  }
-  rtcCommitScene(scene.get());
+  EmbreeScene scene = buildTriangleScene(
+      device.get(), count, [&data](std::size_t i) { return &data.positions[i].x; }, cameraFilter,
+      error);
+  if (!scene) throw std::runtime_error(error);
 
   ReferenceResult result;
   result.triangles = count;

@@ -3,6 +3,7 @@
 #include "callbacks/GlLimits.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace ivshadow {
@@ -29,11 +30,13 @@ struct RayLight {
   ShadowColourModel model = ShadowColourModel::Monochrome;
 };
 
-// Traces one shadow ray per traced pixel, layer and light through `casters` on every core.
-// Returns RGBA visibility (alpha 1) per light, then layer, then pixel: the layout of the
-// shading program's uRayVisibility array. `rays` receives the number of rays traced.
-std::vector<float> traceScreenShadows(const CasterScene& casters,
-                                      const std::vector<SurfaceLayer>& layers,
-                                      const std::vector<RayLight>& lights, std::size_t& rays);
+// Traces one shadow ray per traced pixel, layer (the first `layerCount` of `layers`) and light
+// through `casters` on every core. Writes RGBA visibility as 16-bit floats (alpha 1; 1 where
+// nothing was traced) per light, then layer, then pixel into `visibility` — the layout and
+// format of the shading program's uRayVisibility array, so the upload is a copy — reusing its
+// memory from frame to frame. Returns the number of rays traced.
+std::size_t traceScreenShadows(const CasterScene& casters, const std::vector<SurfaceLayer>& layers,
+                               std::size_t layerCount, const std::vector<RayLight>& lights,
+                               std::vector<std::uint16_t>& visibility);
 
 }  // namespace ivshadow

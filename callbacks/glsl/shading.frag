@@ -54,6 +54,9 @@ vec3 rayVisibility(int ray) {
       best = layer;
       bestDistance = distance;
     }
+    // The surface itself (Coin may move a redrawn shape's depth by a few ulps): no need to
+    // look at deeper layers.
+    if (distance <= 1e-6) break;
   }
   if (best < 0) return vec3(1.0);
   return texelFetch(uRayVisibility, ivec3(pixel, ray * uRayLayers + best), 0).rgb;

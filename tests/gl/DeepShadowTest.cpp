@@ -17,9 +17,6 @@ namespace {
 // the footprint edges may fall). One 8-bit step bounds it.
 constexpr double kTolerance = 1.0;
 
-const Filter kRedGlass{0.3, 0.5, {1.0, 0.0, 0.0}, 0.5, ""};
-const Filter kGreenGlass{0.4, 0.25, {0.0, 1.0, 0.0}, 0.5, ""};
-
 void expectPicture(const ShadowScene& scene, const ShadowPicture& picture,
                    SoNode** root = nullptr) {
   const Image image = renderIv(scene.text(), ShadowScene::kSize, root);
@@ -180,36 +177,14 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(DeepShadow, AlphaTexturedCheckerboardCastsACheckerboard) {
   ShadowScene scene;
-  Filter checker = kRedGlass;
-  checker.diffuse = {1.0, 1.0, 1.0};
-  checker.transparency = 0.0;
-  // Luminance-alpha 2 x 2 image, rows bottom-up: opaque bottom-left and top-right texels.
-  // Texture quality 0.1 samples it without filtering, in Coin's pass and in the map's.
-  checker.nodes =
-      "Complexity { textureQuality 0.1 } "
-      "Texture2 { image 2 2 2 0xFFFF 0xFF00 0xFF00 0xFFFF model MODULATE }";
+  const Filter checker = checkerboardFilter();
   scene.filters = {checker};
   SoNode* root = nullptr;
   const Image image = renderIv(scene.text(), ShadowScene::kSize, &root);
   root->unref();
   // Floor points in the ring around the seen glass whose light passes each quadrant:
   // (x, y) on the floor maps to (x, y) / 2 on the glass.
-  struct Probe {
-    double x, y;
-    bool lit;
-  };
-  for (const Probe& p :
-       {Probe{0.45, 0.15, false}, Probe{-0.45, -0.15, false}, Probe{0.45, -0.15, true},
-        Probe{-0.45, 0.15, true}, Probe{0.15, 0.45, false}, Probe{-0.15, 0.45, true}}) {
-    const int px = int(std::floor((p.x + 1.2) * 100.0));
-    const int py = int(std::floor((1.2 - p.y) * 100.0));
-    const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
-    const double lambert = 255.0 / std::sqrt(1.0 + x * x + y * y);
-    const double expected = p.lit ? lambert : 0.0;
-    for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(image.pixel(px, py)[c], expected, kTolerance)
-          << "floor point (" << p.x << ", " << p.y << ") channel " << c;
-  }
+  expectCheckerboardShadow(image, kTolerance);
 }
 
 }  // namespace

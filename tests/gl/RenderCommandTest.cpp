@@ -59,9 +59,10 @@ TEST(RenderCommand, StatsJsonHasTheDocumentedKeys) {
 
 TEST(RenderCommand, StatsReportDeepShadowMapsBuiltOnce) {
   const std::string dir = test::outputDir();
-  const test::ProcessResult result = run(
-      {test::ivshadowExe(), "render", scene("coloured_shadows.iv"), "-o", dir + "/d.png", "--size",
-       "160x120", "--frames", "3", "--stats", dir + "/stats.json", "--set", "Lamp.resolution=128"});
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", scene("coloured_shadows.iv"), "-o", dir + "/d.png",
+           "--size", "160x120", "--frames", "3", "--stats", dir + "/stats.json", "--set",
+           "Lamp.resolution=128", "--set", "Lamp.method=MAP"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   std::ifstream in(dir + "/stats.json");
   const nlohmann::json stats = nlohmann::json::parse(in);

@@ -1,12 +1,15 @@
 #include "headless/OffscreenRenderer.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/IvShadowInit.h"
+#include "nodes/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
 #include "scene/SceneLoader.h"
 #include "scene/ViewSetup.h"
 #include "tests/support/TestSupport.h"
 
 #include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
@@ -18,7 +21,8 @@ namespace ivshadow {
 namespace {
 
 // Every scene of the library: it loads without a message from Coin, renders, shows
-// something, and builds its deep shadow map once with the layers its casters need.
+// something, builds its deep shadow map once with the layers its casters need, and with the
+// RAYS method builds its casters' BVH and traces once.
 struct LibraryScene {
   const char* file;
   int minimumLayersOnSomeFace;  // the deepest stack of surfaces any face must hold
@@ -26,6 +30,31 @@ struct LibraryScene {
 };
 
 class SceneLibrary : public ::testing::TestWithParam<LibraryScene> {};
+
+void setMethod(SoNode* root, int method) {
+  SoSearchAction search;
+  search.setType(SoDeepShadowLight::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.apply(root);
+  for (int i = 0; i < search.getPaths().getLength(); ++i)
+    static_cast<SoDeepShadowLight*>(search.getPaths()[i]->getTail())->method = method;
+}
+
+// Two frames without a message from Coin, and a picture that is not mostly black.
+void renderTwiceQuietly(OffscreenRenderer& renderer, SoNode* root) {
+  {
+    CoinMessageCapture capture;
+    renderer.render(root);
+    renderer.render(root);
+    for (const auto& message : capture.messages()) ADD_FAILURE() << message.raw;
+  }
+  const Image image = renderer.read();
+  int lit = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      lit += image.pixel(x, y)[0] + image.pixel(x, y)[1] + image.pixel(x, y)[2] > 30 ? 1 : 0;
+  EXPECT_GT(lit, image.width() * image.height() / 5) << "mostly black";
+}
 
 TEST_P(SceneLibrary, RendersWithItsShadows) {
   const LibraryScene& scene = GetParam();
@@ -37,26 +66,25 @@ TEST_P(SceneLibrary, RendersWithItsShadows) {
   LoadedScene loaded = loadScene(test::scenesDir() + "/" + scene.file);
   EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
   const ViewSetup view = ViewSetup::prepare(loaded.root.get(), SbViewportRegion(kWidth, kHeight));
-  {
-    CoinMessageCapture capture;
-    renderer->render(view.root.get());
-    renderer->render(view.root.get());
-    for (const auto& message : capture.messages()) ADD_FAILURE() << message.raw;
-  }
-  const Image image = renderer->read();
-  int lit = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x)
-      lit += image.pixel(x, y)[0] + image.pixel(x, y)[1] + image.pixel(x, y)[2] > 30 ? 1 : 0;
-  EXPECT_GT(lit, kWidth * kHeight / 5) << "mostly black";
 
-  const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
+  setMethod(view.root.get(), SoDeepShadowLight::MAP);
+  renderTwiceQuietly(*renderer, view.root.get());
+  DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
   ASSERT_EQ(stats.lights.size(), 1u);
   EXPECT_EQ(stats.rebuilds, 1) << "two frames of an unchanged scene build the map once";
   const auto& faces = stats.lights[0].layersUsed;
   EXPECT_GE(*std::max_element(faces.begin(), faces.end()), scene.minimumLayersOnSomeFace);
   if (scene.allSixFaces)
     for (int used : faces) EXPECT_GE(used, 2) << "a panel and a wall on every face";
+
+  setMethod(view.root.get(), SoDeepShadowLight::RAYS);
+  renderTwiceQuietly(*renderer, view.root.get());
+  stats = collectDeepShadowStatistics(view.root.get());
+  ASSERT_EQ(stats.lights.size(), 1u);
+  EXPECT_EQ(stats.lights[0].method, "RAYS");
+  EXPECT_EQ(stats.bvhBuilds, 1);
+  EXPECT_EQ(stats.rayFrames, 1) << "two frames of an unchanged scene trace once";
+  EXPECT_GT(stats.raysTraced, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -11,6 +11,8 @@
 #include <Inventor/SoInput.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -51,7 +53,8 @@ std::string ShadowScene::text() const {
      << rotationAngle << " }\n";
   for (int i = 0; i < lightCount; ++i)
     iv << "    DEF Lamp" << (i > 0 ? std::to_string(i) : std::string()) << " DeepShadowLight { "
-       << "location 0 0 1 intensity " << 1.0 / lightCount << ' ' << lightFields << " }\n";
+       << "location 0 0 1 intensity " << 1.0 / lightCount << " method " << method << ' '
+       << lightFields << " }\n";
   iv << "    DEF Floor Separator {\n      " << floorNodes << "\n"
      << "      Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
      << "      Coordinate3 { point [\n";
@@ -109,6 +112,34 @@ Expectation ShadowPicture::operator()(int px, int py) const {
   e.checked = true;
   for (int c = 0; c < 3; ++c) e.rgb[std::size_t(c)] = lambert * light[std::size_t(c)];
   return e;
+}
+
+Filter checkerboardFilter() {
+  Filter checker = kRedGlass;
+  checker.diffuse = {1.0, 1.0, 1.0};
+  checker.transparency = 0.0;
+  checker.nodes =
+      "Complexity { textureQuality 0.1 } "
+      "Texture2 { image 2 2 2 0xFFFF 0xFF00 0xFF00 0xFFFF model MODULATE }";
+  return checker;
+}
+
+void expectCheckerboardShadow(const Image& image, double tolerance) {
+  struct Probe {
+    double x, y;
+    bool lit;
+  };
+  for (const Probe& p :
+       {Probe{0.45, 0.15, false}, Probe{-0.45, -0.15, false}, Probe{0.45, -0.15, true},
+        Probe{-0.45, 0.15, true}, Probe{0.15, 0.45, false}, Probe{-0.15, 0.45, true}}) {
+    const int px = int(std::floor((p.x + 1.2) * 100.0));
+    const int py = int(std::floor((1.2 - p.y) * 100.0));
+    const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
+    const double expected = p.lit ? 255.0 / std::sqrt(1.0 + x * x + y * y) : 0.0;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(image.pixel(px, py)[c], expected, tolerance)
+          << "floor point (" << p.x << ", " << p.y << ") channel " << c;
+  }
 }
 
 SoSeparator* readIv(const std::string& text) {

@@ -25,6 +25,17 @@ struct Filter {
 
 enum class ColourModel { Monochrome, Saturate, Power };
 
+// The filters most tests use: red glass half-way to the light, green glass nearer the floor.
+inline const Filter kRedGlass{0.3, 0.5, {1.0, 0.0, 0.0}, 0.5, "", ""};
+inline const Filter kGreenGlass{0.4, 0.25, {0.0, 1.0, 0.0}, 0.5, "", ""};
+
+// A white, opaque glass with a luminance-alpha 2 x 2 texture (rows bottom-up: opaque
+// bottom-left and top-right texels), sampled without filtering (texture quality 0.1).
+Filter checkerboardFilter();
+// Checks floor points around the seen checkerboard glass whose light passes each quadrant:
+// (x, y) on the floor maps to (x, y) / 2 on the glass; lit ones get Lambert's value.
+void expectCheckerboardShadow(const Image& image, double tolerance);
+
 // Fraction of light per channel passing a surface of colour c and opacity a (seeds/000):
 // eq. 5.1 (1 - a), eq. 5.3 (1 - a) clamp(1 - a + c, 0, 1), eq. 5.2 (1 - a)^(2 - c).
 std::array<double, 3> transmittance(const Filter& filter, ColourModel model);
@@ -38,8 +49,9 @@ std::array<double, 3> transmittance(const Filter& filter, ColourModel model);
 struct ShadowScene {
   static constexpr int kSize = 240;
   std::vector<Filter> filters;
-  std::string lightFields;  // extra fields of the DeepShadowLight, e.g. "maxLayers 1"
-  std::string floorNodes;   // Inventor nodes placed before the floor's mesh
+  std::string method = "MAP";  // the lights' method: these scenes test the map unless told
+  std::string lightFields;     // extra fields of the DeepShadowLight, e.g. "maxLayers 1"
+  std::string floorNodes;      // Inventor nodes placed before the floor's mesh
   std::array<double, 3> rotationAxis{0.0, 0.0, 1.0};
   double rotationAngle = 0.0;
   int floorCells = 1;  // quads per side of the floor mesh

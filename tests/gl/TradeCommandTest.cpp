@@ -49,8 +49,8 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
     ASSERT_EQ(fields.size(), header.size()) << line;
     rows[fields[0]] = fields;
   }
-  // Two baselines and 2 x 2 settings.
-  ASSERT_EQ(rows.size(), 6u);
+  // Two baselines, 2 x 2 map settings and the traced one.
+  ASSERT_EQ(rows.size(), 7u);
   const auto value = [&](const std::string& row, const std::string& column) {
     const auto at = std::find(header.begin(), header.end(), column) - header.begin();
     return std::stod(rows.at(row).at(std::size_t(at)));
@@ -60,6 +60,9 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
   // layer, and any shadows are closer than none.
   EXPECT_LT(value("512 4L float", "rmse"), value("32 1L float", "rmse"));
   EXPECT_LT(value("32 1L float", "rmse"), value("no shadows (plain Coin)", "rmse"));
+  // Exact shadows: no map setting comes closer (what is left is the camera view's error).
+  EXPECT_LE(value("rays (exact, CPU)", "rmse"), value("512 4L float", "rmse"));
+  EXPECT_GT(value("rays (exact, CPU)", "map_bytes"), 0.0);  // the BVH
   EXPECT_GT(value("512 4L float", "build_ms"), 0.0);
   EXPECT_GT(value("512 4L float", "map_bytes"), value("32 1L float", "map_bytes"));
   EXPECT_EQ(readPng(dir + "/trade.png").width(), 1000);

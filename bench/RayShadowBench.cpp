@@ -1,0 +1,114 @@
+// MAP against RAYS (SoDeepShadowLight::method) on the headless renderer: frame time with a
+// static scene and with the light moving every frame, at 1k / 100k / 1M triangles and
+// 640 x 480 / 1920 x 1080, and the casters' Embree build against triangles. Run:
+// build/bin/ivshadow_bench --benchmark_filter='MethodFrame|BvhBuild'. Times are wall clock,
+// GPU finished.
+#include "BenchScenes.h"
+#include "headless/OffscreenRenderer.h"
+#include "nodes/DeepShadowStatistics.h"
+#include "nodes/IvShadowInit.h"
+#include "nodes/SoDeepShadowLight.h"
+
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+
+namespace {
+
+using ivshadow::bench::Shadows;
+
+struct Scene {
+  std::unique_ptr<ivshadow::OffscreenRenderer> renderer;
+  SoSeparator* root = nullptr;
+  SoDeepShadowLight* light = nullptr;
+
+  Scene(benchmark::State& state, int triangles, int width, int height, int method) {
+    ivshadow::init();
+    std::string error;
+    renderer = ivshadow::OffscreenRenderer::create(width, height, error);
+    if (!renderer) {
+      state.SkipWithError(error.c_str());
+      return;
+    }
+    root = ivshadow::bench::sphereField(triangles, true, Shadows::DeepShadowGroup, width, height);
+    light = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
+    light->method = method;
+    renderer->render(root);  // programs, caches, the first map or BVH and trace
+  }
+  ~Scene() {
+    renderer.reset();
+    if (root) root->unref();
+  }
+};
+
+// Args: triangles, width, height, method (MAP 1 / RAYS 2), moving (0 / 1). A moving light
+// rebuilds the map (MAP) or traces again (RAYS) in every frame; a static one reuses them.
+void MethodFrame(benchmark::State& state) {
+  Scene s(state, int(state.range(0)), int(state.range(1)), int(state.range(2)),
+          int(state.range(3)));
+  if (!s.renderer) return;
+  const bool moving = state.range(4) != 0;
+  const SbVec3f start = s.light->location.getValue();
+  int frame = 0;
+  for (auto _ : state) {
+    if (moving) s.light->location.setValue(start + SbVec3f(0.05f * float(++frame % 7), 0.0f, 0.0f));
+    state.SetIterationTime(s.renderer->render(s.root).wallMs * 1e-3);
+  }
+  const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(s.root);
+  state.counters["triangles"] = stats.casterTriangles;
+  state.counters["map_MB"] = stats.lights.empty() ? 0.0 : double(stats.lights[0].bytes) / 1048576.0;
+  state.counters["bvh_MB"] = double(stats.bvhBytes) / 1048576.0;
+  if (state.range(3) == SoDeepShadowLight::RAYS) {
+    state.counters["capture_ms"] = stats.rayCaptureMs;  // the last trace's parts
+    state.counters["trace_ms"] = stats.rayTraceMs;
+    state.counters["layers"] = stats.rayLayers;
+  }
+  state.SetLabel(std::string(state.range(3) == SoDeepShadowLight::RAYS ? "RAYS" : "MAP") +
+                 (moving ? " moving light" : " static"));
+}
+
+// Arg: triangles. Changing a caster's material rebuilds the casters and their Embree scene;
+// the time is the BVH build alone.
+void BvhBuild(benchmark::State& state) {
+  Scene s(state, int(state.range(0)), 320, 240, SoDeepShadowLight::RAYS);
+  if (!s.renderer) return;
+  SoSearchAction search;
+  search.setType(SoMaterial::getClassTypeId());
+  search.apply(s.root);
+  auto* material = static_cast<SoMaterial*>(search.getPath()->getTail());
+  for (auto _ : state) {
+    material->shininess.touch();
+    s.renderer->render(s.root);
+    state.SetIterationTime(ivshadow::collectDeepShadowStatistics(s.root).bvhBuildMs * 1e-3);
+  }
+  const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(s.root);
+  state.counters["triangles"] = stats.casterTriangles;
+  state.counters["bvh_MB"] = double(stats.bvhBytes) / 1048576.0;
+  state.counters["bytes_per_triangle"] =
+      stats.casterTriangles > 0 ? double(stats.bvhBytes) / stats.casterTriangles : 0.0;
+}
+
+void frames(benchmark::internal::Benchmark* b) {
+  for (int triangles : {1000, 100000, 1000000})
+    for (const auto& size : {std::pair<int, int>{640, 480}, std::pair<int, int>{1920, 1080}})
+      for (int method : {int(SoDeepShadowLight::MAP), int(SoDeepShadowLight::RAYS)})
+        for (int moving : {0, 1}) b->Args({triangles, size.first, size.second, method, moving});
+  b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+}
+
+BENCHMARK(MethodFrame)->Apply(frames);
+BENCHMARK(BvhBuild)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+}  // namespace
