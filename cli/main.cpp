@@ -5,6 +5,7 @@
 #include "cli/VariantsCommand.h"
 #include "nodes/IvShadowInit.h"
 #include "viewer/ViewerApplication.h"
+#include "viewer/ViewerCommandLine.h"
 
 #include <CLI/CLI.hpp>
 
@@ -120,10 +121,7 @@ int main(int argc, char** argv) {
 
   ivshadow::ViewerOptions view;
   CLI::App* viewCommand = app.add_subcommand("view", "Open an .iv file in the viewer");
-  viewCommand->add_option("scene", view.scene, "Open Inventor scene file (.iv)");
-  viewCommand->add_option("--screenshot", view.screenshot,
-                          "Save the first frame to this PNG and quit");
-  viewCommand->add_option("--size", view.size, "Viewer area WIDTHxHEIGHT")->capture_default_str();
+  ivshadow::addViewerOptions(*viewCommand, view);
 
   try {
     app.parse(argc, argv);

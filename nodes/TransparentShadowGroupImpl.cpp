@@ -343,6 +343,13 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   if (!castersValid_ && deepShadows_) {
     casters_ = extractShadowCasters(owner_);
     castersValid_ = true;
+    // Neither method can cast a shadow from lines or points: say so once per shape.
+    static std::set<std::string> warnedShapes;
+    for (const std::string& shape : casters_.withoutTriangles)
+      if (warnedShapes.insert(shape).second)
+        SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                  "%s is drawn with lines or points, which cast no shadow",
+                                  shape.c_str());
     ++castersVersion_;
   }
   if (context.castersVersion != castersVersion_) {

@@ -303,11 +303,7 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
 
 void notTriangles(SoCallbackAction* action, Extraction& data) {
   const SoNode* node = action->getCurPathTail();
-  if (data.skipped.count(node)) return;
-  std::string name = node->getTypeId().getName().getString();
-  if (node->getName().getLength() > 0)
-    name += std::string(" '") + node->getName().getString() + "'";
-  data.skipped.emplace(node, name);
+  if (data.skipped.count(node) == 0) data.skipped.emplace(node, describeNode(node));
 }
 
 void lineSegment(void* user, SoCallbackAction* action, const SoPrimitiveVertex*,

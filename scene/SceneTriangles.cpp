@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <map>
+#include <set>
+#include <string>
 #include <tuple>
 
 namespace ivshadow {
@@ -18,12 +20,20 @@ namespace {
 
 struct Collector {
   SceneTriangles result;
+  std::set<const SoNode*> withoutTriangles;
   std::map<int, std::pair<std::vector<TriangleVertex>, std::vector<std::uint32_t>>> byTexture;
   TextureCache textures;
   std::uint32_t shape = 0;
 };
 
 }  // namespace
+
+std::string describeNode(const SoNode* node) {
+  std::string name = node->getTypeId().getName().getString();
+  if (node->getName().getLength() > 0)
+    name += std::string(" '") + node->getName().getString() + "'";
+  return name;
+}
 
 bool isGrey(float r, float g, float b) {
   constexpr float kStep = 1.0f / 255.0f;
@@ -122,6 +132,22 @@ void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   }
 }
 
+void notTriangles(Collector& collector, SoCallbackAction* action) {
+  if (!(SoShadowStyleElement::get(action->getState()) & SoShadowStyleElement::CASTS_SHADOW)) return;
+  const SoNode* node = action->getCurPathTail();
+  if (!collector.withoutTriangles.insert(node).second) return;
+  collector.result.withoutTriangles.push_back(describeNode(node));
+}
+
+void lineSegment(void* data, SoCallbackAction* action, const SoPrimitiveVertex*,
+                 const SoPrimitiveVertex*) {
+  notTriangles(*static_cast<Collector*>(data), action);
+}
+
+void point(void* data, SoCallbackAction* action, const SoPrimitiveVertex*) {
+  notTriangles(*static_cast<Collector*>(data), action);
+}
+
 SoCallbackAction::Response nextShape(void* data, SoCallbackAction*, const SoNode*) {
   ++static_cast<Collector*>(data)->shape;
   return SoCallbackAction::CONTINUE;
@@ -136,6 +162,8 @@ SceneTriangles extractShadowCasters(SoNode* root) {
   action.addPreCallback(root->getTypeId(), startGroup, nullptr);
   action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
   action.addTriangleCallback(SoShape::getClassTypeId(), triangle, &collector);
+  action.addLineSegmentCallback(SoShape::getClassTypeId(), lineSegment, &collector);
+  action.addPointCallback(SoShape::getClassTypeId(), point, &collector);
   action.apply(root);
 
   SceneTriangles& result = collector.result;

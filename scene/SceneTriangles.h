@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -54,6 +55,9 @@ struct SceneTriangles {
   SbBox3f bounds;
   bool hasTransparent = false;          // some triangle lets light through
   bool hasColouredTransparent = false;  // ... and is not grey
+  // Shapes that should cast but that Coin turns into lines or points (SoLineSet, SoPointSet,
+  // ...): they cast nothing. Type and DEF name of each, e.g. "LineSet 'Wire'".
+  std::vector<std::string> withoutTriangles;
 
   std::size_t triangleCount() const { return vertices.size() / 3; }
 };
@@ -62,6 +66,9 @@ struct SceneTriangles {
 // CASTS_SHADOW (the default inside a SoTransparentShadowGroup). Fully clear triangles are
 // kept; they cast nothing, which the map builder handles per fragment (texture alpha).
 SceneTriangles extractShadowCasters(SoNode* root);
+
+// A node as messages name it: its type and, when it has one, its DEF name ("LineSet 'Wire'").
+std::string describeNode(const SoNode* node);
 
 // Whether a colour is grey to within one 8-bit step (such a tint would not show).
 bool isGrey(float r, float g, float b);

@@ -1,24 +1,97 @@
 #include "viewer/ViewerApplication.h"
 
+#include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "nodes/IvShadowInit.h"
+#include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
+#include "viewer/MapInspector.h"
+#include "viewer/ShadowPanel.h"
 #include "viewer/ViewerWindow.h"
 
 #include <Inventor/Qt/SoQt.h>
 
 #include <QApplication>
+#include <QImage>
+#include <QPixmap>
+#include <QScreen>
+#include <QStringList>
 #include <QTimer>
 
 #include <cstdlib>
 #include <iostream>
+#include <vector>
 
 namespace ivshadow {
+namespace {
+
+struct InspectRequest {
+  QString light;
+  int face = -1;
+  int layer = 0;
+  bool visibility = false;
+};
+
+// "LIGHT:FACE:LAYER[:visibility]", FACE one of +x -x +y -y +z -z, LAYER from 1.
+InspectRequest parseInspect(const std::string& text) {
+  const QStringList parts = QString::fromStdString(text).split(':');
+  const QStringList faces = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  InspectRequest request;
+  bool ok =
+      parts.size() == 3 || (parts.size() == 4 && (parts[3] == "visibility" || parts[3] == "depth"));
+  if (ok) {
+    request.light = parts[0];
+    request.face = faces.indexOf(parts[1]);
+    request.layer = parts[2].toInt(&ok);
+    request.visibility = parts.size() == 4 && parts[3] == "visibility";
+  }
+  if (!ok || request.light.isEmpty() || request.face < 0 || request.layer < 1 ||
+      request.layer > 64) {
+    throw InputError("--inspect '" + text +
+                     "': error: expected LIGHT:FACE:LAYER[:visibility|:depth] with FACE one of +x "
+                     "-x +y -y +z -z and LAYER from 1 to 64, e.g. Lamp:-z:1");
+  }
+  return request;
+}
+
+// Everything a scripted run can get wrong in its options, found before any window opens or
+// any file is written.
+std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) {
+  if (options.scene.empty() &&
+      (options.addLight || !options.assignments.empty() || !options.saveScene.empty())) {
+    throw InputError("ivshadow: error: --add-light, --set and --save-scene need a scene file");
+  }
+  if ((!options.figures.empty() || !options.windowShot.empty() || !options.inspectOut.empty()) &&
+      options.screenshot.empty()) {
+    throw InputError(
+        "ivshadow: error: --figures, --window-shot and --inspect-out need --screenshot");
+  }
+  if (!options.inspectOut.empty() && options.inspect.empty()) {
+    throw InputError("ivshadow: error: --inspect-out needs --inspect");
+  }
+  if (!options.inspect.empty()) parseInspect(options.inspect);
+  if (!options.screenshot.empty()) AtomicFile::checkWritable(options.screenshot, "the screenshot");
+  if (!options.saveScene.empty()) AtomicFile::checkWritable(options.saveScene, "the scene");
+  if (!options.figures.empty()) AtomicFile::checkWritable(options.figures, "the figures");
+  if (!options.windowShot.empty()) AtomicFile::checkWritable(options.windowShot, "the window");
+  if (!options.inspectOut.empty()) {
+    AtomicFile::checkWritable(options.inspectOut, "the inspector's picture");
+  }
+  std::vector<FieldAssignment> assignments;
+  for (const std::string& text : options.assignments) {
+    assignments.push_back(FieldAssignment::parse(text));
+  }
+  return assignments;
+}
+
+}  // namespace
 
 int runViewer(const ViewerOptions& options, const char* programName) {
   ImageSize size;
+  std::vector<FieldAssignment> assignments;
   try {
     size = ImageSize::parse(options.size, "--size");
+    assignments = checkScriptedOptions(options);
   } catch (const InputError& error) {
     std::cerr << error.what() << '\n';
     return 2;
@@ -37,13 +110,48 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   SoQt::init(&window);
   init();
   window.createViewer();
-  const bool scripted = !options.screenshot.empty();
+  const bool scripted = options.scripted();
   window.setInteractive(!scripted);
+  if (options.lightDragger) window.setLightDraggerShown(true);
   window.setViewerSize(size.width, size.height);
 
   if (!options.scene.empty()) {
     const std::string error = window.openScene(QString::fromStdString(options.scene));
     if (scripted && !error.empty()) return 2;
+  }
+  // Scripted edits go through what the user would click: the panel's button and editors.
+  try {
+    if (options.addLight) {
+      const std::string error = window.addDeepShadowLight();
+      if (!error.empty()) throw InputError(error);
+    }
+    for (const FieldAssignment& assignment : assignments) window.panel().assign(assignment);
+  } catch (const InputError& error) {
+    std::cerr << error.what() << '\n';
+    if (scripted) return 2;
+  }
+  // Written once everything else has succeeded, so that a failed run leaves no file.
+  const auto saveScene = [&]() -> int {
+    if (options.saveScene.empty()) return 0;
+    const std::string error = window.saveSceneAs(QString::fromStdString(options.saveScene));
+    if (!error.empty()) {
+      std::cerr << error << '\n';
+      return 2;
+    }
+    std::cout << "wrote " << options.saveScene << '\n';
+    return 0;
+  };
+  if (scripted && options.screenshot.empty()) return saveScene();
+
+  const bool inspecting = !options.inspect.empty();
+  if (inspecting) {
+    const InspectRequest request = parseInspect(options.inspect);
+    MapInspector& inspector = window.inspector();
+    inspector.selectFace(request.face);
+    inspector.selectLayer(request.layer);
+    inspector.setShowVisibility(request.visibility);
+    inspector.selectLight(request.light);
+    inspector.show();
   }
   window.show();
   window.settleDrawable();
@@ -55,11 +163,23 @@ int runViewer(const ViewerOptions& options, const char* programName) {
     auto* waitForFirstFrame = new QTimer(&window);
     QObject::connect(waitForFirstFrame, &QTimer::timeout, &window, [&, waitForFirstFrame] {
       if (window.framesDrawn() < 1) return;
+      // The inspector reads the map during a frame after the one that built it.
+      if (inspecting && !window.inspector().upToDate()) return;
+      if (inspecting && window.inspector().picture().isNull()) {
+        // A light or layer that is not there: bad input, and no output files.
+        waitForFirstFrame->stop();
+        std::cerr << "ivshadow: error: --inspect '" << options.inspect
+                  << "': " << window.inspector().status().toStdString() << '\n';
+        status = 2;
+        qApp->quit();
+        return;
+      }
       waitForFirstFrame->stop();
       window.saveScreenshot(QString::fromStdString(options.screenshot),
                             [&status](const std::string& error) {
                               if (!error.empty()) std::cerr << error << '\n';
                               status = error.empty() ? 0 : 1;
+                              // Quit after the frame is complete, so its figures are known.
                               QTimer::singleShot(0, qApp, [] { qApp->quit(); });
                             });
     });
@@ -71,6 +191,42 @@ int runViewer(const ViewerOptions& options, const char* programName) {
     });
     application.exec();
     if (status == 0) std::cout << "wrote " << options.screenshot << '\n';
+    if (status == 0 && inspecting) {
+      MapInspector& inspector = window.inspector();
+      std::cout << "inspector: " << inspector.status().toStdString() << '\n';
+      if (!options.inspectOut.empty()) {
+        AtomicFile file(options.inspectOut);
+        if (inspector.picture().save(QString::fromStdString(file.temporaryPath()), "PNG")) {
+          file.commit();
+          std::cout << "wrote " << options.inspectOut << '\n';
+        } else {
+          std::cerr << options.inspectOut << ": error: cannot write the inspector's picture\n";
+          status = 1;
+        }
+      }
+    }
+    if (status == 0) status = saveScene();
+    if (status == 0 && !options.figures.empty()) {
+      try {
+        writeTextFileAtomically(options.figures, window.figures().json() + "\n");
+        std::cout << "wrote " << options.figures << '\n';
+      } catch (const std::exception& error) {
+        std::cerr << error.what() << '\n';
+        status = 1;
+      }
+    }
+    if (status == 0 && !options.windowShot.empty()) {
+      // Read back from the X server: the GL area as last swapped, and the widgets around it.
+      const QImage shot = window.screen()->grabWindow(window.winId()).toImage();
+      AtomicFile file(options.windowShot);
+      if (shot.save(QString::fromStdString(file.temporaryPath()), "PNG")) {
+        file.commit();
+        std::cout << "wrote " << options.windowShot << '\n';
+      } else {
+        std::cerr << options.windowShot << ": error: cannot write the window picture\n";
+        status = 1;
+      }
+    }
     return status;
   }
   return application.exec();

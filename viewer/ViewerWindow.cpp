@@ -1,25 +1,35 @@
 #include "viewer/ViewerWindow.h"
 
-#include "scene/ViewSetup.h"
-
 #include "image/AtomicFile.h"
 #include "image/PngFile.h"
+#include "nodes/SoDeepShadowLight.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
+#include "scene/ViewSetup.h"
+#include "viewer/MapInspector.h"
+#include "viewer/SceneWriter.h"
+#include "viewer/ShadowPanel.h"
 #include "viewer/TimedExaminerViewer.h"
+#include "viewer/WrapInShadowGroup.h"
 
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <QAction>
 #include <QApplication>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGLWidget>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QShortcut>
 #include <QStatusBar>
 #include <QTimer>
+#include <QUrl>
 
 #include <iostream>
 
@@ -33,10 +43,29 @@ ViewerWindow::ViewerWindow() {
   // file settle before it is read again.
   connect(&watcher_, &QFileSystemWatcher::fileChanged, this,
           [this] { QTimer::singleShot(250, this, [this] { reload(); }); });
+  panel_ = new ShadowPanel(this);
+  addDockWidget(Qt::RightDockWidgetArea, panel_);
+  panel_->onAddLightRequested([this] {
+    const std::string error = addDeepShadowLight();
+    if (!error.empty()) reportError(error);
+  });
+  panel_->onNodeSelected([this](SoNode* node) { nodeSelected(node); });
+  inspector_ = new MapInspector(this);
+  addDockWidget(Qt::RightDockWidgetArea, inspector_);
+  inspector_->hide();
+  // Asked for from inside a frame: the redraw is scheduled once that frame is finished.
+  inspector_->onRedrawNeeded([this] {
+    QTimer::singleShot(0, this, [this] {
+      if (viewer_) viewer_->scheduleRedraw();
+    });
+  });
+  setAcceptDrops(true);
   buildMenus();
 }
 
 ViewerWindow::~ViewerWindow() {
+  dragger_.detach();
+  inspector_->setScene(nullptr);
   delete viewer_;
 }
 
@@ -44,22 +73,55 @@ void ViewerWindow::createViewer() {
   auto* area = new QWidget(this);
   setCentralWidget(area);
   viewer_ = new TimedExaminerViewer(area);
-  viewer_->onFrameTimed(
-      [this](double ms) { frameLabel_->setText(QString("frame %1 ms").arg(ms, 0, 'f', 1)); });
+  viewer_->onFrameTimed([this](double wallMs, double gpuMs) { frameDrawn(wallMs, gpuMs); });
 }
 
 void ViewerWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu("&File");
   file->addAction(
       "&Open...", this, [this] { chooseAndOpen(); }, QKeySequence::Open);
+  recent_.attach(file->addMenu("Open &Recent"), [this](const QString& path) { openScene(path); });
   file->addAction(
       "&Reload", this, [this] { reload(); }, QKeySequence(Qt::Key_F5));
+  file->addSeparator();
+  file->addAction(
+      "Save Scene &As...", this, [this] { chooseAndSaveScene(); },
+      QKeySequence(Qt::CTRL | Qt::Key_S));
   file->addAction(
       "Save &Screenshot...", this, [this] { chooseAndSaveScreenshot(); },
       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
   file->addSeparator();
   file->addAction(
       "&Quit", this, [this] { close(); }, QKeySequence::Quit);
+
+  QMenu* view = menuBar()->addMenu("&View");
+  view->addAction(panel_->toggleViewAction());
+  // The keys of seeds/000's demo: D shows the map, F1-F6 pick the face, 1-9 the layer.
+  QAction* inspect = inspector_->toggleViewAction();
+  inspect->setShortcut(QKeySequence(Qt::Key_D));
+  view->addAction(inspect);
+  for (int face = 0; face < 6; ++face) {
+    auto* key = new QShortcut(QKeySequence(Qt::Key_F1 + face), this);
+    connect(key, &QShortcut::activated, this, [this, face] { inspector_->selectFace(face); });
+  }
+  for (int layer = 1; layer <= 9; ++layer) {
+    auto* key = new QShortcut(QKeySequence(Qt::Key_0 + layer), this);
+    connect(key, &QShortcut::activated, this, [this, layer] { inspector_->selectLayer(layer); });
+  }
+  draggerAction_ = view->addAction("Light &Dragger");
+  draggerAction_->setCheckable(true);
+  draggerAction_->setChecked(true);
+  connect(draggerAction_, &QAction::toggled, this, [this](bool on) { showDragger(on); });
+}
+
+void ViewerWindow::setInteractive(bool interactive) {
+  interactive_ = interactive;
+  // Scripted screenshots show the scene only, as `ivshadow render` draws it.
+  draggerAction_->setChecked(interactive);
+}
+
+void ViewerWindow::setLightDraggerShown(bool shown) {
+  draggerAction_->setChecked(shown);
 }
 
 void ViewerWindow::setViewerSize(int width, int height) {
@@ -87,6 +149,8 @@ std::string ViewerWindow::openScene(const QString& path) {
     if (sameFile && viewer_->getCamera()) {
       previousCamera = CoinRef<SoCamera>(static_cast<SoCamera*>(viewer_->getCamera()->copy()));
     }
+    dragger_.detach();
+    inspector_->setScene(nullptr);
     viewer_->setSceneGraph(loaded.root.get());
     // As in `ivshadow render`: the headlight only for scenes without lights of their own, so
     // the viewer shows what a headless render of the file shows.
@@ -99,6 +163,9 @@ std::string ViewerWindow::openScene(const QString& path) {
     if (!path_.isEmpty()) watcher_.removePath(path_);
     path_ = path;
     watcher_.addPath(path_);
+    recent_.add(path_);
+    panel_->setScene(scene_.get(), path_.toStdString());
+    inspector_->setScene(scene_.get());
     setWindowTitle(QFileInfo(path_).fileName() + " - ivshadow viewer");
     showMessage(loaded.warnings.empty() ? "Loaded " + path_
                                         : QString::fromStdString(loaded.warnings.front()));
@@ -134,6 +201,34 @@ void ViewerWindow::saveScreenshot(const QString& path,
   });
 }
 
+std::string ViewerWindow::saveSceneAs(const QString& path) {
+  if (!scene_) return "ivshadow: error: no scene to save";
+  try {
+    const LightDragger::Hidden noDragger(dragger_);
+    const MapInspector::Hidden noProbe(*inspector_);
+    writeScene(scene_.get(), path.toStdString());
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  recent_.add(path);
+  return {};
+}
+
+std::string ViewerWindow::addDeepShadowLight() {
+  if (!scene_) return "ivshadow: error: no scene to add a deep shadow light to";
+  dragger_.detach();
+  SoDeepShadowLight* light =
+      wrapInShadowGroup(scene_.get(), viewer_->getCamera(), viewer_->getViewportRegion());
+  // The scene has a light of its own now; like `ivshadow render` of the saved file, the
+  // viewer drops its headlight.
+  viewer_->setHeadlight(!ViewSetup::hasActiveLight(scene_.get()));
+  panel_->setScene(scene_.get(), path_.toStdString());
+  panel_->selectNode(light);
+  inspector_->setScene(scene_.get());
+  showMessage("Added a deep shadow light; File > Save Scene As keeps it");
+  return {};
+}
+
 void ViewerWindow::settleDrawable() {
   // Push the final geometry to the X server, then swap once: Mesa's software GLX path reads
   // the drawable's size at the first make-current and again only after a swap.
@@ -149,10 +244,68 @@ int ViewerWindow::framesDrawn() const {
   return viewer_ ? viewer_->framesDrawn() : 0;
 }
 
+QString ViewerWindow::droppedScene(const QMimeData* data) {
+  if (data == nullptr || !data->hasUrls()) return {};
+  for (const QUrl& url : data->urls()) {
+    if (!url.isLocalFile()) continue;
+    const QString suffix = QFileInfo(url.toLocalFile()).suffix().toLower();
+    if (suffix == "iv" || suffix == "wrl") return url.toLocalFile();
+  }
+  return {};
+}
+
+void ViewerWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (!droppedScene(event->mimeData()).isEmpty()) event->acceptProposedAction();
+}
+
+void ViewerWindow::dropEvent(QDropEvent* event) {
+  const QString path = droppedScene(event->mimeData());
+  if (path.isEmpty()) return;
+  event->acceptProposedAction();
+  openScene(path);
+}
+
+void ViewerWindow::frameDrawn(double wallMs, double gpuMs) {
+  figures_ = LiveFigures::collect(scene_.get(), wallMs, gpuMs, figures_);
+  frameLabel_->setText(QString("frame %1 ms").arg(wallMs, 0, 'f', 1));
+  panel_->setFigures(figures_.text());
+  inspector_->frameDrawn(figures_.shadows.rebuilds);
+}
+
+void ViewerWindow::nodeSelected(SoNode* node) {
+  if (node == nullptr || !node->isOfType(SoDeepShadowLight::getClassTypeId())) return;
+  if (draggerAction_ != nullptr && draggerAction_->isChecked()) {
+    dragger_.attach(scene_.get(), static_cast<SoDeepShadowLight*>(node));
+  }
+}
+
+void ViewerWindow::showDragger(bool show) {
+  if (!show) {
+    dragger_.detach();
+    return;
+  }
+  SoNode* node = panel_->selectedNode();
+  if (scene_ && node != nullptr && node->isOfType(SoDeepShadowLight::getClassTypeId())) {
+    dragger_.attach(scene_.get(), static_cast<SoDeepShadowLight*>(node));
+  }
+}
+
 void ViewerWindow::chooseAndOpen() {
   const QString path = QFileDialog::getOpenFileName(this, "Open scene", QFileInfo(path_).path(),
                                                     "Open Inventor (*.iv *.wrl);;All files (*)");
   if (!path.isEmpty()) openScene(path);
+}
+
+void ViewerWindow::chooseAndSaveScene() {
+  const QString path = QFileDialog::getSaveFileName(this, "Save scene as", QFileInfo(path_).path(),
+                                                    "Open Inventor (*.iv);;All files (*)");
+  if (path.isEmpty()) return;
+  const std::string error = saveSceneAs(path);
+  if (error.empty()) {
+    showMessage("Saved " + path);
+  } else {
+    reportError(error);
+  }
 }
 
 void ViewerWindow::chooseAndSaveScreenshot() {

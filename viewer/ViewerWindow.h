@@ -1,6 +1,9 @@
 #pragma once
 
 #include "scene/CoinRef.h"
+#include "viewer/LightDragger.h"
+#include "viewer/LiveFigures.h"
+#include "viewer/RecentFiles.h"
 
 #include <QFileSystemWatcher>
 #include <QMainWindow>
@@ -8,15 +11,25 @@
 
 #include <functional>
 
+class QAction;
+class QDragEnterEvent;
+class QDropEvent;
 class QLabel;
+class QMimeData;
+class SoNode;
 class SoSeparator;
 
 namespace ivshadow {
 
+class MapInspector;
+class ShadowPanel;
 class TimedExaminerViewer;
 
-// The viewer's main window: an examiner viewer with File ▸ Open, Reload, Save Screenshot,
-// reload when the file changes on disk, and a status line with the frame time.
+// The viewer's main window: an examiner viewer with File ▸ Open, Open Recent, Reload, Save
+// Scene As, Save Screenshot; .iv files dropped on the window open; the scene reloads when
+// its file changes on disk. The deep shadow panel (a dock) edits the shadow nodes' fields
+// live and shows the frame's figures; a dragger moves the selected deep shadow light; the
+// map inspector (D) shows any face and layer of a light's deep shadow map.
 class ViewerWindow : public QMainWindow {
  public:
   ViewerWindow();
@@ -31,23 +44,53 @@ class ViewerWindow : public QMainWindow {
   void reload();
   // Saves the next frame to `path`; `done` gets an empty string or the error.
   void saveScreenshot(const QString& path, std::function<void(const std::string&)> done);
+  // Writes the scene as loaded and edited (not the viewer's camera, headlight or dragger).
+  // Returns an empty string or the error.
+  std::string saveSceneAs(const QString& path);
+  // What the panel's button does: puts a scene without deep shadow nodes into a shadow group
+  // with a deep shadow light. Returns an empty string or why it cannot.
+  std::string addDeepShadowLight();
   int framesDrawn() const;
   // Call once after show(): makes Mesa's software GLX take the window's final size before
   // the first frame (docs/KNOWN_ISSUES.md) and draws that frame.
   void settleDrawable();
-  void setInteractive(bool interactive) { interactive_ = interactive; }
+  // Non-interactive (scripted) windows report errors on stderr and show no light dragger.
+  void setInteractive(bool interactive);
   void setViewerSize(int width, int height);
+  // Shows or hides the dragger on the selected deep shadow light (View ▸ Light Dragger).
+  void setLightDraggerShown(bool shown);
+
+  ShadowPanel& panel() { return *panel_; }
+  MapInspector& inspector() { return *inspector_; }
+  const LiveFigures& figures() const { return figures_; }
+
+  // The local .iv or .wrl file a drag carries, or an empty string.
+  static QString droppedScene(const QMimeData* data);
+
+ protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
   void buildMenus();
   void chooseAndOpen();
   void chooseAndSaveScreenshot();
+  void chooseAndSaveScene();
+  void frameDrawn(double wallMs, double gpuMs);
+  void nodeSelected(SoNode* node);
+  void showDragger(bool show);
   void showMessage(const QString& text);
   void reportError(const std::string& message);
 
   TimedExaminerViewer* viewer_ = nullptr;
+  ShadowPanel* panel_ = nullptr;
+  MapInspector* inspector_ = nullptr;
+  QAction* draggerAction_ = nullptr;
   QLabel* frameLabel_ = nullptr;
   QFileSystemWatcher watcher_;
+  RecentFiles recent_;
+  LightDragger dragger_;
+  LiveFigures figures_;
   QString path_;
   CoinRef<SoSeparator> scene_;
   bool interactive_ = true;

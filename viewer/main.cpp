@@ -1,4 +1,5 @@
 #include "viewer/ViewerApplication.h"
+#include "viewer/ViewerCommandLine.h"
 
 #include <CLI/CLI.hpp>
 
@@ -6,9 +7,7 @@ int main(int argc, char** argv) {
   CLI::App app{"ivshadow-viewer: view Open Inventor scenes with transparent shadows",
                "ivshadow-viewer"};
   ivshadow::ViewerOptions options;
-  app.add_option("scene", options.scene, "Open Inventor scene file (.iv)");
-  app.add_option("--screenshot", options.screenshot, "Save the first frame to this PNG and quit");
-  app.add_option("--size", options.size, "Viewer area WIDTHxHEIGHT")->capture_default_str();
+  ivshadow::addViewerOptions(app, options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -3,8 +3,10 @@
 #include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
+#include "nodes/IvShadowInit.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/SoDeepShadowLight.h"
+#include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/SoPath.h>
@@ -194,6 +196,50 @@ TEST(RayShadows, StaticFramesReuseTheTraceAMovedLightIsTracedAgainOnly) {
   EXPECT_EQ(stats.bvhBuilds, 2);  // a caster changed: its scene is built again
   EXPECT_EQ(stats.rayFrames, 3);
   root->unref();
+}
+
+TEST(RayShadows, LightsOfBothMethodsShareAGroup) {
+  // Two lights at one place, half the intensity each: one keeps a map, one traces. Their sum
+  // is the single light's analytic picture.
+  ShadowScene scene;
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.lightCount = 2;
+  std::string text = scene.text();
+  const std::string second = "DEF Lamp1 DeepShadowLight { location 0 0 1 intensity 0.5 method MAP";
+  ASSERT_NE(text.find(second), std::string::npos) << text;
+  text.replace(text.find(second), second.size(),
+               "DEF Lamp1 DeepShadowLight { location 0 0 1 intensity 0.5 method RAYS");
+  SoNode* root = nullptr;
+  const Image image = renderIv(text, ShadowScene::kSize, &root);
+  const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
+  root->unref();
+  ASSERT_EQ(stats.lights.size(), 2u);
+  EXPECT_EQ(stats.lights[0].method, "MAP");
+  EXPECT_EQ(stats.lights[1].method, "RAYS");
+  const std::string failure =
+      compareWithExpectation(image, ShadowPicture{&scene, ColourModel::Saturate}, kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST(RayShadows, LinesCastNothingAndAreNamedOnce) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass};
+  scene.floorNodes = "";
+  std::string text = scene.text();
+  // A wire between light and floor, in the group: neither method can cast from it.
+  text.insert(text.rfind("  }\n}"),
+              "    DEF Wire LineSet { vertexProperty VertexProperty { vertex [ -0.5 0 0.6, 0.5 0 "
+              "0.6 ] } numVertices 2 }\n");
+  init();  // Coin's initialisation installs its own handlers: capture after it
+  CoinMessageCapture capture;
+  SoNode* root = nullptr;
+  renderIv(text, ShadowScene::kSize, &root);
+  renderIv(text, ShadowScene::kSize);
+  root->unref();
+  std::size_t named = 0;
+  for (const auto& message : capture.messages())
+    if (message.raw.find("LineSet 'Wire'") != std::string::npos) ++named;
+  EXPECT_EQ(named, 1u);
 }
 
 std::string sceneFile(const std::string& name) {

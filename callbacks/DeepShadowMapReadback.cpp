@@ -1,0 +1,85 @@
+#include "callbacks/DeepShadowMapReadback.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+namespace {
+
+// The texture bound as a 2D array on the unit the program's sampler `name` reads.
+GLuint arrayOfSampler(GLint program, const std::string& name) {
+  const GLint location = glGetUniformLocation(GLuint(program), name.c_str());
+  if (location < 0) return 0;
+  GLint unit = 0;
+  glGetUniformiv(GLuint(program), location, &unit);
+  GLint active = 0;
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+  GLint texture = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture);
+  glActiveTexture(GLenum(active));
+  return GLuint(texture);
+}
+
+GLint levelParameter(GLuint texture, GLenum name) {
+  GLint value = 0;
+  glGetTextureLevelParameteriv(texture, 0, name, &value);
+  return value;
+}
+
+}  // namespace
+
+bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out, std::string& whyNot) {
+  GLint program = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+  if (program == 0) {
+    whyNot = "no deep shadow group is drawing (is it active?)";
+    return false;
+  }
+  const std::string index = "[" + std::to_string(slot) + "]";
+  const GLuint depth = arrayOfSampler(program, "uMapDepth" + index);
+  const GLuint visibility = arrayOfSampler(program, "uMapVisibility" + index);
+  if (depth == 0 || visibility == 0) {
+    whyNot = "no map is bound for light " + std::to_string(slot);
+    return false;
+  }
+  const GLint size = levelParameter(depth, GL_TEXTURE_WIDTH);
+  const GLint layers = levelParameter(depth, GL_TEXTURE_DEPTH);
+  if (layer < 0 || layer >= layers || size <= 0) {
+    whyNot =
+        "the map holds " + std::to_string(layers) + " layers, not layer " + std::to_string(layer);
+    return false;
+  }
+  const GLint format = levelParameter(visibility, GL_TEXTURE_INTERNAL_FORMAT);
+  const bool coloured = format == GL_RGBA16F || format == GL_RGBA32F;
+  out.size = size;
+  out.channels = coloured ? 3 : 1;
+  const std::size_t texels = std::size_t(size) * std::size_t(size);
+  out.depth.assign(texels, 0.0f);
+  std::vector<float> rgba(coloured ? texels * 4 : texels);
+
+  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+  GLint packBuffer = 0;
+  glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &packBuffer);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+  glGetTextureSubImage(depth, 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT,
+                       GLsizei(texels * sizeof(float)), out.depth.data());
+  glGetTextureSubImage(visibility, 0, 0, 0, layer, size, size, 1, coloured ? GL_RGBA : GL_RED,
+                       GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(packBuffer));
+  glPopClientAttrib();
+
+  if (coloured) {
+    out.visibility.resize(texels * 3);
+    for (std::size_t i = 0; i < texels; ++i)
+      for (std::size_t c = 0; c < 3; ++c) out.visibility[i * 3 + c] = rgba[i * 4 + c];
+  } else {
+    out.visibility = std::move(rgba);
+  }
+  return true;
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,71 @@
+#include "image/PngFile.h"
+#include "tests/gl/ViewerTestSupport.h"
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace ivshadow {
+namespace {
+
+using test::runUnderXvfb;
+
+Image screenshot(const std::string& name, bool dragger) {
+  const std::string path = test::outputDir() + "/" + name;
+  const std::string scene = test::scenesDir() + "/coloured_shadows.iv";
+  std::vector<std::string> command = {test::viewerExe(), scene,    "--screenshot", path,
+                                      "--size",          "320x240"};
+  for (const char* set : {"Lamp.method=MAP", "Lamp.resolution=256", "Lamp.location=0.4 -0.6 2.5"}) {
+    command.push_back("--set");
+    command.push_back(set);
+  }
+  if (dragger) command.push_back("--light-dragger");
+  const test::ProcessResult result = runUnderXvfb(command);
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  return readPng(path);
+}
+
+TEST(ViewerDragger, DraggerSitsOnTheLightAndCastsNoShadow) {
+  const Image without = screenshot("without.png", false);
+  const Image with = screenshot("with.png", true);
+
+  // Where the light is on screen, from the scene's camera (position 0 -7.5 5.2, rotated
+  // 0.93 rad about x, heightAngle 0.7, 4:3): the light at (0.4, -0.6, 2.5) lies 7.145 units
+  // along the view direction, 1.961 above and 0.4 right of the view axis, which projects to
+  // pixel (178, 30).
+  const double angle = 0.93, tanHalf = std::tan(0.35);
+  const double dy = -0.6 + 7.5, dz = 2.5 - 5.2;
+  const double depth = dy * std::sin(angle) - dz * std::cos(angle);
+  const double up = dy * std::cos(angle) + dz * std::sin(angle);
+  const int px = int(std::lround((1.0 + 0.4 / depth / (tanHalf * 320.0 / 240.0)) * 160.0));
+  const int py = int(std::lround((1.0 - up / depth / tanHalf) * 120.0));
+  ASSERT_NEAR(px, 178, 1);
+  ASSERT_NEAR(py, 30, 1);
+  // The dragger's ball, about 0.3 units across there (4 % of the scene's 8-unit size), covers
+  // the 5 x 5 pixels around that point: most of them change, by more than 10 steps.
+  int changed = 0;
+  for (int y = py - 2; y <= py + 2; ++y)
+    for (int x = px - 2; x <= px + 2; ++x) {
+      int worst = 0;
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(with.pixel(x, y)[c] - without.pixel(x, y)[c]));
+      changed += worst > 10 ? 1 : 0;
+    }
+  EXPECT_GE(changed, 20) << "no dragger at the light's position";
+
+  // Outside the shadow group the dragger casts nothing: the floor in the lower half of the
+  // picture, left of the glass sphere (x < 200), is unchanged but for rounding (same 2-step,
+  // 99.9 % tolerance as the other viewer comparisons).
+  Image floorWith(200, 90), floorWithout(200, 90);
+  for (int y = 0; y < 90; ++y)
+    for (int x = 0; x < 200; ++x)
+      for (int c = 0; c < 4; ++c) {
+        floorWith.pixel(x, y)[c] = with.pixel(x, y + 150)[c];
+        floorWithout.pixel(x, y)[c] = without.pixel(x, y + 150)[c];
+      }
+  test::expectMostlyEqual(floorWith, floorWithout, 2, 0.999, "floor with and without dragger");
+}
+
+}  // namespace
+}  // namespace ivshadow

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "image/Image.h"
+#include "tests/support/TestSupport.h"
+
+#include <string>
+#include <vector>
+
+namespace ivshadow::test {
+
+// Runs the viewer (or any command) under a private Xvfb server (Mesa's GLX draws with
+// llvmpipe there). XDG_CONFIG_HOME points into the test's output directory, so the viewer's
+// recent-files list never touches the user's settings.
+ProcessResult runUnderXvfb(const std::vector<std::string>& arguments,
+                           const std::vector<std::string>& environment = {});
+
+// Share of pixels whose colour channels all lie within `tolerance` of the other image's.
+double shareWithin(const Image& a, const Image& b, int tolerance);
+
+// Share of pixels bright enough to be scene rather than the black background.
+double shareLit(const Image& image);
+
+// Expects at least `share` of the pixels of `actual` within `tolerance` steps of `expected`
+// (same size required); on failure writes actual.png, expected.png and diff.png to
+// outputDir() and names them in the failure.
+void expectMostlyEqual(const Image& actual, const Image& expected, int tolerance, double share,
+                       const std::string& what);
+
+}  // namespace ivshadow::test

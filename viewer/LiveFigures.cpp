@@ -1,0 +1,111 @@
+#include "viewer/LiveFigures.h"
+
+#include <nlohmann/json.hpp>
+
+#include <QStringList>
+
+#include <algorithm>
+
+namespace ivshadow {
+namespace {
+
+QString mebibytes(std::uint64_t bytes) {
+  return QString("%1 MiB").arg(static_cast<double>(bytes) / (1024.0 * 1024.0), 0, 'f', 1);
+}
+
+}  // namespace
+
+LiveFigures LiveFigures::collect(SoNode* root, double frameMs, double gpuFrameMs,
+                                 const LiveFigures& previous) {
+  LiveFigures figures;
+  figures.frameMs = frameMs;
+  figures.gpuFrameMs = gpuFrameMs;
+  if (root != nullptr) {
+    figures.shadows = collectDeepShadowStatistics(root);
+    figures.peeling = collectPeelStatistics(root);
+  }
+  figures.rebuiltThisFrame = figures.shadows.rebuilds != previous.shadows.rebuilds;
+  figures.tracedThisFrame = figures.shadows.rayFrames != previous.shadows.rayFrames;
+  return figures;
+}
+
+QString LiveFigures::text() const {
+  QStringList lines;
+  lines << QString("frame      %1 ms (GL timer %2 ms)")
+               .arg(frameMs, 0, 'f', 1)
+               .arg(gpuFrameMs, 0, 'f', 1);
+  const double build = rebuiltThisFrame ? shadows.lastBuildMs : 0.0;
+  lines << QString("map build  %1 ms (%2 so far)%3")
+               .arg(shadows.lastBuildMs, 0, 'f', 1)
+               .arg(shadows.rebuilds)
+               .arg(rebuiltThisFrame ? " (this frame)" : "");
+  lines
+      << QString("peel       %1 ms, %2 passes").arg(peeling.peelMs, 0, 'f', 1).arg(peeling.passes);
+  const bool tracing =
+      std::any_of(shadows.lights.begin(), shadows.lights.end(),
+                  [](const DeepShadowLightStatistics& light) { return light.method == "RAYS"; });
+  if (tracing) {
+    lines << QString("rays       %1 ms, %2 rays%3 (BVH %4 ms, %5)")
+                 .arg(shadows.raysMs, 0, 'f', 1)
+                 .arg(shadows.raysTraced)
+                 .arg(tracedThisFrame ? " (this frame)" : "")
+                 .arg(shadows.bvhBuildMs, 0, 'f', 1)
+                 .arg(mebibytes(shadows.bvhBytes));
+  }
+  // The nodes time their own passes; what is left of the frame is the shaded scene.
+  const double rays = tracedThisFrame ? shadows.raysMs : 0.0;
+  lines << QString("shading    %1 ms")
+               .arg(std::max(0.0, frameMs - build - peeling.peelMs - rays), 0, 'f', 1);
+  std::uint64_t total = 0;
+  const char* const faceNames[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  for (const DeepShadowLightStatistics& light : shadows.lights) {
+    const QString name = light.name.empty() ? QString("light") : QString::fromStdString(light.name);
+    if (light.method == "RAYS") {
+      // Traced shadows keep no map: no layers, no memory of their own.
+      lines << name + ": shadow rays, no map";
+      continue;
+    }
+    total += light.bytes;
+    lines << QString("%1: %2 x %2 per face, %3")
+                 .arg(name)
+                 .arg(light.resolution)
+                 .arg(light.coloured ? "colour" : "monochrome");
+    QStringList faces;
+    for (int face = 0; face < 6; ++face) {
+      faces << QString("%1 %2").arg(faceNames[face]).arg(light.layersUsed[std::size_t(face)]);
+    }
+    lines << "  layers " + faces.join("  ");
+    lines
+        << QString("  memory %1 (peak %2)").arg(mebibytes(light.bytes), mebibytes(light.peakBytes));
+  }
+  if (total > 0) lines << "maps total " + mebibytes(total);
+  return lines.join('\n');
+}
+
+std::string LiveFigures::json() const {
+  nlohmann::json out;
+  out["frame_ms"] = frameMs;
+  out["gpu_ms"] = gpuFrameMs;
+  out["passes"] = {{"dsm_build_ms", shadows.lastBuildMs},
+                   {"peel_ms", peeling.peelMs},
+                   {"rays_ms", shadows.raysMs}};
+  out["rays_traced"] = shadows.raysTraced;
+  out["dsm_rebuilds"] = shadows.rebuilds;
+  std::uint64_t bytes = 0;
+  nlohmann::json lights = nlohmann::json::array();
+  for (const DeepShadowLightStatistics& light : shadows.lights) {
+    bytes += light.bytes;
+    lights.push_back({{"light", light.name},
+                      {"faces", light.layersUsed},
+                      {"bytes", light.bytes},
+                      {"colored", light.coloured},
+                      {"resolution", light.resolution},
+                      {"method", light.method}});
+  }
+  out["dsm_layers_used"] = lights;
+  out["dsm_bytes"] = bytes;
+  out["peel_passes"] = peeling.passes;
+  return out.dump();
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+class SoNode;
+
+namespace ivshadow {
+
+// Writes `root` as an ASCII Inventor file with its current field values, through an
+// AtomicFile: a failure leaves no file. Throws InputError naming `path` when it cannot be
+// created or written.
+void writeScene(SoNode* root, const std::string& path);
+
+}  // namespace ivshadow

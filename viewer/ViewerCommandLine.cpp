@@ -1,0 +1,36 @@
+#include "viewer/ViewerCommandLine.h"
+
+#include <CLI/CLI.hpp>
+
+namespace ivshadow {
+
+void addViewerOptions(CLI::App& app, ViewerOptions& options) {
+  app.add_option("scene", options.scene, "Open Inventor scene file (.iv)");
+  app.add_option("--screenshot", options.screenshot,
+                 "Save the second frame drawn to this PNG and quit");
+  app.add_option("--size", options.size, "Viewer area WIDTHxHEIGHT")->capture_default_str();
+  app.add_flag("--add-light", options.addLight,
+               "Put a scene without deep shadow nodes into a shadow group with a deep shadow "
+               "light, as the panel's button does");
+  app.add_option("--set", options.assignments,
+                 "NAME.field=VALUE: set a field of a deep shadow node through the shadow panel "
+                 "(repeatable)")
+      // One value per --set, so a scene file after it stays the positional argument.
+      ->allow_extra_args(false);
+  app.add_option("--save-scene", options.saveScene,
+                 "Write the scene with its current field values to this .iv file and quit "
+                 "(after --add-light and --set)");
+  app.add_option("--figures", options.figures,
+                 "With --screenshot: write the live figures of that frame to this JSON file");
+  app.add_option("--window-shot", options.windowShot,
+                 "With --screenshot: also save the whole window, panel included, to this PNG");
+  app.add_flag("--light-dragger", options.lightDragger,
+               "With --screenshot: show the light dragger, which scripted runs leave out");
+  app.add_option("--inspect", options.inspect,
+                 "LIGHT:FACE:LAYER[:visibility], e.g. Lamp:-z:1: open the map inspector on that "
+                 "layer (depth unless :visibility); with --screenshot, print what it shows");
+  app.add_option("--inspect-out", options.inspectOut,
+                 "With --screenshot and --inspect: save the inspector's picture to this PNG");
+}
+
+}  // namespace ivshadow
