@@ -64,6 +64,7 @@ void PeelPass::allocate(int width, int height) {
 }
 
 void PeelPass::begin(int x, int y, int width, int height) {
+  timer_.start();
   std::vector<int> units;
   for (int i = 0; i < 3; ++i) units.push_back(firstUnit_ + i);
   saved_ = std::make_unique<GlStateScope>(GlStateScope::Extent::WholePass, units);
@@ -128,6 +129,7 @@ bool PeelPass::finishPass(int pass, bool dual) {
 void PeelPass::end(int passes) {
   if (passes == 0) {  // nothing was peeled: leave the opaque picture as it is
     saved_.reset();
+    timer_.stop();
     return;
   }
   const int last = (passes - 1) % 2;
@@ -148,6 +150,7 @@ void PeelPass::end(int passes) {
   glBindVertexArray(emptyVertexArray_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   saved_.reset();
+  timer_.stop();
 }
 
 void PeelPass::setPeelUniforms(unsigned int program, int mode) const {

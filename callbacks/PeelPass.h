@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
+#include "callbacks/GlPassTimer.h"
 #include "callbacks/GlProgram.h"
 
 #include <array>
@@ -34,6 +35,9 @@ class PeelPass {
   // current at begin() (nothing when `passes` is 0), and restores the saved state.
   void end(int passes);
 
+  // GPU time from begin() to the end of end(), waiting for it.
+  double gpuMs() const { return timer_.elapsedMs(); }
+
   // Sets the shading program's peel mode (kPeel* in shading.frag) and texture units.
   void setPeelUniforms(unsigned int program, int mode) const;
 
@@ -57,6 +61,7 @@ class PeelPass {
   int targetFramebuffer_ = 0;
   std::array<int, 4> viewport_{};
   int firstUnit_ = 0;
+  GlPassTimer timer_;
 };
 
 }  // namespace ivshadow

@@ -53,6 +53,10 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   // build, not per frame: the frame times above include it only for frames that rebuilt.
   const DeepShadowStatistics shadows = collectDeepShadowStatistics(root);
   stats["passes"]["dsm_build_ms"] = shadows.lastBuildMs;
+  // GPU time of each pass (GL_TIMESTAMP queries; on llvmpipe the rasteriser's threads).
+  stats["passes"]["dsm_build_gpu_ms"] = shadows.gpuBuildMs;
+  stats["passes"]["shading_gpu_ms"] = shadows.gpuShadingMs;
+  stats["passes"]["rays_capture_gpu_ms"] = shadows.gpuCaptureMs;
   stats["dsm_rebuilds"] = shadows.rebuilds;
   stats["dsm_caster_triangles"] = shadows.casterTriangles;
   std::uint64_t bytes = 0;
@@ -92,6 +96,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   // Peeling runs every frame; these are the last frame's figures, summed over separators.
   const PeelStatistics peeling = collectPeelStatistics(root);
   stats["passes"]["peel_ms"] = peeling.peelMs;
+  stats["passes"]["peel_gpu_ms"] = peeling.gpuPeelMs;
   stats["peel_passes"] = peeling.passes;
   return stats;
 }

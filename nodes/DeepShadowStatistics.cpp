@@ -17,6 +17,9 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.rebuilds += stats.rebuilds;
     total.casterTriangles += stats.casterTriangles;
     total.raysMs += stats.raysMs;
+    total.gpuBuildMs += stats.gpuBuildMs;
+    total.gpuShadingMs += stats.gpuShadingMs;
+    total.gpuCaptureMs += stats.gpuCaptureMs;
     total.rayCaptureMs += stats.rayCaptureMs;
     total.rayTraceMs += stats.rayTraceMs;
     total.rayLayers = std::max(total.rayLayers, stats.rayLayers);

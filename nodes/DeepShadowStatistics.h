@@ -23,6 +23,11 @@ struct DeepShadowLightStatistics {
 
 struct DeepShadowStatistics {
   std::vector<DeepShadowLightStatistics> lights;
+  // GPU time (GL_TIMESTAMP queries) of the last map build, the last shading of the children
+  // and the last capture of RAYS surfaces. On llvmpipe the GPU is the CPU rasteriser.
+  double gpuBuildMs = 0.0;
+  double gpuShadingMs = 0.0;
+  double gpuCaptureMs = 0.0;
   double lastBuildMs = 0.0;  // wall time of the last rebuild, all lights (waits for each pass)
   double totalBuildMs = 0.0;
   int rebuilds = 0;  // times the maps were rebuilt

@@ -11,6 +11,7 @@ PeelStatistics collectPeelStatistics(SoNode* root) {
     const PeelStatistics& one = separator.getStatistics();
     total.passes += one.passes;
     total.peelMs += one.peelMs;
+    total.gpuPeelMs += one.gpuPeelMs;
     total.frames += one.frames;
   });
   return total;

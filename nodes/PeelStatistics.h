@@ -6,9 +6,10 @@ namespace ivshadow {
 
 // What the last frame of one SoPeelingSeparator cost.
 struct PeelStatistics {
-  int passes = 0;       // peel passes, the depth-range pass included (not the opaque pass)
-  double peelMs = 0.0;  // wall time of the peel passes and compositing (waits for each pass)
-  int frames = 0;       // frames peeled since the node was created
+  int passes = 0;          // peel passes, the depth-range pass included (not the opaque pass)
+  double peelMs = 0.0;     // wall time of the peel passes and compositing (waits for each pass)
+  double gpuPeelMs = 0.0;  // GPU time of the same (GL_TIMESTAMP queries)
+  int frames = 0;          // frames peeled since the node was created
 };
 
 // The last frame of every SoPeelingSeparator under `root`, summed.

@@ -140,6 +140,7 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 
   statistics_.passes = passes;
+  statistics_.gpuPeelMs = pass->gpuMs();
   statistics_.peelMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics_.frames;

@@ -197,6 +197,7 @@ void TransparentShadowGroupImpl::findLights() {
 
 void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& context) {
   const auto start = std::chrono::steady_clock::now();
+  context.buildTimer.start();
   DeepShadowPass& pass = *context.pass;
   context.maps.assign(lights_.size(), MapState{});
   statistics_.lights.clear();
@@ -281,6 +282,8 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   statistics_.lastBuildMs = ms;
+  context.buildTimer.stop();
+  statistics_.gpuBuildMs = context.buildTimer.elapsedMs();
   statistics_.totalBuildMs += ms;
   ++statistics_.rebuilds;
   statistics_.casterTriangles = int(casters_.triangleCount());
@@ -411,7 +414,11 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     TransparentShadowGroupImpl* outer = activeGroupNow;
     if (deepShadows_) activeGroupNow = this;
     renderingPass_ = context.pass.get();
+    context.shadingTimer.start();
     renderChildren_(action, inPath);
+    context.shadingTimer.stop();
+    // Waits for the children to be drawn: the figure is meant for profiling.
+    statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();
     renderingPass_ = nullptr;
     activeGroupNow = outer;
     SoShapeStyleElement::setShadowsRendering(state, FALSE);
@@ -451,6 +458,7 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   // in the shading pass (Mesa then fails the display list): the captures record none.
   const int renderCaches = SoSeparator::getNumRenderCaches();
   SoSeparator::setNumRenderCaches(0);
+  context.captureTimer.start();
   rays.beginCapture(origin[0], origin[1], size[0], size[1]);
   // Without a transparent caster there is rarely a transparent surface to capture: one pass
   // then does (a transparent shape that only receives takes the opaque surface's shadow).
@@ -464,6 +472,8 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
     ++layerCount;
   }
   rays.endCapture(program);
+  context.captureTimer.stop();
+  statistics_.gpuCaptureMs = context.captureTimer.elapsedMs();
   SoSeparator::setNumRenderCaches(renderCaches);
   capturingNow = false;
   state->pop();

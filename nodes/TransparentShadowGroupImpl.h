@@ -1,5 +1,6 @@
 #pragma once
 
+#include "callbacks/GlPassTimer.h"
 #include "callbacks/ShadingUniforms.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/DeepShadowStatistics.h"
@@ -97,6 +98,9 @@ class TransparentShadowGroupImpl {
     bool softwareRenderer = false;
     std::string renderer;
     std::unique_ptr<RayShadowPass> rays;
+    GlPassTimer buildTimer;
+    GlPassTimer shadingTimer;
+    GlPassTimer captureTimer;
     // The last trace's captures and visibility, kept so that their memory is reused.
     std::vector<SurfaceLayer> surfaces;
     std::vector<std::uint16_t> visibility;

@@ -35,18 +35,22 @@ QString LiveFigures::text() const {
                .arg(frameMs, 0, 'f', 1)
                .arg(gpuFrameMs, 0, 'f', 1);
   const double build = rebuiltThisFrame ? shadows.lastBuildMs : 0.0;
-  lines << QString("map build  %1 ms (%2 so far)%3")
+  lines << QString("map build  %1 ms, GPU %2 ms (%3 so far)%4")
                .arg(shadows.lastBuildMs, 0, 'f', 1)
+               .arg(shadows.gpuBuildMs, 0, 'f', 1)
                .arg(shadows.rebuilds)
                .arg(rebuiltThisFrame ? " (this frame)" : "");
-  lines
-      << QString("peel       %1 ms, %2 passes").arg(peeling.peelMs, 0, 'f', 1).arg(peeling.passes);
+  lines << QString("peel       %1 ms, GPU %2 ms, %3 passes")
+               .arg(peeling.peelMs, 0, 'f', 1)
+               .arg(peeling.gpuPeelMs, 0, 'f', 1)
+               .arg(peeling.passes);
   const bool tracing =
       std::any_of(shadows.lights.begin(), shadows.lights.end(),
                   [](const DeepShadowLightStatistics& light) { return light.method == "RAYS"; });
   if (tracing) {
-    lines << QString("rays       %1 ms, %2 rays%3 (BVH %4 ms, %5)")
+    lines << QString("rays       %1 ms, capture GPU %2 ms, %3 rays%4 (BVH %5 ms, %6)")
                  .arg(shadows.raysMs, 0, 'f', 1)
+                 .arg(shadows.gpuCaptureMs, 0, 'f', 1)
                  .arg(shadows.raysTraced)
                  .arg(tracedThisFrame ? " (this frame)" : "")
                  .arg(shadows.bvhBuildMs, 0, 'f', 1)
@@ -54,8 +58,9 @@ QString LiveFigures::text() const {
   }
   // The nodes time their own passes; what is left of the frame is the shaded scene.
   const double rays = tracedThisFrame ? shadows.raysMs : 0.0;
-  lines << QString("shading    %1 ms")
-               .arg(std::max(0.0, frameMs - build - peeling.peelMs - rays), 0, 'f', 1);
+  lines << QString("shading    %1 ms, GPU %2 ms (the groups' children)")
+               .arg(std::max(0.0, frameMs - build - peeling.peelMs - rays), 0, 'f', 1)
+               .arg(shadows.gpuShadingMs, 0, 'f', 1);
   std::uint64_t total = 0;
   const char* const faceNames[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   for (const DeepShadowLightStatistics& light : shadows.lights) {
@@ -87,8 +92,12 @@ std::string LiveFigures::json() const {
   out["frame_ms"] = frameMs;
   out["gpu_ms"] = gpuFrameMs;
   out["passes"] = {{"dsm_build_ms", shadows.lastBuildMs},
+                   {"dsm_build_gpu_ms", shadows.gpuBuildMs},
                    {"peel_ms", peeling.peelMs},
-                   {"rays_ms", shadows.raysMs}};
+                   {"peel_gpu_ms", peeling.gpuPeelMs},
+                   {"rays_ms", shadows.raysMs},
+                   {"rays_capture_gpu_ms", shadows.gpuCaptureMs},
+                   {"shading_gpu_ms", shadows.gpuShadingMs}};
   out["rays_traced"] = shadows.raysTraced;
   out["dsm_rebuilds"] = shadows.rebuilds;
   std::uint64_t bytes = 0;

@@ -3,8 +3,8 @@
 #include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
-#include "nodes/IvShadowInit.h"
 #include "nodes/DeepShadowStatistics.h"
+#include "nodes/IvShadowInit.h"
 #include "nodes/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
@@ -263,6 +263,11 @@ TEST(RayShadows, AutoTracesRaysOnThisSoftwareRendererAndSaysSo) {
   EXPECT_EQ(stats.at("passes").at("shadow_method"), "RAYS");
   EXPECT_EQ(stats.at("dsm_layers_used").at(0).at("method"), "RAYS");
   EXPECT_GT(stats.at("passes").at("rays_ms").get<double>(), 0.0);
+  EXPECT_GT(stats.at("passes").at("rays_capture_gpu_ms").get<double>(), 0.0);
+  EXPECT_GE(stats.at("passes").at("rays_ms").get<double>(),
+            stats.at("passes").at("rays_capture_ms").get<double>() +
+                stats.at("passes").at("rays_trace_ms").get<double>());
+  EXPECT_GT(stats.at("ray_layers").get<int>(), 1);  // the floor and the glass in front of it
   EXPECT_GE(stats.at("passes").at("bvh_build_ms").get<double>(), 0.0);
   EXPECT_GT(stats.at("rays_traced").get<std::uint64_t>(), 0u);
   EXPECT_GT(stats.at("bvh_bytes").get<std::uint64_t>(), 0u);

@@ -67,6 +67,9 @@ TEST(RenderCommand, StatsReportDeepShadowMapsBuiltOnce) {
   std::ifstream in(dir + "/stats.json");
   const nlohmann::json stats = nlohmann::json::parse(in);
   EXPECT_TRUE(stats.at("passes").at("dsm_build_ms").is_number());
+  // The GPU timestamps of the build and of the shading are taken (llvmpipe has timers).
+  EXPECT_GT(stats.at("passes").at("dsm_build_gpu_ms").get<double>(), 0.0);
+  EXPECT_GT(stats.at("passes").at("shading_gpu_ms").get<double>(), 0.0);
   EXPECT_EQ(stats.at("dsm_rebuilds"), 1) << "three frames of an unchanged scene, one build";
   ASSERT_EQ(stats.at("dsm_layers_used").size(), 1u);
   const nlohmann::json& lamp = stats.at("dsm_layers_used")[0];
@@ -90,6 +93,7 @@ TEST(RenderCommand, StatsReportPeeling) {
   std::ifstream in(dir + "/stats.json");
   const nlohmann::json stats = nlohmann::json::parse(in);
   EXPECT_TRUE(stats.at("passes").at("peel_ms").is_number());
+  EXPECT_GT(stats.at("passes").at("peel_gpu_ms").get<double>(), 0.0);
   // The glasses overlap several deep here: the depth-range pass and at least two peel passes.
   EXPECT_GE(stats.at("peel_passes").get<int>(), 3);
   EXPECT_EQ(stats.at("dsm_rebuilds"), 1);
