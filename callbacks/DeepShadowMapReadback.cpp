@@ -1,5 +1,7 @@
 #include "callbacks/DeepShadowMapReadback.h"
 
+#include "callbacks/PixelStoreScope.h"
+
 #include <epoxy/gl.h>
 
 namespace ivshadow {
@@ -57,20 +59,13 @@ bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out, std::string& 
   out.depth.assign(texels, 0.0f);
   std::vector<float> rgba(coloured ? texels * 4 : texels);
 
-  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
-  GLint packBuffer = 0;
-  glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &packBuffer);
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  glPixelStorei(GL_PACK_SKIP_ROWS, 0);
-  glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
-  glGetTextureSubImage(depth, 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT,
-                       GLsizei(texels * sizeof(float)), out.depth.data());
-  glGetTextureSubImage(visibility, 0, 0, 0, layer, size, size, 1, coloured ? GL_RGBA : GL_RED,
-                       GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(packBuffer));
-  glPopClientAttrib();
+  {
+    const PixelStoreScope pixelStore;
+    glGetTextureSubImage(depth, 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT,
+                         GLsizei(texels * sizeof(float)), out.depth.data());
+    glGetTextureSubImage(visibility, 0, 0, 0, layer, size, size, 1, coloured ? GL_RGBA : GL_RED,
+                         GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+  }
 
   if (coloured) {
     out.visibility.resize(texels * 3);

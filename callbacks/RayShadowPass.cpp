@@ -2,6 +2,7 @@
 
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/PixelStoreScope.h"
 
 #include <epoxy/gl.h>
 
@@ -69,11 +70,12 @@ void RayShadowPass::startLayer(int layer, unsigned int program) {
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
-  glBindTextureUnit(GLuint(unit(kOpaqueUnit)), positions_[0].get());
-  // The previous transparent layer sits in the other transparent target (never the one
-  // written now, so nothing is read while it is drawn to).
+  // Layer 0 writes the opaque target: no texture it is drawn to may be bound for sampling
+  // (GL calls that a feedback loop even where the shader does not sample), so nothing is.
+  // Later layers read the opaque target and the previous transparent one, never their own.
+  glBindTextureUnit(GLuint(unit(kOpaqueUnit)), layer == 0 ? 0u : positions_[0].get());
   glBindTextureUnit(GLuint(unit(kPreviousUnit)),
-                    positions_[layer >= 2 ? targetOf(layer - 1) : 0].get());
+                    layer >= 2 ? positions_[targetOf(layer - 1)].get() : 0u);
   glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), layer == 0 ? 5 : 6);
   glProgramUniform1i(program, glGetUniformLocation(program, "uRayFirstTransparent"),
                      layer <= 1 ? 1 : 0);
@@ -87,6 +89,7 @@ bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
   // Same size as last frame: the memory is reused, not cleared (the read-back fills it).
   out.position.resize(floats);
   out.normal.resize(floats);
+  const PixelStoreScope pixelStore;
   glGetTextureImage(positions_[target].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(floats * sizeof(float)),
                     out.position.data());
   glGetTextureImage(normals_[target].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(floats * sizeof(float)),
@@ -106,6 +109,9 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
   if (count == 0 || rays == 0) {
     uploadedLayers_ = 0;
     uploadedRays_ = 0;
+    shadingDepth_.reset();
+    shadingVisibility_.reset();
+    shadingWidth_ = shadingHeight_ = 0;
     return;
   }
   const int width = layers.front().width, height = layers.front().height;
@@ -125,8 +131,8 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
   }
   uploadedLayers_ = count;
   uploadedRays_ = rays;
-  // Each layer's depth: the alpha of its positions, taken with a stride of 4 floats.
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  const PixelStoreScope pixelStore;
+  // Each layer's window depth (1 where nothing is traced), from the alpha of its positions.
   std::vector<float>& depth = depthScratch_;
   depth.resize(std::size_t(width) * std::size_t(height));
   for (int l = 0; l < count; ++l) {

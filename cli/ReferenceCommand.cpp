@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <future>
 #include <iostream>
 
@@ -33,7 +34,14 @@ extern "C" void onInterrupt(int) {
 }  // namespace
 
 int runReference(const ReferenceCommandOptions& options) {
-  return withExitStatus([&] {
+  // From the start: Ctrl-C while the scene loads stops the render as soon as it begins, so
+  // the user always gets the same answer (exit 130, nothing written).
+  interrupted = false;
+  auto previous = std::signal(SIGINT, onInterrupt);
+  const int status = withExitStatus([&] {
+    if (options.threads < 0 || options.threads > 1024)
+      throw InputError("--threads " + std::to_string(options.threads) +
+                       ": error: expected 0 (every core) to 1024");
     const ImageSize size = ImageSize::parse(options.size, "--size");
     std::vector<FieldAssignment> assignments;
     for (const std::string& text : options.assignments)
@@ -56,8 +64,6 @@ int runReference(const ReferenceCommandOptions& options) {
     std::atomic<int> rows{0};
     reference.rowsDone = &rows;
     reference.cancel = &interrupted;
-    interrupted = false;
-    auto previous = std::signal(SIGINT, onInterrupt);
     const auto start = std::chrono::steady_clock::now();
     auto future =
         std::async(std::launch::async, [&] { return renderReference(view.root.get(), reference); });
@@ -70,7 +76,6 @@ int runReference(const ReferenceCommandOptions& options) {
       shown = true;
     }
     std::optional<ReferenceResult> result = future.get();
-    std::signal(SIGINT, previous);
     if (shown && bar.terminal() && rows.load() < size.height) std::cerr << '\n';
     if (!result) {
       std::cerr << "ivshadow: interrupted; nothing written\n";
@@ -78,15 +83,23 @@ int runReference(const ReferenceCommandOptions& options) {
     }
     for (const std::string& warning : result->warnings)
       std::cerr << options.scene << ": warning: " << warning << '\n';
+    // Both files or neither: the float picture goes first, and is removed if the PNG fails.
     if (!options.pfm.empty())
       writePfm(options.pfm, result->image.width, result->image.height, result->image.rgb);
-    writePng(options.output, result->image.toImage());
+    try {
+      writePng(options.output, result->image.toImage());
+    } catch (...) {
+      if (!options.pfm.empty()) std::remove(options.pfm.c_str());
+      throw;
+    }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::cout << "wrote " << options.output << " (" << size.toString() << ", " << result->triangles
               << " triangles, " << result->shadowRays << " shadow rays, " << ms << " ms)\n";
     return 0;
   });
+  std::signal(SIGINT, previous);
+  return status;
 }
 
 }  // namespace ivshadow

@@ -122,6 +122,8 @@ int runRender(const RenderOptions& options) {
     if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
 
     init();
+    // The statistics report GPU time per pass; without them no pass waits for its timer.
+    setPassTiming(!options.statsPath.empty());
     LoadedScene scene = loadScene(options.scene);
     for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
     for (const FieldAssignment& assignment : assignments) {

@@ -13,6 +13,7 @@
 #include "image/PngFile.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/IvShadowInit.h"
+#include "nodes/NodesOfType.h"
 #include "nodes/SoDeepShadowLight.h"
 #include "nodes/SoTransparentShadowGroup.h"
 #include "raytrace/ReferenceRenderer.h"
@@ -37,14 +38,8 @@ namespace {
 
 template <typename Node>
 std::vector<Node*> allNodes(SoNode* root) {
-  SoSearchAction search;
-  search.setType(Node::getClassTypeId());
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(TRUE);
-  search.apply(root);
   std::vector<Node*> nodes;
-  for (int i = 0; i < search.getPaths().getLength(); ++i)
-    nodes.push_back(static_cast<Node*>(search.getPaths()[i]->getTail()));
+  forEachNodeOfType<Node>(root, [&nodes](Node& node) { nodes.push_back(&node); });
   return nodes;
 }
 
@@ -108,8 +103,6 @@ int runTrade(const TradeOptions& options) {
     checkList(options.methods, {"map", "rays"}, "--method");
     const bool maps = std::count(options.methods.begin(), options.methods.end(), "map") > 0;
     const bool rays = std::count(options.methods.begin(), options.methods.end(), "rays") > 0;
-    std::filesystem::create_directories(options.outputDir);
-    AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
 
     init();
     LoadedScene scene = loadScene(options.scene);
@@ -121,6 +114,9 @@ int runTrade(const TradeOptions& options) {
       throw InputError(options.scene +
                        ": error: expected a DeepShadowLight inside a TransparentShadowGroup; "
                        "there is no deep shadow setting to trade");
+    // Only good input makes the directory; its files are written once the sweep is done.
+    std::filesystem::create_directories(options.outputDir);
+    AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
 
@@ -148,7 +144,6 @@ int runTrade(const TradeOptions& options) {
     const double referenceMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const Image exact = reference->image.toImage();
-    writePng(options.outputDir + "/reference.png", exact);
     bar.update(++done, total, "exact reference");
 
     std::vector<Row> rows;
@@ -199,7 +194,7 @@ int runTrade(const TradeOptions& options) {
       row.buildMs = FrameStatistics::median(builds);
       const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
       for (const DeepShadowLightStatistics& light : stats.lights) row.bytes += light.bytes;
-      if (setting.rays) row.bytes = stats.bvhBytes;
+      if (setting.rays) row.bytes = stats.bvhBytes;  // the casters' BVH instead of a map
       row.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
       row.metrics = ImageComparison::compare(exact, renderer->read(), "reference", "render");
       rows.push_back(row);
@@ -207,6 +202,7 @@ int runTrade(const TradeOptions& options) {
     }
 
     std::ostringstream csv;
+    // map_bytes: what the setting keeps between frames (the map, or for rays the BVH).
     csv << "setting,kind,resolution,layers,precision,filter,build_ms,frame_ms_median,"
            "rebuild_frame_ms,rmse,psnr_db,max_abs_error,share_above_2,map_bytes\n";
     std::vector<TradePoint> points;
@@ -216,6 +212,7 @@ int runTrade(const TradeOptions& options) {
                                   row.metrics.all.rmse, row.kind == "baseline", false});
     }
     markParetoFront(points);
+    writePng(options.outputDir + "/reference.png", exact);
     writeTextFileAtomically(options.outputDir + "/trade.csv", csv.str());
     writeTradePlot(options.outputDir + "/trade.png",
                    std::filesystem::path(options.scene).filename().string() + " at " +

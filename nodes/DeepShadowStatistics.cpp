@@ -4,8 +4,21 @@
 #include "nodes/SoTransparentShadowGroup.h"
 
 #include <algorithm>
+#include <atomic>
 
 namespace ivshadow {
+
+namespace {
+std::atomic<bool> passTimingOn{false};
+}  // namespace
+
+void setPassTiming(bool on) {
+  passTimingOn = on;
+}
+
+bool passTiming() {
+  return passTimingOn;
+}
 
 DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
   DeepShadowStatistics total;

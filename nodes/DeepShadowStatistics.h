@@ -50,6 +50,14 @@ class SoNode;
 
 namespace ivshadow {
 
+// Whether the groups and peeling separators time their shading, peel and capture passes on
+// the GPU (gpuShadingMs, gpuCaptureMs, PeelStatistics::gpuPeelMs). Reading a GPU timer waits
+// for the GPU to finish the pass, so it is off unless a profiler asks: `ivshadow render
+// --stats` and the viewer's live figures turn it on. Map builds are always timed (they wait
+// for each pass anyway).
+void setPassTiming(bool on);
+bool passTiming();
+
 // The statistics of every SoTransparentShadowGroup under `root`, summed: lights of all groups
 // in traversal order, build times and rebuild counts added up.
 DeepShadowStatistics collectDeepShadowStatistics(SoNode* root);

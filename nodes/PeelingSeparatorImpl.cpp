@@ -2,6 +2,7 @@
 
 #include "callbacks/PeelPass.h"
 #include "callbacks/ShadingUniforms.h"
+#include "nodes/DeepShadowStatistics.h"
 #include "nodes/SoPeelingSeparator.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -140,7 +141,7 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 
   statistics_.passes = passes;
-  statistics_.gpuPeelMs = pass->gpuMs();
+  if (passTiming()) statistics_.gpuPeelMs = pass->gpuMs();
   statistics_.peelMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics_.frames;

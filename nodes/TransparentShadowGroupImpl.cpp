@@ -71,8 +71,20 @@ const char* methodName(int method) {
 // Embree may use at most half the machine's memory (IVSHADOW_EMBREE_MEMORY_LIMIT, in bytes,
 // overrides it): past that a light keeps its map rather than the process running out.
 std::int64_t embreeMemoryLimit() {
-  if (const char* text = std::getenv("IVSHADOW_EMBREE_MEMORY_LIMIT")) return std::atoll(text);
-  return std::int64_t(sysconf(_SC_PHYS_PAGES)) * std::int64_t(sysconf(_SC_PAGE_SIZE)) / 2;
+  const std::int64_t half =
+      std::int64_t(sysconf(_SC_PHYS_PAGES)) * std::int64_t(sysconf(_SC_PAGE_SIZE)) / 2;
+  const char* text = std::getenv("IVSHADOW_EMBREE_MEMORY_LIMIT");
+  if (text == nullptr) return half;
+  char* end = nullptr;
+  const long long bytes = std::strtoll(text, &end, 10);
+  if (end == text || *end != '\0' || bytes <= 0) {
+    SoDebugError::postWarning("SoDeepShadowLight",
+                              "IVSHADOW_EMBREE_MEMORY_LIMIT is '%s', expected a number of bytes "
+                              "above 0; using half the memory",
+                              text);
+    return half;
+  }
+  return bytes;
 }
 
 std::string lightName(const SoDeepShadowLight& light) {
@@ -110,8 +122,7 @@ bool TransparentShadowGroupImpl::rayCastersReady(const SoDeepShadowLight& light)
     if (!rayCasters_ && embreeError_.empty()) embreeError_ = "Embree failed";
   }
   if (rayCasters_) return true;
-  static std::set<const SoDeepShadowLight*> warned;
-  if (warned.insert(&light).second)
+  if (embreeWarned_.insert(&light).second)
     SoDebugError::postWarning("SoDeepShadowLight",
                               "light %s: cannot trace shadow rays (%s); using its deep shadow map",
                               lightName(light).c_str(), embreeError_.c_str());
@@ -147,8 +158,13 @@ void TransparentShadowGroupImpl::changed(SoNotList* list) {
   }
   if (!origin->isOfType(SoNode::getClassTypeId())) return;
   const auto* node = static_cast<const SoNode*>(origin);
-  // Moving the camera or changing an ordinary light changes no shadow map.
-  if (node->isOfType(SoCamera::getClassTypeId())) return;
+  // Moving the camera or changing an ordinary light changes no shadow map; a camera inside
+  // the group moves what RAYS lights traced, which the state does not show yet when the group
+  // starts (the camera is traversed later).
+  if (node->isOfType(SoCamera::getClassTypeId())) {
+    ++viewVersion_;
+    return;
+  }
   lightsValid_ = false;
   if (node->isOfType(SoDeepShadowLight::getClassTypeId())) {
     ++mapsVersion_;
@@ -220,8 +236,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     int method = map.settings.method;
     if (method == SoDeepShadowLight::AUTO_METHOD) {
       method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
-      static std::set<const SoDeepShadowLight*> logged;
-      if (logged.insert(entry.light).second)
+      if (methodLogged_.insert(entry.light).second)
         SoDebugError::postInfo("SoDeepShadowLight", "light %s: method AUTO uses %s on %s",
                                lightName(*entry.light).c_str(), methodName(method),
                                context.renderer.c_str());
@@ -414,11 +429,13 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     TransparentShadowGroupImpl* outer = activeGroupNow;
     if (deepShadows_) activeGroupNow = this;
     renderingPass_ = context.pass.get();
-    context.shadingTimer.start();
+    const bool timed = passTiming();
+    if (timed) context.shadingTimer.start();
     renderChildren_(action, inPath);
-    context.shadingTimer.stop();
-    // Waits for the children to be drawn: the figure is meant for profiling.
-    statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();
+    if (timed) {
+      context.shadingTimer.stop();
+      statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();  // waits for the GPU
+    }
     renderingPass_ = nullptr;
     activeGroupNow = outer;
     SoShapeStyleElement::setShadowsRendering(state, FALSE);
@@ -435,6 +452,7 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   const SbVec2s size = region.getViewportSizePixels();
   TraceKey key;
   key.mapsVersion = mapsVersion_;
+  key.viewVersion = viewVersion_;
   key.viewport = {origin[0], origin[1], size[0], size[1]};
   const SbMatrix* matrices[3] = {&SoViewingMatrixElement::get(state),
                                  &SoProjectionMatrixElement::get(state),
@@ -453,12 +471,14 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   state->push();
   setTransparencyType(state, SoGLRenderAction::NONE);
   SoDepthBufferElement::set(state, TRUE, TRUE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
+  const bool outerCapture = capturingNow;  // a group inside another group's capture
   capturingNow = true;
   // A render cache recorded here would hold the capture's state and uniforms and replay them
   // in the shading pass (Mesa then fails the display list): the captures record none.
   const int renderCaches = SoSeparator::getNumRenderCaches();
   SoSeparator::setNumRenderCaches(0);
-  context.captureTimer.start();
+  const bool timed = passTiming();
+  if (timed) context.captureTimer.start();
   rays.beginCapture(origin[0], origin[1], size[0], size[1]);
   // Without a transparent caster there is rarely a transparent surface to capture: one pass
   // then does (a transparent shape that only receives takes the opaque surface's shadow).
@@ -472,10 +492,12 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
     ++layerCount;
   }
   rays.endCapture(program);
-  context.captureTimer.stop();
-  statistics_.gpuCaptureMs = context.captureTimer.elapsedMs();
+  if (timed) {
+    context.captureTimer.stop();
+    statistics_.gpuCaptureMs = context.captureTimer.elapsedMs();
+  }
   SoSeparator::setNumRenderCaches(renderCaches);
-  capturingNow = false;
+  capturingNow = outerCapture;
   state->pop();
   // The captures drew into targets Coin did not choose; GL is restored, and Coin must not
   // trust what it believes it last sent.

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -84,10 +85,12 @@ class TransparentShadowGroupImpl {
   // What a trace of RAYS lights depends on: an equal key reuses the last trace.
   struct TraceKey {
     std::uint64_t mapsVersion = 0;
+    std::uint64_t viewVersion = 0;
     std::array<int, 4> viewport{};
     std::array<float, 48> matrices{};  // viewing, projection, model
     bool operator==(const TraceKey& o) const {
-      return mapsVersion == o.mapsVersion && viewport == o.viewport && matrices == o.matrices;
+      return mapsVersion == o.mapsVersion && viewVersion == o.viewVersion &&
+             viewport == o.viewport && matrices == o.matrices;
     }
   };
   struct Context {
@@ -134,12 +137,15 @@ class TransparentShadowGroupImpl {
   SceneTriangles casters_;
   std::uint64_t castersVersion_ = 0;
   std::uint64_t mapsVersion_ = 1;
+  std::uint64_t viewVersion_ = 0;  // a camera inside the group changed
   DeepShadowStatistics statistics_;
   EmbreeMemory embreeMemory_;
   EmbreeDevice embreeDevice_;
   std::unique_ptr<CasterScene> rayCasters_;
   std::uint64_t rayCastersVersion_ = 0;
   std::string embreeError_;  // set once Embree failed: RAYS lights fall back to maps
+  std::set<const SoDeepShadowLight*> methodLogged_;  // lights whose AUTO choice was said
+  std::set<const SoDeepShadowLight*> embreeWarned_;  // lights told they keep their map
 };
 
 }  // namespace ivshadow

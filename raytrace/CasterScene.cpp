@@ -5,8 +5,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace ivshadow {
 namespace {
@@ -17,20 +18,15 @@ struct ShadowRayContext : RTCIntersectContext {
   const CasterScene* scene = nullptr;
   ShadowColourModel model = ShadowColourModel::Monochrome;
   glm::vec3 visibility{1.0f};
-  // Surfaces already counted: Embree may report a triangle twice (spatial splits) and a ray
-  // through a shared edge meets both triangles; one shape at one distance is one surface.
-  std::array<std::pair<std::uint32_t, float>, 64> seen{};
-  std::size_t seenCount = 0;
-  float sameSurface = 0.0f;  // in ray parameter units
+  // Surfaces already counted on this ray (shape, ray parameter); kept per thread so that no
+  // ray allocates.
+  std::vector<std::pair<std::uint32_t, float>>* seen = nullptr;
 };
 
 bool alreadySeen(ShadowRayContext& context, std::uint32_t shape, float t) {
-  for (std::size_t i = 0; i < std::min(context.seenCount, context.seen.size()); ++i)
-    if (context.seen[i].first == shape &&
-        std::fabs(context.seen[i].second - t) <= context.sameSurface)
-      return true;
-  if (context.seenCount < context.seen.size()) context.seen[context.seenCount] = {shape, t};
-  ++context.seenCount;
+  for (const auto& [seenShape, seenT] : *context.seen)
+    if (seenShape == shape && sameSurface(seenT, t)) return true;
+  context.seen->emplace_back(shape, t);
   return false;
 }
 
@@ -110,11 +106,13 @@ glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& nor
       normalLength > 0.0f ? from + normal * (side * offset / normalLength) : from;
   const glm::vec3 direction = to - origin;
 
+  thread_local std::vector<std::pair<std::uint32_t, float>> seen;
+  seen.clear();
   ShadowRayContext context;
   rtcInitIntersectContext(&context);
   context.scene = this;
   context.model = model;
-  context.sameSurface = 1e-5f;
+  context.seen = &seen;
   RTCRay ray{};
   ray.org_x = origin.x;
   ray.org_y = origin.y;

@@ -3,11 +3,13 @@
 namespace ivshadow {
 namespace {
 
-bool monitor(void* user, ssize_t bytes, bool) {
+bool monitor(void* user, ssize_t bytes, bool post) {
   auto& memory = *static_cast<EmbreeMemory*>(user);
   const std::int64_t after = memory.bytes.fetch_add(bytes) + bytes;
-  if (bytes > 0 && memory.limit > 0 && after > memory.limit) {
-    memory.bytes.fetch_sub(bytes);  // a refused allocation is not made
+  // Only a call before the allocation (post false) can refuse it; a refused allocation is
+  // never made, so it is not counted.
+  if (!post && bytes > 0 && memory.limit > 0 && after > memory.limit) {
+    memory.bytes.fetch_sub(bytes);
     return false;
   }
   return true;

@@ -420,8 +420,8 @@ class Tracer {
       // One surface met twice (a shared edge, a spatial split) is composited once.
       bool duplicate = false;
       for (std::size_t j = 0; j < i && !duplicate; ++j)
-        duplicate = data_.triangles[hits[j].primitive].shape == tri.shape &&
-                    std::fabs(hits[j].t - hit.t) <= 2e-6f * hit.t;
+        duplicate =
+            data_.triangles[hits[j].primitive].shape == tri.shape && sameSurface(hits[j].t, hit.t);
       if (duplicate) continue;
       const glm::vec3 position = origin + hit.t * direction;
       const glm::vec4 shaded = shade(tri, hit, position, direction, shadowRays);

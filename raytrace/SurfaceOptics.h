@@ -17,6 +17,15 @@ inline bool isOpaque(float alpha) {
   return alpha >= 1.0f - 0.5f / 255.0f;
 }
 
+// Whether two hits of one shape along a ray, at ray parameters a and b, are one surface met
+// twice (Embree reports a triangle again after a spatial split, and a ray through a shared
+// edge meets both triangles): float intersection puts them within about 1e-7 of each other,
+// relatively, so 2e-6 separates them from any real second surface but a coincident one.
+inline bool sameSurface(float a, float b) {
+  const float larger = a > b ? a : b;
+  return (a > b ? a - b : b - a) <= 2e-6f * larger;
+}
+
 // Fraction of light per channel that passes a surface of colour c.rgb and opacity c.a.
 glm::vec3 transmittance(const glm::vec4& c, ShadowColourModel model);
 

@@ -3,6 +3,7 @@
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/NodesOfType.h"
 #include "nodes/SoTransparentShadowGroup.h"
+#include "nodes/TransparentShadowGroupImpl.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/nodes/SoCallback.h>
@@ -212,6 +213,11 @@ void MapInspector::detachProbe() {
 void MapInspector::probe(void* self, SoAction* action) {
   auto* that = static_cast<MapInspector*>(self);
   if (!that->requested_ || !action->isOfType(SoGLRenderAction::getClassTypeId())) return;
+  // The group's maps are bound only while it shades its children, not while it captures
+  // surfaces for a RAYS light.
+  if (TransparentShadowGroupImpl::activeGroup() == nullptr ||
+      TransparentShadowGroupImpl::capturing())
+    return;
   that->requested_ = false;
   that->readOk_ = readBoundMapLayer(that->slot_, that->arrayLayer_, that->readback_, that->whyNot_);
   that->readDone_ = true;

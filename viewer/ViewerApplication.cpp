@@ -2,6 +2,7 @@
 
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
+#include "nodes/DeepShadowStatistics.h"
 #include "nodes/IvShadowInit.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
@@ -109,6 +110,8 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   ViewerWindow window;
   SoQt::init(&window);
   init();
+  // The live figures show each pass's GPU time.
+  setPassTiming(true);
   window.createViewer();
   const bool scripted = options.scripted();
   window.setInteractive(!scripted);

@@ -11,6 +11,7 @@
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -146,7 +147,7 @@ TEST(RayShadows, GrazingLightDoesNotShadowTheReceiverItself) {
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
-TEST(RayShadows, TracedAgainWhenTheLightMovesBuiltAgainWhenCastersChange) {
+TEST(RayShadows, TheFirstFrameBuildsOneBvhTracesOnceAndKeepsNoMap) {
   ShadowScene scene;
   scene.filters = {kRedGlass};
   scene = withRays(scene);
@@ -196,6 +197,43 @@ TEST(RayShadows, StaticFramesReuseTheTraceAMovedLightIsTracedAgainOnly) {
   EXPECT_EQ(stats.bvhBuilds, 2);  // a caster changed: its scene is built again
   EXPECT_EQ(stats.rayFrames, 3);
   root->unref();
+}
+
+TEST(RayShadows, ACameraInsideTheGroupMovedIsTracedAgain) {
+  // The group is traversed before a camera inside it: only the camera's notification can
+  // tell the group that the traced shadows no longer fit the view.
+  ShadowScene scene;
+  scene.filters = {kRedGlass};
+  scene = withRays(scene);
+  std::string text = scene.text();
+  const std::string camera =
+      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n";
+  ASSERT_NE(text.find(camera), std::string::npos);
+  text.erase(text.find(camera), camera.size());
+  // After the group's fields, before its first child.
+  const std::string group = "isActive TRUE\n";
+  text.insert(text.find(group) + group.size(),
+              "    DEF Eye OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 "
+              "height 2.4 }\n");
+  SoSeparator* root = readIv(text);
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  renderer->render(root);
+  renderer->render(root);
+  EXPECT_EQ(collectDeepShadowStatistics(root).rayFrames, 1);
+  auto* eye = static_cast<SoCamera*>(SoNode::getByName("Eye"));
+  ASSERT_NE(eye, nullptr);
+  eye->position.setValue(0.3f, 0.0f, 5.0f);
+  renderer->render(root);
+  EXPECT_EQ(collectDeepShadowStatistics(root).rayFrames, 2);
+  // The picture is the moved view's: the analytic floor shifted by 30 pixels.
+  const Image image = renderer->read();
+  root->unref();
+  ShadowPicture picture{&scene, ColourModel::Saturate};
+  const std::string failure = compareWithExpectation(
+      image, [&](int x, int y) { return picture(x + 30, y); }, kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
 }
 
 TEST(RayShadows, LightsOfBothMethodsShareAGroup) {
@@ -268,7 +306,7 @@ TEST(RayShadows, AutoTracesRaysOnThisSoftwareRendererAndSaysSo) {
             stats.at("passes").at("rays_capture_ms").get<double>() +
                 stats.at("passes").at("rays_trace_ms").get<double>());
   EXPECT_GT(stats.at("ray_layers").get<int>(), 1);  // the floor and the glass in front of it
-  EXPECT_GE(stats.at("passes").at("bvh_build_ms").get<double>(), 0.0);
+  EXPECT_EQ(stats.at("bvh_builds").get<int>(), 1);
   EXPECT_GT(stats.at("rays_traced").get<std::uint64_t>(), 0u);
   EXPECT_GT(stats.at("bvh_bytes").get<std::uint64_t>(), 0u);
   EXPECT_EQ(stats.at("ray_frames").get<int>(), 1);  // the second frame reused the trace

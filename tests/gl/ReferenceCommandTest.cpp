@@ -85,7 +85,8 @@ TEST(ReferenceCommand, CtrlCStopsWithoutAPartialFile) {
   EXPECT_FALSE(test::fileExists(dir + "/big.pfm"));
 }
 
-// Scenes without deep shadows or transparency: GL and the reference evaluate the same
+// Scenes without deep shadows whose camera view Coin composites in depth order
+// (glass_over_floor draws its glass after the floor): GL and the reference evaluate the same
 // Gouraud lighting, textures and fog (shading_features has every Coin light type, a spot
 // cone, textures and HAZE fog). What remains is rasterisation against a ray through the pixel
 // centre on silhouettes and float rounding: at least 50 dB and 99.9 % of pixels within 2/255.

@@ -31,6 +31,9 @@ struct LibraryScene {
 
 class SceneLibrary : public ::testing::TestWithParam<LibraryScene> {};
 
+constexpr int kCloseSteps = 8;
+constexpr double kCloseShare = 0.9;
+
 void setMethod(SoNode* root, int method) {
   SoSearchAction search;
   search.setType(SoDeepShadowLight::getClassTypeId());
@@ -69,6 +72,7 @@ TEST_P(SceneLibrary, RendersWithItsShadows) {
 
   setMethod(view.root.get(), SoDeepShadowLight::MAP);
   renderTwiceQuietly(*renderer, view.root.get());
+  const Image mapped = renderer->read();
   DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
   ASSERT_EQ(stats.lights.size(), 1u);
   EXPECT_EQ(stats.rebuilds, 1) << "two frames of an unchanged scene build the map once";
@@ -85,6 +89,19 @@ TEST_P(SceneLibrary, RendersWithItsShadows) {
   EXPECT_EQ(stats.bvhBuilds, 1);
   EXPECT_EQ(stats.rayFrames, 1) << "two frames of an unchanged scene trace once";
   EXPECT_GT(stats.raysTraced, 0u);
+  // The same shadows, exact: the pictures differ only where the map is coarse (shadow edges,
+  // up to a texel wide) or cut off (surfaces beyond its layers), which is a small share.
+  const Image traced = renderer->read();
+  int close = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      int worst = 0;
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(traced.pixel(x, y)[c] - mapped.pixel(x, y)[c]));
+      close += worst <= kCloseSteps ? 1 : 0;
+    }
+  EXPECT_GE(double(close) / (kWidth * kHeight), kCloseShare)
+      << "the traced shadows are not the map's";
 }
 
 INSTANTIATE_TEST_SUITE_P(

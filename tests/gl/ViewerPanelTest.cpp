@@ -94,9 +94,9 @@ void expectSameMaps(const PanelRun& run) {
 // through GLX and EGL. Measured for every case below: at most 0.005 % of the pixels differ by
 // more than 2 steps (edges where transparent surfaces meet); 99.9 % leaves room for a few
 // more without letting a setting that did not apply pass, since each setting below changes
-// 12 % or more of the picture (asserted against the unchanged render).
+// 12 % or more of the picture: against the unchanged render, more than 10 % must change.
 constexpr double kSameShare = 0.999;
-constexpr double kChangedShare = 0.95;
+constexpr double kChangedShare = 0.90;
 
 TEST(ViewerPanel, LightFieldsSetThroughThePanelRenderAsHeadlessWithTheSameFields) {
   const PanelRun run =
