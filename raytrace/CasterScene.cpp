@@ -73,21 +73,17 @@ CasterScene::~CasterScene() = default;
 
 glm::vec4 CasterScene::surfaceColour(unsigned int primitive, float u, float v) const {
   const TriangleVertex* vertex = &casters_.vertices[std::size_t(primitive) * 3];
-  const float w = 1.0f - u - v;
-  glm::vec4 colour(0.0f);
-  float s = 0.0f, t = 0.0f;
-  const float weights[3] = {w, u, v};
+  glm::vec4 colours[3];
+  glm::vec2 texCoords[3];
   for (int i = 0; i < 3; ++i) {
-    colour += weights[i] * glm::vec4(vertex[i].colour[0], vertex[i].colour[1], vertex[i].colour[2],
-                                     vertex[i].colour[3]);
-    s += weights[i] * vertex[i].texCoord[0];
-    t += weights[i] * vertex[i].texCoord[1];
+    colours[i] = glm::vec4(vertex[i].colour[0], vertex[i].colour[1], vertex[i].colour[2],
+                           vertex[i].colour[3]);
+    texCoords[i] = glm::vec2(vertex[i].texCoord[0], vertex[i].texCoord[1]);
   }
   const int texture = triangleTexture_[primitive];
-  if (texture < 0) return colour;
-  const TextureImage& image = casters_.textures[std::size_t(texture)];
-  const glm::vec3 blend(image.blendColour[0], image.blendColour[1], image.blendColour[2]);
-  return applyTextureModel(colour, sampleTexture(image, s, t), image.model, blend);
+  const TextureImage* image = texture >= 0 ? &casters_.textures[std::size_t(texture)] : nullptr;
+  const SurfaceSample sample = sampleSurface(colours, texCoords, image, u, v);
+  return texturedColour(sample.colour, sample.texel, image);
 }
 
 glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& normal,

@@ -84,6 +84,13 @@ struct Material {
   float fogStart = 0.0f;
   float fogEnd = 1.0f;
   float fogDensity = 0.0f;
+
+  bool operator==(const Material& o) const {
+    return ambient == o.ambient && specular == o.specular && emission == o.emission &&
+           shininess == o.shininess && globalAmbient == o.globalAmbient && fogType == o.fogType &&
+           fogColour == o.fogColour && fogStart == o.fogStart && fogEnd == o.fogEnd &&
+           fogDensity == o.fogDensity;
+  }
 };
 
 struct Triangle {
@@ -276,8 +283,10 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
     material.fogEnd = far;
     material.fogDensity = material.fogType == 2 ? ln256 / far : std::sqrt(ln256) / far;
   }
-  out.material = int(data.materials.size());
-  data.materials.push_back(material);
+  // A shape's triangles come in a row and mostly share one material: keep it once.
+  if (data.materials.empty() || !(data.materials.back() == material))
+    data.materials.push_back(material);
+  out.material = int(data.materials.size()) - 1;
 
   const SoPrimitiveVertex* vertices[3] = {v1, v2, v3};
   glm::vec3 world[3];
@@ -328,24 +337,14 @@ struct CameraRayContext : RTCIntersectContext {
   std::vector<Hit>* hits = nullptr;
 };
 
-glm::vec4 baseColour(const Extraction& data, const Triangle& tri, float u, float v,
-                     glm::vec4* texel) {
-  const float w = 1.0f - u - v;
-  glm::vec4 colour = w * tri.colour[0] + u * tri.colour[1] + v * tri.colour[2];
-  if (tri.texture >= 0) {
-    const glm::vec2 st = w * tri.texCoord[0] + u * tri.texCoord[1] + v * tri.texCoord[2];
-    *texel = sampleTexture(data.textures[std::size_t(tri.texture)], st.x, st.y);
-  }
-  return colour;
+const TextureImage* imageOf(const Extraction& data, const Triangle& tri) {
+  return tri.texture >= 0 ? &data.textures[std::size_t(tri.texture)] : nullptr;
 }
 
 float opacity(const Extraction& data, const Triangle& tri, float u, float v) {
-  glm::vec4 texel(1.0f);
-  const glm::vec4 colour = baseColour(data, tri, u, v, &texel);
-  if (tri.texture < 0) return colour.a;
-  const TextureImage& image = data.textures[std::size_t(tri.texture)];
-  const glm::vec3 blend(image.blendColour[0], image.blendColour[1], image.blendColour[2]);
-  return applyTextureModel(colour, texel, image.model, blend).a;
+  const TextureImage* image = imageOf(data, tri);
+  const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, image, u, v);
+  return texturedColour(sample.colour, sample.texel, image).a;
 }
 
 void cameraFilter(const RTCFilterFunctionNArguments* args) {
@@ -441,8 +440,9 @@ class Tracer {
   // and interpolates (Gouraud), and so does this.
   glm::vec4 shade(const Triangle& tri, const Hit& hit, const glm::vec3& position,
                   const glm::vec3& rayDirection, std::size_t& shadowRays) const {
-    glm::vec4 texel(1.0f);
-    glm::vec4 colour = baseColour(data_, tri, hit.u, hit.v, &texel);
+    const TextureImage* image = imageOf(data_, tri);
+    const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, image, hit.u, hit.v);
+    glm::vec4 colour = sample.colour;
     if (tri.lit) {
       bool front = glm::dot(tri.geometricNormal, rayDirection) < 0.0f;
       if (tri.clockwise) front = !front;
@@ -464,11 +464,7 @@ class Tracer {
       }
       colour = glm::vec4(lit, colour.a);
     }
-    if (tri.texture >= 0) {
-      const TextureImage& image = data_.textures[std::size_t(tri.texture)];
-      const glm::vec3 blend(image.blendColour[0], image.blendColour[1], image.blendColour[2]);
-      colour = applyTextureModel(colour, texel, image.model, blend);
-    }
+    colour = texturedColour(colour, sample.texel, image);
     const Material& material = data_.materials[std::size_t(tri.material)];
     if (material.fogType != 0) {
       SbVec3f eye;

@@ -2,6 +2,7 @@
 
 #include "callbacks/GlLimits.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -35,5 +36,18 @@ glm::vec4 applyTextureModel(const glm::vec4& colour, const glm::vec4& texel, int
 
 // Samples `image` at (s, t) as GL would: nearest or bilinear, repeat or clamp to edge.
 glm::vec4 sampleTexture(const TextureImage& image, float s, float t);
+
+// What a triangle shows at barycentrics (u, v) of corners 1 and 2: its corners' colour and
+// opacity interpolated, and with a texture the texel at the interpolated coordinates.
+struct SurfaceSample {
+  glm::vec4 colour{1.0f};
+  glm::vec4 texel{1.0f};
+};
+SurfaceSample sampleSurface(const glm::vec4 colours[3], const glm::vec2 texCoords[3],
+                            const TextureImage* image, float u, float v);
+// The sample's colour after the image's texture model (the colour itself without an image),
+// as Coin's fixed-function texturing and the shading program apply it.
+glm::vec4 texturedColour(const glm::vec4& colour, const glm::vec4& texel,
+                         const TextureImage* image);
 
 }  // namespace ivshadow

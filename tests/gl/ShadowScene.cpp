@@ -1,6 +1,5 @@
 #include "tests/gl/ShadowScene.h"
 
-#include "headless/OffscreenRenderer.h"
 #include "nodes/IvShadowInit.h"
 #include "raytrace/ReferenceRenderer.h"
 #include "scene/ViewSetup.h"
@@ -150,22 +149,6 @@ SoSeparator* readIv(const std::string& text) {
   if (root == nullptr) throw std::runtime_error("the test scene does not parse:\n" + text);
   root->ref();
   return root;
-}
-
-Image renderIv(const std::string& text, int size, SoNode** rootOut) {
-  init();
-  std::string error;
-  auto renderer = OffscreenRenderer::create(size, size, error);
-  if (!renderer) throw std::runtime_error("no headless GL context: " + error);
-  SoSeparator* root = readIv(text);
-  renderer->render(root);
-  Image image = renderer->read();
-  if (rootOut != nullptr) {
-    *rootOut = root;
-  } else {
-    root->unref();
-  }
-  return image;
 }
 
 Image referenceIv(const std::string& text, int size, std::vector<float>* floats) {

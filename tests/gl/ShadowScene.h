@@ -82,7 +82,8 @@ struct ShadowPicture {
 SoSeparator* readIv(const std::string& text);
 
 // Reads Inventor text and renders it headlessly at size x size; returns the root (referenced)
-// through `root` when given so callers can inspect nodes afterwards.
+// through `root` when given so callers can inspect nodes afterwards. (RenderIv.cpp: GL tests
+// only.)
 Image renderIv(const std::string& text, int size, SoNode** root = nullptr);
 
 // The exact CPU reference of the same text at size x size (ivshadow reference); `floats`
