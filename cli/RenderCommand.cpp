@@ -91,6 +91,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["ray_frames"] = shadows.rayFrames;
   stats["bvh_bytes"] = shadows.bvhBytes;
   stats["bvh_builds"] = shadows.bvhBuilds;
+  stats["bvh_refits"] = shadows.bvhRefits;
   stats["dsm_layers_used"] = lights;
   stats["dsm_bytes"] = bytes;
   // Peeling runs every frame; these are the last frame's figures, summed over separators.

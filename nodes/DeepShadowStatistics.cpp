@@ -41,6 +41,7 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.bvhBytes += stats.bvhBytes;
     total.rayFrames += stats.rayFrames;
     total.bvhBuilds += stats.bvhBuilds;
+    total.bvhRefits += stats.bvhRefits;
   });
   return total;
 }

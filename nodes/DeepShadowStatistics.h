@@ -42,6 +42,7 @@ struct DeepShadowStatistics {
   std::uint64_t bvhBytes = 0;    // what Embree holds for the casters
   int rayFrames = 0;             // frames that traced (others reused an unchanged trace)
   int bvhBuilds = 0;             // times the casters' Embree scene was built
+  int bvhRefits = 0;             // times it was refitted instead (the same triangles moved)
 };
 
 }  // namespace ivshadow

@@ -105,6 +105,20 @@ bool TransparentShadowGroupImpl::capturing() {
 }
 
 bool TransparentShadowGroupImpl::rayCastersReady(const SoDeepShadowLight& light) {
+  if (embreeError_.empty() && rayCasters_ && rayCastersVersion_ != castersVersion_) {
+    // The same triangles recoloured or moved keep their tree.
+    const auto start = std::chrono::steady_clock::now();
+    const CasterScene::Update update = rayCasters_->update(casters_);
+    if (update != CasterScene::Update::Rebuild) {
+      rayCastersVersion_ = castersVersion_;
+      if (update == CasterScene::Update::Refit) {
+        ++statistics_.bvhRefits;
+        statistics_.bvhBuildMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+      }
+    }
+  }
   if (embreeError_.empty() && (!rayCasters_ || rayCastersVersion_ != castersVersion_)) {
     const auto start = std::chrono::steady_clock::now();
     rayCasters_.reset();

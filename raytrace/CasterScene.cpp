@@ -71,6 +71,30 @@ std::unique_ptr<CasterScene> CasterScene::build(RTCDevice device, SceneTriangles
 
 CasterScene::~CasterScene() = default;
 
+CasterScene::Update CasterScene::update(const SceneTriangles& casters) {
+  const std::size_t count = casters.triangleCount();
+  if (count == 0 || count != casters_.triangleCount() || casters.shapes != casters_.shapes)
+    return Update::Rebuild;
+  bool moved = false;
+  for (std::size_t i = 0; i < count * 3 && !moved; ++i)
+    for (int k = 0; k < 3; ++k)
+      moved = moved || casters.vertices[i].position[k] != casters_.vertices[i].position[k];
+  casters_ = casters;
+  for (const TriangleBatch& batch : casters_.batches)
+    std::fill_n(triangleTexture_.begin() + std::ptrdiff_t(batch.firstVertex / 3),
+                batch.vertexCount / 3, batch.texture);
+  if (!moved) return Update::Colours;
+  RTCGeometry geometry = rtcGetGeometry(scene_.get(), 0);
+  auto* positions =
+      static_cast<float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+  for (std::size_t i = 0; i < count * 3; ++i)
+    for (std::size_t k = 0; k < 3; ++k) positions[i * 3 + k] = casters_.vertices[i].position[k];
+  rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+  rtcCommitGeometry(geometry);
+  rtcCommitScene(scene_.get());
+  return Update::Refit;
+}
+
 glm::vec4 CasterScene::surfaceColour(unsigned int primitive, float u, float v) const {
   const TriangleVertex* vertex = &casters_.vertices[std::size_t(primitive) * 3];
   glm::vec4 colours[3];

@@ -24,6 +24,15 @@ class CasterScene {
   static std::unique_ptr<CasterScene> build(RTCDevice device, SceneTriangles casters,
                                             std::string& error);
   ~CasterScene();
+
+  enum class Update {
+    Colours,  // same triangles in the same places: only colours or textures changed
+    Refit,    // same triangles moved (a transform changed): the BVH was refitted
+    Rebuild   // different triangles: nothing was changed; build a new scene
+  };
+  // Takes `casters` in place of the current ones where the BVH allows it (Embree's refit
+  // keeps the tree and moves its boxes, much cheaper than a build).
+  Update update(const SceneTriangles& casters);
   CasterScene(const CasterScene&) = delete;
   CasterScene& operator=(const CasterScene&) = delete;
 

@@ -54,6 +54,8 @@ EmbreeScene buildTriangleScene(RTCDevice device, std::size_t count,
       for (std::size_t k = 0; k < 3; ++k) positions[i * 3 + k] = p[k];
       indices[i] = static_cast<unsigned int>(i);
     }
+    // Moved triangles (a transform changed) refit the tree instead of rebuilding it.
+    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_REFIT);
     rtcSetGeometryIntersectFilterFunction(geometry, filter);
     rtcSetGeometryOccludedFilterFunction(geometry, filter);
     rtcCommitGeometry(geometry);

@@ -19,16 +19,22 @@ namespace {
 // One 8-bit step, as in DeepShadowTest: per-pixel float shading rounded once.
 constexpr double kTolerance = 1.0;
 
-void expectBoth(const ShadowScene& scene, const ExpectedImage& expected, const std::string& what) {
-  SCOPED_TRACE(what);
+// The GL path and the exact reference of `text` against one expectation; every reference
+// pixel finite.
+void expectBoth(const std::string& text, const ExpectedImage& expected) {
   const std::string gl =
-      compareWithExpectation(renderIv(scene.text(), ShadowScene::kSize), expected, kTolerance);
+      compareWithExpectation(renderIv(text, ShadowScene::kSize), expected, kTolerance);
   EXPECT_TRUE(gl.empty()) << "GL: " << gl;
   std::vector<float> floats;
-  const std::string exact = compareWithExpectation(
-      referenceIv(scene.text(), ShadowScene::kSize, &floats), expected, kTolerance);
+  const std::string exact =
+      compareWithExpectation(referenceIv(text, ShadowScene::kSize, &floats), expected, kTolerance);
   EXPECT_TRUE(exact.empty()) << "reference: " << exact;
   for (float v : floats) ASSERT_TRUE(std::isfinite(v)) << "a reference pixel is not finite";
+}
+
+void expectBoth(const ShadowScene& scene, const ExpectedImage& expected, const std::string& what) {
+  SCOPED_TRACE(what);
+  expectBoth(scene.text(), expected);
 }
 
 // The floor of ShadowScene lit through one uniform tint everywhere (Lambert x tint), the
@@ -160,12 +166,7 @@ TEST(Extremes, SceneScaleFromOneThousandthToTenThousand) {
     for (const char* method : {"MAP", "RAYS"}) {
       SCOPED_TRACE("scale " + std::to_string(s) + " " + method);
       const std::string text = scaledScene(s, method);
-      const std::string gl =
-          compareWithExpectation(renderIv(text, ShadowScene::kSize), picture, kTolerance);
-      EXPECT_TRUE(gl.empty()) << "GL: " << gl;
-      const std::string exact =
-          compareWithExpectation(referenceIv(text, ShadowScene::kSize), picture, kTolerance);
-      EXPECT_TRUE(exact.empty()) << "reference: " << exact;
+      expectBoth(text, picture);
     }
 }
 
@@ -211,12 +212,7 @@ TEST(Extremes, LightInsideAClosedTransparentSphere) {
       {0.5, 0.25, 0.25}, [](double px, double py) { return std::hypot(px, py) < 0.24; });
 
   SCOPED_TRACE("light inside a sphere");
-  const std::string gl =
-      compareWithExpectation(renderIv(text, ShadowScene::kSize), expected, kTolerance);
-  EXPECT_TRUE(gl.empty()) << "GL: " << gl;
-  const std::string exact =
-      compareWithExpectation(referenceIv(text, ShadowScene::kSize), expected, kTolerance);
-  EXPECT_TRUE(exact.empty()) << "reference: " << exact;
+  expectBoth(text, expected);
 }
 
 TEST(Extremes, DegenerateAndZeroAreaTrianglesChangeNothing) {
@@ -236,12 +232,7 @@ TEST(Extremes, DegenerateAndZeroAreaTrianglesChangeNothing) {
   ShadowScene expected;
   expected.filters = {Filter{0.3, 0.5, {1.0, 0.0, 0.0}, 0.5, ""}};
   const ShadowPicture picture{&expected, ColourModel::Saturate};
-  const std::string gl =
-      compareWithExpectation(renderIv(text, ShadowScene::kSize), picture, kTolerance);
-  EXPECT_TRUE(gl.empty()) << "GL: " << gl;
-  const std::string exact =
-      compareWithExpectation(referenceIv(text, ShadowScene::kSize), picture, kTolerance);
-  EXPECT_TRUE(exact.empty()) << "reference: " << exact;
+  expectBoth(text, picture);
 }
 
 TEST(Extremes, CoincidentCoplanarFilters) {

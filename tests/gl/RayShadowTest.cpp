@@ -14,6 +14,7 @@
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTranslation.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -194,8 +195,32 @@ TEST(RayShadows, StaticFramesReuseTheTraceAMovedLightIsTracedAgainOnly) {
   static_cast<SoMaterial*>(search.getPaths()[0]->getTail())->transparency.setValue(0.25f);
   renderer->render(root);
   stats = collectDeepShadowStatistics(root);
-  EXPECT_EQ(stats.bvhBuilds, 2);  // a caster changed: its scene is built again
+  EXPECT_EQ(stats.bvhBuilds, 1);  // a caster's colour changed: the same tree holds
+  EXPECT_EQ(stats.bvhRefits, 0);
   EXPECT_EQ(stats.rayFrames, 3);
+
+  // A caster moved: its triangles keep their order, so the tree is refitted, not rebuilt.
+  auto* filter = static_cast<SoSeparator*>(SoNode::getByName("Filter0"));
+  ASSERT_NE(filter, nullptr);
+  auto* move = new SoTranslation;
+  move->translation.setValue(0.0f, 0.0f, 0.1f);
+  filter->insertChild(move, 0);
+  renderer->render(root);
+  stats = collectDeepShadowStatistics(root);
+  EXPECT_EQ(stats.rayFrames, 4);
+  EXPECT_EQ(stats.bvhBuilds, 1);
+  EXPECT_EQ(stats.bvhRefits, 1);
+  // The refitted tree casts the moved glass's shadow. From the light at (0.1, 0, 1) the
+  // glass's right edge (x 0.3) fell on the floor at x 0.5 from height 0.5, and falls at 0.6
+  // from height 0.6: the floor point (0.555, 0) is in the new shadow only.
+  const Image image = renderer->read();
+  const int px = 175, py = 120;
+  // Lambert's cosine from the moved light, 1 above (0.1, 0).
+  const double x = -1.2 + (px + 0.5) / 100.0 - 0.1, y = 1.2 - (py + 0.5) / 100.0;
+  const double lambert = 255.0 / std::sqrt(1.0 + x * x + y * y);
+  // Opacity a = 0.75 now: (1 - a) clamp(1 - a + c) is 0.25 for red, 0.0625 for green.
+  EXPECT_NEAR(image.pixel(px, py)[0], lambert * 0.25, kTolerance);
+  EXPECT_NEAR(image.pixel(px, py)[1], lambert * 0.0625, kTolerance);
   root->unref();
 }
 
