@@ -124,7 +124,7 @@ int runTrade(const TradeOptions& options) {
     if (!renderer) return 3;
 
     std::vector<Setting> settings;
-    if (rays) settings.push_back(Setting{"rays (exact, CPU)", true, 0, 0, "", ""});
+    if (rays) settings.push_back(Setting{"rays (exact)", true, 0, 0, "", ""});
     for (int resolution : maps ? options.resolutions : std::vector<int>{})
       for (int layers : options.layers)
         for (const std::string& precision : options.precisions)

@@ -61,8 +61,8 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
   EXPECT_LT(value("512 4L float", "rmse"), value("32 1L float", "rmse"));
   EXPECT_LT(value("32 1L float", "rmse"), value("no shadows (plain Coin)", "rmse"));
   // Exact shadows: no map setting comes closer (what is left is the camera view's error).
-  EXPECT_LE(value("rays (exact, CPU)", "rmse"), value("512 4L float", "rmse"));
-  EXPECT_GT(value("rays (exact, CPU)", "map_bytes"), 0.0);  // the BVH
+  EXPECT_LE(value("rays (exact)", "rmse"), value("512 4L float", "rmse"));
+  EXPECT_GT(value("rays (exact)", "map_bytes"), 0.0);  // the BVH
   EXPECT_GT(value("512 4L float", "build_ms"), 0.0);
   EXPECT_GT(value("512 4L float", "map_bytes"), value("32 1L float", "map_bytes"));
   EXPECT_EQ(readPng(dir + "/trade.png").width(), 1000);
