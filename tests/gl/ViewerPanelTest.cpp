@@ -42,6 +42,14 @@ struct PanelRun {
   nlohmann::json figures, stats;
 };
 
+// Tolerances: viewer and headless render draw with the same Coin and nodes on llvmpipe,
+// through GLX and EGL. Measured for every case below: at most 0.005 % of the pixels differ by
+// more than 2 steps (edges where transparent surfaces meet); 99.9 % leaves room for a few
+// more without letting a setting that did not apply pass, since each setting below changes
+// 12 % or more of the picture: against the unchanged render, more than 10 % must change.
+constexpr double kSameShare = 0.999;
+constexpr double kChangedShare = 0.90;
+
 PanelRun runPanel(const std::string& sceneName, const std::vector<std::string>& assignments,
                   const std::string& transparency) {
   const std::string dir = test::outputDir();
@@ -51,8 +59,6 @@ PanelRun runPanel(const std::string& sceneName, const std::vector<std::string>& 
       dir + "/figures.json", "--size",       "320x240",           scene};
   const std::vector<std::string> sets = setArguments(assignments);
   viewer.insert(viewer.end(), sets.begin(), sets.end());
-  const test::ProcessResult shown = runUnderXvfb(viewer);
-  EXPECT_EQ(shown.exitCode, 0) << shown.out << shown.err;
 
   std::vector<std::string> render = {
       test::ivshadowExe(),   "render",         scene,       "-o",
@@ -67,8 +73,10 @@ PanelRun runPanel(const std::string& sceneName, const std::vector<std::string>& 
   EXPECT_EQ(unchanged.exitCode, 0) << unchanged.err;
 
   PanelRun run;
-  run.viewer = readPng(dir + "/viewer.png");
   run.headless = readPng(dir + "/headless.png");
+  test::ProcessResult shown;
+  run.viewer = test::viewerScreenshot(viewer, dir + "/viewer.png", run.headless, kSameShare, shown);
+  EXPECT_EQ(shown.exitCode, 0) << shown.out << shown.err;
   run.headlessUnchanged = readPng(dir + "/headless_unchanged.png");
   run.figures = readJson(dir + "/figures.json");
   run.stats = readJson(dir + "/stats.json");
@@ -89,14 +97,6 @@ void expectSameMaps(const PanelRun& run) {
   EXPECT_EQ(run.figures["dsm_bytes"], run.stats["dsm_bytes"]);
   EXPECT_EQ(run.figures["peel_passes"], run.stats["peel_passes"]);
 }
-
-// Tolerances: viewer and headless render draw with the same Coin and nodes on llvmpipe,
-// through GLX and EGL. Measured for every case below: at most 0.005 % of the pixels differ by
-// more than 2 steps (edges where transparent surfaces meet); 99.9 % leaves room for a few
-// more without letting a setting that did not apply pass, since each setting below changes
-// 12 % or more of the picture: against the unchanged render, more than 10 % must change.
-constexpr double kSameShare = 0.999;
-constexpr double kChangedShare = 0.90;
 
 TEST(ViewerPanel, LightFieldsSetThroughThePanelRenderAsHeadlessWithTheSameFields) {
   const PanelRun run =

@@ -18,16 +18,17 @@ using test::shareWithin;
 void expectViewerMatchesHeadless(const std::string& sceneName, double share) {
   const std::string dir = test::outputDir();
   const std::string shot = dir + "/viewer.png", headless = dir + "/headless.png";
-  const test::ProcessResult viewer =
-      runUnderXvfb({test::viewerExe(), "--screenshot", shot, "--size", "320x240",
-                    test::scenesDir() + "/" + sceneName});
-  ASSERT_EQ(viewer.exitCode, 0) << viewer.out << viewer.err;
-  EXPECT_NE(viewer.out.find("wrote " + shot), std::string::npos) << viewer.out;
   const test::ProcessResult render =
       test::run({test::ivshadowExe(), "render", test::scenesDir() + "/" + sceneName, "-o", headless,
                  "--size", "320x240", "--transparency", "DELAYED_BLEND"});
   ASSERT_EQ(render.exitCode, 0) << render.err;
-  const Image a = readPng(shot), b = readPng(headless);
+  const Image b = readPng(headless);
+  test::ProcessResult viewer;
+  const Image a = test::viewerScreenshot({test::viewerExe(), "--screenshot", shot, "--size",
+                                          "320x240", test::scenesDir() + "/" + sceneName},
+                                         shot, b, share, viewer);
+  ASSERT_EQ(viewer.exitCode, 0) << viewer.out << viewer.err;
+  EXPECT_NE(viewer.out.find("wrote " + shot), std::string::npos) << viewer.out;
   ASSERT_EQ(a.width(), 320);
   ASSERT_EQ(a.height(), 240);
   // Not blank: the scene covers a good part of the view with non-black pixels.

@@ -1,5 +1,9 @@
 #include "tests/gl/ViewerTestSupport.h"
 
+#include "image/PngFile.h"
+
+#include <iostream>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,6 +57,19 @@ void expectMostlyEqual(const Image& actual, const Image& expected, int tolerance
       tolerance);
   ADD_FAILURE() << what << ": " << measured * 100.0 << " % of the pixels within " << tolerance
                 << " steps, expected at least " << share * 100.0 << " %. " << files;
+}
+
+Image viewerScreenshot(const std::vector<std::string>& arguments, const std::string& shot,
+                       const Image& expected, double share, ProcessResult& result) {
+  result = runUnderXvfb(arguments);
+  if (result.exitCode != 0 || !fileExists(shot)) return Image();
+  Image image = readPng(shot);
+  if (image.width() != expected.width() || image.height() != expected.height() ||
+      shareWithin(image, expected, 2) >= share)
+    return image;
+  std::cerr << shot << " is off the headless render; taking it again\n";
+  result = runUnderXvfb(arguments);
+  return result.exitCode == 0 && fileExists(shot) ? readPng(shot) : Image();
 }
 
 }  // namespace ivshadow::test
