@@ -37,7 +37,6 @@ const std::vector<FieldSpec>& lightFields() {
       {"intensity", {0.0, 1.0, 0.05, 2}},
       {"color", {0.0, 1.0, 0.05, 2}},
       {"location", {-1e5, 1e5, 0.1, 3}},
-      // Absent from lights built before the RAYS method existed; the panel skips missing fields.
       {"method", {}},
       {"resolution", {1, 16384, 64, 0}},
       {"maxLayers", {1, 64, 1, 0}},
