@@ -14,6 +14,12 @@ constexpr int kPreviousUnit = 1;  // capture: the previous transparent layer (sa
 constexpr int kDepthUnit = 2;     // shading: captured depths (sampler2DArray)
 constexpr int kVisibilityUnit = 3;
 
+// shading.frag's uPeelMode values for the captures (kRayOpaque, kRayTransparent) and for
+// ordinary shading (kPeelOff).
+constexpr int kShadeMode = 0;
+constexpr int kCaptureOpaqueMode = 5;
+constexpr int kCaptureTransparentMode = 6;
+
 // Layer k's capture target: the opaque one, then the two transparent ones in turn.
 std::size_t targetOf(int layer) {
   return layer == 0 ? 0u : std::size_t(1 + (layer - 1) % 2);
@@ -66,17 +72,20 @@ void RayShadowPass::startLayer(int layer, unsigned int program) {
   const float far = 1.0f;
   glClearNamedFramebufferfv(fbo, GL_COLOR, 0, empty);
   glClearNamedFramebufferfv(fbo, GL_COLOR, 1, none);
-  glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
+  // The caller's SoDepthBufferElement asks for the same, but Coin sends it only when its
+  // element changes; the clear and the depth test must not depend on what GL last held.
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
+  glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
   // Layer 0 writes the opaque target: no texture it is drawn to may be bound for sampling
   // (GL calls that a feedback loop even where the shader does not sample), so nothing is.
   // Later layers read the opaque target and the previous transparent one, never their own.
   glBindTextureUnit(GLuint(unit(kOpaqueUnit)), layer == 0 ? 0u : positions_[0].get());
   glBindTextureUnit(GLuint(unit(kPreviousUnit)),
                     layer >= 2 ? positions_[targetOf(layer - 1)].get() : 0u);
-  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), layer == 0 ? 5 : 6);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"),
+                     layer == 0 ? kCaptureOpaqueMode : kCaptureTransparentMode);
   glProgramUniform1i(program, glGetUniformLocation(program, "uRayFirstTransparent"),
                      layer <= 1 ? 1 : 0);
 }
@@ -101,7 +110,7 @@ bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
 
 void RayShadowPass::endCapture(unsigned int program) {
   saved_.reset();
-  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), 0);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), kShadeMode);
 }
 
 void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,

@@ -4,6 +4,7 @@
 #include "callbacks/ShadingUniforms.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/SoPeelingSeparator.h"
+#include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -27,14 +28,6 @@ constexpr int kPeelOpaque = 1;
 constexpr int kPeelInit = 2;
 constexpr int kPeelFrontToBack = 3;
 constexpr int kPeelDual = 4;
-
-// Coin's transparency type for the traversals below this node: NONE draws transparent shapes
-// at once, unblended (the opaque pass discards them); BLEND draws them at once with blending
-// on, which the peel passes turn into MAX blending.
-void setTransparencyType(SoState* state, SoGLRenderAction::TransparencyType type) {
-  SoShapeStyleElement::setTransparencyType(state, int32_t(type));
-  SoLazyElement::setTransparencyType(state, int32_t(type));
-}
 
 }  // namespace
 
@@ -91,7 +84,8 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
 
   pass->setPeelUniforms(program, kPeelOpaque);
   state->push();
-  setTransparencyType(state, SoGLRenderAction::NONE);
+  // The opaque pass discards transparent fragments; drawn at once, none is delayed.
+  overrideTransparencyType(state, SoGLRenderAction::NONE);
   renderPlainly(action, inPath);
   state->pop();
 
@@ -118,7 +112,8 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
     SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
     return;
   }
-  setTransparencyType(state, SoGLRenderAction::BLEND);
+  // Drawn at once with blending on, which the peel passes turn into MAX blending.
+  overrideTransparencyType(state, SoGLRenderAction::BLEND);
   // Against the opaque pass's depth: only what lies in front of it is peeled, and the
   // early depth test of the peel program skips the rest before shading.
   SoDepthBufferElement::set(state, TRUE, FALSE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));

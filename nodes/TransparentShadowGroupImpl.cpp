@@ -6,6 +6,7 @@
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "nodes/SoDeepShadowLight.h"
+#include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -92,12 +93,6 @@ std::string lightName(const SoDeepShadowLight& light) {
   return name.empty() ? std::string("(unnamed)") : "'" + name + "'";
 }
 
-// Coin's transparency type for the traversals below: NONE draws transparent shapes at once
-// and unblended, where the capture program sees them.
-void setTransparencyType(SoState* state, SoGLRenderAction::TransparencyType type) {
-  SoShapeStyleElement::setTransparencyType(state, int32_t(type));
-  SoLazyElement::setTransparencyType(state, int32_t(type));
-}
 }  // namespace
 
 bool TransparentShadowGroupImpl::capturing() {
@@ -483,7 +478,8 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   std::vector<SurfaceLayer>& layers = context.surfaces;
   std::size_t layerCount = 0;
   state->push();
-  setTransparencyType(state, SoGLRenderAction::NONE);
+  // Transparent shapes drawn at once and unblended, where the capture program sees them.
+  overrideTransparencyType(state, SoGLRenderAction::NONE);
   SoDepthBufferElement::set(state, TRUE, TRUE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
   const bool outerCapture = capturingNow;  // a group inside another group's capture
   capturingNow = true;

@@ -24,28 +24,15 @@ void expectPicture(const ShadowScene& scene, const ShadowPicture& picture,
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
-TEST(DeepShadow, RedGlassTintsItsFootprintBySaturateModel) {
-  ShadowScene scene;
-  scene.filters = {kRedGlass};
-  ShadowPicture picture{&scene, ColourModel::Saturate};
-  expectPicture(scene, picture);
+// The map of each analytic case (ShadowScene.h) gives its picture within one step.
+class DeepShadowAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
+
+TEST_P(DeepShadowAnalytic, MatchesThePicture) {
+  expectPicture(GetParam().scene, GetParam().picture());
 }
 
-TEST(DeepShadow, PowerColourModel) {
-  ShadowScene scene;
-  // Opacity and colour near 0.4, where eq. 5.2 and 5.3 differ most (seeds/000): there
-  // SATURATE passes 0.6 of the light in the 0.4 channels and POWER 0.6^1.6 = 0.44.
-  scene.filters = {Filter{0.3, 0.5, {0.4, 0.4, 1.0}, 0.6, ""}};
-  scene.lightFields = "colorModel POWER";
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Power});
-}
-
-TEST(DeepShadow, MonochromeIgnoresTheColour) {
-  ShadowScene scene;
-  scene.filters = {kRedGlass};
-  scene.lightFields = "shadowColor MONOCHROME";
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Monochrome});
-}
+INSTANTIATE_TEST_SUITE_P(Cases, DeepShadowAnalytic, ::testing::ValuesIn(analyticCases()),
+                         analyticCaseName);
 
 TEST(DeepShadow, HalfPrecisionAndPcfKeepTheInterior) {
   ShadowScene scene;
@@ -53,44 +40,6 @@ TEST(DeepShadow, HalfPrecisionAndPcfKeepTheInterior) {
   scene.lightFields = "precision HALF filter PCF filterSize 3";
   // Half floats hold 0.25 to 1e-4: far below an 8-bit step. PCF's 3 x 3 kernel reaches one
   // texel (0.4 pixel here) beyond the edge, inside the 2-pixel margin.
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
-}
-
-TEST(DeepShadow, PerVertexColourAlphaSetsOpacity) {
-  ShadowScene scene;
-  Filter packed = kRedGlass;
-  // Packed per-vertex colours replace the material's diffuse colour and transparency:
-  // red with alpha 0x80, i.e. transparency 1 - 128/255.
-  packed.faceNodes =
-      "MaterialBinding { value PER_VERTEX } "
-      "PackedColor { orderedRGBA [ 0xFF000080, 0xFF000080, 0xFF000080, 0xFF000080 ] }";
-  scene.filters = {packed};
-  ShadowScene expected = scene;
-  expected.filters[0].transparency = 1.0 - 128.0 / 255.0;
-  expectPicture(scene, ShadowPicture{&expected, ColourModel::Saturate});
-}
-
-TEST(DeepShadow, OpaqueCasterBlocksAllDirectLight) {
-  ShadowScene scene;
-  Filter opaque = kRedGlass;
-  opaque.transparency = 0.0;
-  scene.filters = {opaque};
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
-}
-
-TEST(DeepShadow, FullyTransparentCasterCastsNothing) {
-  ShadowScene scene;
-  Filter clear = kRedGlass;
-  clear.transparency = 1.0;
-  scene.filters = {clear};
-  ShadowPicture picture{&scene, ColourModel::Saturate};
-  picture.checkFilters = true;  // alpha 0 blends to nothing: the floor is seen everywhere
-  expectPicture(scene, picture);
-}
-
-TEST(DeepShadow, StackedFiltersMultiply) {
-  ShadowScene scene;
-  scene.filters = {kRedGlass, kGreenGlass};
   expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
 }
 

@@ -41,21 +41,15 @@ void expectPicture(const ShadowScene& scene, const ShadowPicture& picture) {
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
-TEST(RayShadows, ColourModelsAndMonochrome) {
-  ShadowScene saturate = withRays(ShadowScene{});
-  saturate.filters = {kRedGlass};
-  expectPicture(saturate, ShadowPicture{&saturate, ColourModel::Saturate});
-  ShadowScene power;
-  power.filters = {Filter{0.3, 0.5, {0.4, 0.4, 1.0}, 0.6, ""}};
-  power.lightFields = "colorModel POWER";
-  power = withRays(power);
-  expectPicture(power, ShadowPicture{&power, ColourModel::Power});
-  ShadowScene mono;
-  mono.filters = {kRedGlass};
-  mono.lightFields = "shadowColor MONOCHROME";
-  mono = withRays(mono);
-  expectPicture(mono, ShadowPicture{&mono, ColourModel::Monochrome});
+// The traced shadows of each analytic case (ShadowScene.h) give its picture within one step.
+class RayShadowsAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
+
+TEST_P(RayShadowsAnalytic, MatchesThePicture) {
+  expectPicture(withRays(GetParam().scene), GetParam().picture());
 }
+
+INSTANTIATE_TEST_SUITE_P(Cases, RayShadowsAnalytic, ::testing::ValuesIn(analyticCases()),
+                         analyticCaseName);
 
 TEST(RayShadows, EverySurfaceCountsWhateverMaxLayersSays) {
   ShadowScene scene;
@@ -63,51 +57,6 @@ TEST(RayShadows, EverySurfaceCountsWhateverMaxLayersSays) {
   scene.lightFields = "maxLayers 1";
   scene = withRays(scene);
   expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
-}
-
-TEST(RayShadows, OpaqueClearAndPerVertexAlpha) {
-  ShadowScene opaque;
-  Filter blocker = kRedGlass;
-  blocker.transparency = 0.0;
-  opaque.filters = {blocker};
-  opaque = withRays(opaque);
-  expectPicture(opaque, ShadowPicture{&opaque, ColourModel::Saturate});
-
-  ShadowScene clear;
-  Filter nothing = kRedGlass;
-  nothing.transparency = 1.0;
-  clear.filters = {nothing};
-  clear = withRays(clear);
-  ShadowPicture picture{&clear, ColourModel::Saturate};
-  picture.checkFilters = true;
-  expectPicture(clear, picture);
-
-  ShadowScene packed;
-  Filter vertexAlpha = kRedGlass;
-  vertexAlpha.faceNodes =
-      "MaterialBinding { value PER_VERTEX } "
-      "PackedColor { orderedRGBA [ 0xFF000080, 0xFF000080, 0xFF000080, 0xFF000080 ] }";
-  packed.filters = {vertexAlpha};
-  packed = withRays(packed);
-  ShadowScene expected = packed;
-  expected.filters[0].transparency = 1.0 - 128.0 / 255.0;
-  expectPicture(packed, ShadowPicture{&expected, ColourModel::Saturate});
-}
-
-TEST(RayShadows, CubeFacesSeamsAndCornersDoNotExistForRays) {
-  const double halfPi = std::acos(0.0);
-  for (const auto& [axis, angle] : std::vector<std::pair<std::array<double, 3>, double>>{
-           {{0, 1, 0}, -halfPi / 2},
-           {{1, -1, 0}, std::acos(1.0 / std::sqrt(3.0))},
-           {{1, 0, 0}, halfPi}}) {
-    ShadowScene scene;
-    scene.filters = {kRedGlass, kGreenGlass};
-    scene.rotationAxis = axis;
-    scene.rotationAngle = angle;
-    scene = withRays(scene);
-    SCOPED_TRACE("rotation " + std::to_string(angle));
-    expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
-  }
 }
 
 TEST(RayShadows, AlphaTexturedCheckerboardIsSampledInTheFilter) {
@@ -379,20 +328,12 @@ TEST(RayShadows, WithoutRoomForTheCastersTheLightWarnsOnceAndKeepsAMap) {
 class RayReferenceAgreement : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(RayReferenceAgreement, AtLeastFiftyDecibels) {
-  const std::string dir = outputDir();
   const std::string param = GetParam();  // "scene.iv:Light"
   const std::string name = param.substr(0, param.find(':'));
   const std::string light = param.substr(param.find(':') + 1);
-  const ProcessResult gl = run({ivshadowExe(), "render", sceneFile(name), "-o", dir + "/actual.png",
-                                "--size", "640x480", "--set", light + ".method=RAYS"});
-  ASSERT_EQ(gl.exitCode, 0) << gl.err;
-  const ProcessResult exact = run({ivshadowExe(), "reference", sceneFile(name), "-o",
-                                   dir + "/reference.png", "--size", "640x480"});
-  ASSERT_EQ(exact.exitCode, 0) << exact.err;
-  const Image actual = readPng(dir + "/actual.png"), reference = readPng(dir + "/reference.png");
-  const ImageComparison metrics = ImageComparison::compare(reference, actual, "reference", "gl");
-  if (metrics.all.psnr < 50.0) writePng(dir + "/diff.png", errorHeatMap(reference, actual, 0));
-  EXPECT_GE(metrics.all.psnr, 50.0) << "actual, reference and diff.png in " << dir;
+  const ImageComparison metrics =
+      renderAgainstReference(sceneFile(name), "640x480", {"--set", light + ".method=RAYS"}, 50.0);
+  EXPECT_GE(metrics.all.psnr, 50.0) << "actual, reference and diff.png in " << outputDir();
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledScenes, RayReferenceAgreement,

@@ -93,22 +93,11 @@ TEST(ReferenceCommand, CtrlCStopsWithoutAPartialFile) {
 class ReferenceAgreement : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ReferenceAgreement, SameModelSamePicture) {
-  const std::string dir = test::outputDir();
-  const std::string name = GetParam();
-  ASSERT_EQ(
-      run({test::ivshadowExe(), "render", scene(name), "-o", dir + "/gl.png", "--size", "320x240"})
-          .exitCode,
-      0);
-  const test::ProcessResult reference = run({test::ivshadowExe(), "reference", scene(name), "-o",
-                                             dir + "/reference.png", "--size", "320x240"});
-  ASSERT_EQ(reference.exitCode, 0) << reference.err;
-  const Image gl = readPng(dir + "/gl.png");
-  const Image exact = readPng(dir + "/reference.png");
-  const ImageComparison metrics = ImageComparison::compare(exact, gl, "reference", "gl");
-  if (metrics.all.psnr < 50.0 || metrics.all.shareAbove2 > 0.001)
-    writePng(dir + "/diff.png", errorHeatMap(exact, gl, 0));
-  EXPECT_GE(metrics.all.psnr, 50.0) << "actual, reference and diff.png in " << dir;
-  EXPECT_LE(metrics.all.shareAbove2, 0.001) << "actual, reference and diff.png in " << dir;
+  const ImageComparison metrics =
+      test::renderAgainstReference(scene(GetParam()), "320x240", {}, 50.0);
+  EXPECT_GE(metrics.all.psnr, 50.0) << "actual, reference and diff.png in " << test::outputDir();
+  EXPECT_LE(metrics.all.shareAbove2, 0.001)
+      << "actual, reference and diff.png in " << test::outputDir();
 }
 
 INSTANTIATE_TEST_SUITE_P(PlainScenes, ReferenceAgreement,

@@ -3,6 +3,8 @@
 #include "image/Image.h"
 #include "tests/support/TestSupport.h"
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -76,6 +78,24 @@ struct ShadowPicture {
 
   Expectation operator()(int px, int py) const;
 };
+
+// A scene with the analytic picture it must give: the cases every shadow method (the map, the
+// traced rays, the CPU reference) reproduces within one 8-bit step. `expected` is the scene
+// the picture is computed from; it differs from `scene` only where a case says so.
+struct AnalyticCase {
+  std::string name;
+  ShadowScene scene;
+  ShadowScene expected;
+  ColourModel model = ColourModel::Saturate;
+  bool checkFilters = false;  // the filters are invisible: check the pixels seen through them
+  ShadowPicture picture() const;
+};
+// Colour models, grey casters, two stacked filters, opaque, clear and per-vertex alpha
+// casters, and the content turned so that the light looks across a cube-face seam, into a
+// cube corner and through the +z face. None needs more layers than the maps keep by default.
+std::vector<AnalyticCase> analyticCases();
+// Test names for parameterised tests over analyticCases().
+std::string analyticCaseName(const ::testing::TestParamInfo<AnalyticCase>& info);
 
 // Reads Inventor text (after init()); returns the root, referenced. Throws when it does not
 // parse.

@@ -157,4 +157,23 @@ std::string compareWithExpectation(const Image& actual, const ExpectedImage& exp
   return message.str();
 }
 
+ImageComparison renderAgainstReference(const std::string& scene, const std::string& size,
+                                       const std::vector<std::string>& renderArguments,
+                                       double psnrFloor) {
+  const std::string dir = outputDir();
+  std::vector<std::string> render = {ivshadowExe(),       "render", scene, "-o",
+                                     dir + "/actual.png", "--size", size};
+  render.insert(render.end(), renderArguments.begin(), renderArguments.end());
+  const ProcessResult gl = run(render);
+  EXPECT_EQ(gl.exitCode, 0) << gl.err;
+  const ProcessResult exact =
+      run({ivshadowExe(), "reference", scene, "-o", dir + "/reference.png", "--size", size});
+  EXPECT_EQ(exact.exitCode, 0) << exact.err;
+  if (gl.exitCode != 0 || exact.exitCode != 0) return ImageComparison{};
+  const Image actual = readPng(dir + "/actual.png"), reference = readPng(dir + "/reference.png");
+  const ImageComparison metrics = ImageComparison::compare(reference, actual, "reference", "gl");
+  if (metrics.all.psnr < psnrFloor) writePng(dir + "/diff.png", errorHeatMap(reference, actual, 0));
+  return metrics;
+}
+
 }  // namespace ivshadow::test

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "image/Image.h"
+#include "image/ImageComparison.h"
 
 #include <array>
 #include <functional>
@@ -44,5 +45,13 @@ using ExpectedImage = std::function<Expectation(int x, int y)>;
 // the worst pixel; returns an empty string when every pixel passes.
 std::string compareWithExpectation(const Image& actual, const ExpectedImage& expected,
                                    double tolerance);
+
+// Renders `scene` with `ivshadow render` (and `renderArguments`) and with `ivshadow
+// reference`, both at `size`, into outputDir() as actual.png and reference.png, and measures
+// the first against the second. Writes diff.png there when the PSNR is below `psnrFloor`.
+// A command that fails is a test failure, and the comparison is then of empty pictures.
+ImageComparison renderAgainstReference(const std::string& scene, const std::string& size,
+                                       const std::vector<std::string>& renderArguments,
+                                       double psnrFloor);
 
 }  // namespace ivshadow::test

@@ -24,33 +24,15 @@ void expectPicture(const ShadowScene& scene, const ShadowPicture& picture) {
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
-TEST(ReferenceRenderer, RedGlassBySaturateModel) {
-  ShadowScene scene;
-  scene.filters = {kRedGlass};
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
+// The reference of each analytic case (ShadowScene.h) gives its picture within one step.
+class ReferenceAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
+
+TEST_P(ReferenceAnalytic, MatchesThePicture) {
+  expectPicture(GetParam().scene, GetParam().picture());
 }
 
-TEST(ReferenceRenderer, PowerColourModel) {
-  ShadowScene scene;
-  scene.filters = {Filter{0.3, 0.5, {0.4, 0.4, 1.0}, 0.6, ""}};
-  scene.lightFields = "colorModel POWER";
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Power});
-}
-
-TEST(ReferenceRenderer, MonochromeIgnoresTheColour) {
-  ShadowScene scene;
-  scene.filters = {kRedGlass};
-  scene.lightFields = "shadowColor MONOCHROME";
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Monochrome});
-}
-
-TEST(ReferenceRenderer, GreyCastersInAutoModeAreMonochrome) {
-  ShadowScene scene;
-  Filter grey = kRedGlass;
-  grey.diffuse = {0.5, 0.5, 0.5};
-  scene.filters = {grey};
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Monochrome});
-}
+INSTANTIATE_TEST_SUITE_P(Cases, ReferenceAnalytic, ::testing::ValuesIn(analyticCases()),
+                         analyticCaseName);
 
 TEST(ReferenceRenderer, StackedFiltersMultiplyWhateverMaxLayersSays) {
   ShadowScene scene;
@@ -58,49 +40,6 @@ TEST(ReferenceRenderer, StackedFiltersMultiplyWhateverMaxLayersSays) {
   // The reference has no layer limit: every surface counts.
   scene.lightFields = "maxLayers 1";
   expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
-}
-
-TEST(ReferenceRenderer, OpaqueAndClearCasters) {
-  ShadowScene opaque;
-  Filter blocker = kRedGlass;
-  blocker.transparency = 0.0;
-  opaque.filters = {blocker};
-  expectPicture(opaque, ShadowPicture{&opaque, ColourModel::Saturate});
-
-  ShadowScene clear;
-  Filter nothing = kRedGlass;
-  nothing.transparency = 1.0;
-  clear.filters = {nothing};
-  ShadowPicture picture{&clear, ColourModel::Saturate};
-  picture.checkFilters = true;
-  expectPicture(clear, picture);
-}
-
-TEST(ReferenceRenderer, PerVertexColourAlpha) {
-  ShadowScene scene;
-  Filter packed = kRedGlass;
-  packed.faceNodes =
-      "MaterialBinding { value PER_VERTEX } "
-      "PackedColor { orderedRGBA [ 0xFF000080, 0xFF000080, 0xFF000080, 0xFF000080 ] }";
-  scene.filters = {packed};
-  ShadowScene expected = scene;
-  expected.filters[0].transparency = 1.0 - 128.0 / 255.0;
-  expectPicture(scene, ShadowPicture{&expected, ColourModel::Saturate});
-}
-
-TEST(ReferenceRenderer, RotatedContentGivesTheSamePicture) {
-  // Rays have no cube faces, but the group's transforms must reach casters and lights alike.
-  const double halfPi = std::acos(0.0);
-  for (const auto& [axis, angle] : std::vector<std::pair<std::array<double, 3>, double>>{
-           {{0, 1, 0}, -halfPi / 2},
-           {{1, -1, 0}, std::acos(1.0 / std::sqrt(3.0))},
-           {{1, 0, 0}, 2 * halfPi}}) {
-    ShadowScene scene;
-    scene.filters = {kRedGlass, kGreenGlass};
-    scene.rotationAxis = axis;
-    scene.rotationAngle = angle;
-    expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
-  }
 }
 
 TEST(ReferenceRenderer, AlphaTexturedCheckerboard) {
