@@ -59,13 +59,5 @@ TEST(Examples, ACoinOnlyProgramLoadsThePluginFromTheSceneFile) {
   EXPECT_EQ(different, 0);
 }
 
-TEST(Examples, AnExistingSoQtApplicationRunsWithTheGroupAroundItsRoot) {
-  const test::ProcessResult result =
-      test::run({"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", example("soqt_add_shadows"),
-                 test::scenesDir() + "/glass_over_floor.iv", "--quit-after-ms", "1500"});
-  EXPECT_EQ(result.exitCode, 0) << result.err;
-  EXPECT_EQ(result.err.find("rror"), std::string::npos) << result.err;
-}
-
 }  // namespace
 }  // namespace ivshadow

@@ -9,7 +9,7 @@
 namespace ivshadow {
 namespace {
 
-using test::runUnderXvfb;
+using test::runOnTestDisplay;
 
 Image screenshot(const std::string& name, bool dragger) {
   const std::string path = test::outputDir() + "/" + name;
@@ -21,7 +21,7 @@ Image screenshot(const std::string& name, bool dragger) {
     command.push_back(set);
   }
   if (dragger) command.push_back("--light-dragger");
-  const test::ProcessResult result = runUnderXvfb(command);
+  const test::ProcessResult result = runOnTestDisplay(command);
   EXPECT_EQ(result.exitCode, 0) << result.err;
   return readPng(path);
 }

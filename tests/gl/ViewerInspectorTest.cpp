@@ -12,7 +12,7 @@
 namespace ivshadow {
 namespace {
 
-using test::runUnderXvfb;
+using test::runOnTestDisplay;
 
 struct Inspection {
   test::ProcessResult result;
@@ -23,7 +23,7 @@ Inspection inspect(const std::string& what) {
   const std::string dir = test::outputDir();
   Inspection run;
   run.picture = dir + "/map.png";
-  run.result = runUnderXvfb({test::viewerExe(), test::scenesDir() + "/coloured_shadows.iv", "--set",
+  run.result = runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/coloured_shadows.iv", "--set",
                              "Lamp.resolution=256", "--set", "Lamp.method=MAP", "--screenshot",
                              dir + "/viewer.png", "--size", "160x120", "--inspect", what,
                              "--inspect-out", run.picture});

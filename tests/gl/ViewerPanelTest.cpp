@@ -12,7 +12,7 @@
 namespace ivshadow {
 namespace {
 
-using test::runUnderXvfb;
+using test::runOnTestDisplay;
 
 std::string readText(const std::string& path) {
   std::ifstream in(path);
@@ -142,7 +142,7 @@ TEST(ViewerPanel, SavedSceneHoldsThePanelsValues) {
                                          "Lamp.location=1 -1 3.5"};
   std::vector<std::string> viewer = {test::viewerExe(), scene, "--save-scene", dir + "/saved.iv"};
   for (const std::string& a : setArguments(sets)) viewer.push_back(a);
-  const test::ProcessResult saved = runUnderXvfb(viewer);
+  const test::ProcessResult saved = runOnTestDisplay(viewer);
   ASSERT_EQ(saved.exitCode, 0) << saved.err;
   EXPECT_NE(saved.out.find("wrote " + dir + "/saved.iv"), std::string::npos) << saved.out;
   const std::string text = readText(dir + "/saved.iv");
@@ -169,7 +169,7 @@ TEST(ViewerPanel, SavedSceneHoldsThePanelsValues) {
 TEST(ViewerPanel, AddLightWrapsASceneWithoutDeepShadowsInAGroupWithALight) {
   const std::string dir = test::outputDir();
   const test::ProcessResult result =
-      runUnderXvfb({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--add-light", "--set",
+      runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--add-light", "--set",
                     "ShadowLight.resolution=128", "--set", "ShadowLight.method=MAP", "--save-scene",
                     dir + "/wrapped.iv", "--screenshot", dir + "/viewer.png", "--figures",
                     dir + "/figures.json", "--size", "320x240"});
@@ -215,7 +215,7 @@ TEST(ViewerPanel, BadAssignmentsExitTwoNamingTheFieldAndWriteNothing) {
       {"Lamp.resolution", "expected NAME.field=VALUE"},
   };
   for (const Case& c : cases) {
-    const test::ProcessResult result = runUnderXvfb(
+    const test::ProcessResult result = runOnTestDisplay(
         {test::viewerExe(), test::scenesDir() + "/coloured_shadows.iv", "--set", c.assignment,
          "--screenshot", dir + "/shot.png", "--save-scene", dir + "/saved.iv"});
     EXPECT_EQ(result.exitCode, 2) << c.assignment << ": " << result.err;
@@ -229,7 +229,7 @@ TEST(ViewerPanel, BadAssignmentsExitTwoNamingTheFieldAndWriteNothing) {
 TEST(ViewerPanel, UnwritableSceneOutputExitsTwoBeforeAnyOutput) {
   const std::string dir = test::outputDir();
   const test::ProcessResult result =
-      runUnderXvfb({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--screenshot",
+      runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--screenshot",
                     dir + "/shot.png", "--save-scene", dir + "/missing/dir/saved.iv"});
   EXPECT_EQ(result.exitCode, 2) << result.err;
   EXPECT_NE(result.err.find("missing/dir/saved.iv"), std::string::npos) << result.err;
@@ -242,7 +242,7 @@ TEST(ViewerPanel, RecentFilesListTheScenesOpenedNewestFirst) {
   const std::string second = test::scenesDir() + "/lit_plane.iv";
   for (const std::string& scene : {first, second, first}) {
     const test::ProcessResult result =
-        runUnderXvfb({test::viewerExe(), scene, "--save-scene",
+        runOnTestDisplay({test::viewerExe(), scene, "--save-scene",
                       dir + "/" + std::filesystem::path(scene).filename().string()});
     ASSERT_EQ(result.exitCode, 0) << result.err;
   }

@@ -7,7 +7,7 @@
 namespace ivshadow {
 namespace {
 
-using test::runUnderXvfb;
+using test::runOnTestDisplay;
 using test::shareWithin;
 
 // The viewer's screenshot (its own back buffer, read before the swap) against `ivshadow
@@ -53,7 +53,7 @@ TEST(ViewerSmoke, ScreenshotShowsTheDeepShadowsOfTheHeadlessRender) {
 
 TEST(ViewerSmoke, BadSceneInScreenshotModeExitsTwoWithoutScreenshot) {
   const std::string out = test::outputDir() + "/viewer.png";
-  const test::ProcessResult result = runUnderXvfb(
+  const test::ProcessResult result = runOnTestDisplay(
       {test::viewerExe(), "--screenshot", out, test::scenesDir() + "/malformed/unknown_node.iv"});
   EXPECT_EQ(result.exitCode, 2) << result.err;
   EXPECT_NE(result.err.find("unknown_node.iv:6: error:"), std::string::npos) << result.err;
@@ -65,6 +65,14 @@ TEST(ViewerSmoke, ViewWithoutDisplayExitsThreeWithAdvice) {
       test::run({test::ivshadowExe(), "view", test::scenesDir() + "/no_camera.iv"}, {"DISPLAY="});
   EXPECT_EQ(result.exitCode, 3);
   EXPECT_NE(result.err.find("DISPLAY is not set"), std::string::npos) << result.err;
+}
+
+TEST(ViewerExamples, AnExistingSoQtApplicationRunsWithTheGroupAroundItsRoot) {
+  const test::ProcessResult result =
+      runOnTestDisplay({std::string(IVSHADOW_BIN_DIR) + "/soqt_add_shadows",
+                        test::scenesDir() + "/glass_over_floor.iv", "--quit-after-ms", "1500"});
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(result.err.find("rror"), std::string::npos) << result.err;
 }
 
 }  // namespace

@@ -8,16 +8,31 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
 
 namespace ivshadow::test {
 
-ProcessResult runUnderXvfb(const std::vector<std::string>& arguments,
+std::string testDisplay() {
+  if (const char* display = std::getenv("IVSHADOW_TEST_DISPLAY"); display && *display)
+    return display;
+  std::ifstream file(std::string(IVSHADOW_TEST_OUTPUT_DIR) + "/xserver/display");
+  std::string display;
+  std::getline(file, display);
+  return display;
+}
+
+ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
                            const std::vector<std::string>& environment) {
-  std::vector<std::string> command = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
-  command.insert(command.end(), arguments.begin(), arguments.end());
-  std::vector<std::string> env = {"XDG_CONFIG_HOME=" + outputDir() + "/config"};
+  const std::string display = testDisplay();
+  if (display.empty()) {
+    ADD_FAILURE() << "no test X server: run the viewer tests through ctest (fixture xserver, "
+                     "tests/xserver/xserver.sh) or set IVSHADOW_TEST_DISPLAY";
+    return ProcessResult();
+  }
+  std::vector<std::string> env = {"DISPLAY=" + display,
+                                  "XDG_CONFIG_HOME=" + outputDir() + "/config"};
   env.insert(env.end(), environment.begin(), environment.end());
-  return run(command, env);
+  return run(arguments, env);
 }
 
 double shareWithin(const Image& a, const Image& b, int tolerance) {
@@ -61,14 +76,14 @@ void expectMostlyEqual(const Image& actual, const Image& expected, int tolerance
 
 Image viewerScreenshot(const std::vector<std::string>& arguments, const std::string& shot,
                        const Image& expected, double share, ProcessResult& result) {
-  result = runUnderXvfb(arguments);
+  result = runOnTestDisplay(arguments);
   if (result.exitCode != 0 || !fileExists(shot)) return Image();
   Image image = readPng(shot);
   if (image.width() != expected.width() || image.height() != expected.height() ||
       shareWithin(image, expected, 2) >= share)
     return image;
   std::cerr << shot << " is off the headless render; taking it again\n";
-  result = runUnderXvfb(arguments);
+  result = runOnTestDisplay(arguments);
   return result.exitCode == 0 && fileExists(shot) ? readPng(shot) : Image();
 }
 

@@ -8,10 +8,14 @@
 
 namespace ivshadow::test {
 
-// Runs the viewer (or any command) under a private Xvfb server (Mesa's GLX draws with
-// llvmpipe there). XDG_CONFIG_HOME points into the test's output directory, so the viewer's
-// recent-files list never touches the user's settings.
-ProcessResult runUnderXvfb(const std::vector<std::string>& arguments,
+// The X server of the viewer suite: IVSHADOW_TEST_DISPLAY, or the display that the CTest
+// fixture `xserver` (tests/xserver/xserver.sh) started; empty when there is none.
+std::string testDisplay();
+
+// Runs the viewer (or any command) on the suite's Xvfb server (Mesa's GLX draws with
+// llvmpipe there); the command's own exit status comes back unchanged. XDG_CONFIG_HOME points
+// into the test's output directory, so the viewer's settings never touch the user's.
+ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
                            const std::vector<std::string>& environment = {});
 
 // Runs the viewer with `arguments`, which make it save a screenshot to `shot`, and returns the
