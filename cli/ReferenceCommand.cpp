@@ -2,6 +2,7 @@
 
 #include "cli/ExitStatus.h"
 #include "cli/ProgressBar.h"
+#include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "image/PfmFile.h"
@@ -50,6 +51,7 @@ int runReference(const ReferenceCommandOptions& options) {
     if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
 
     init();
+    installCoinOffscreenContexts();
     LoadedScene scene = loadScene(options.scene);
     for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
     for (const FieldAssignment& assignment : assignments)

@@ -182,6 +182,10 @@ EglHeadlessContext::~EglHeadlessContext() {
   eglDestroyContext(display_, context_);
 }
 
+bool EglHeadlessContext::isCurrent() const {
+  return context_ != nullptr && eglGetCurrentContext() == context_;
+}
+
 bool EglHeadlessContext::makeCurrent() {
   return eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE;
 }

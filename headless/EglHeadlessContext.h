@@ -19,6 +19,8 @@ class EglHeadlessContext {
   EglHeadlessContext& operator=(const EglHeadlessContext&) = delete;
 
   bool makeCurrent();
+  // Whether this context is current on the calling thread.
+  bool isCurrent() const;
   // Which EGL platform the context lives on, e.g. "surfaceless" or "device".
   const std::string& platform() const { return platform_; }
 

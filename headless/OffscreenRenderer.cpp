@@ -4,6 +4,7 @@
 #include "callbacks/GlFrame.h"
 #include "callbacks/GlFramebufferTarget.h"
 #include "callbacks/GlTimerQuery.h"
+#include "headless/CoinOffscreenContexts.h"
 #include "headless/EglHeadlessContext.h"
 #include "scene/CoinMessageCapture.h"
 
@@ -29,6 +30,7 @@ struct OffscreenRenderer::Impl {
 
 std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(int width, int height,
                                                              std::string& error) {
+  installCoinOffscreenContexts();
   auto impl = std::make_unique<Impl>();
   impl->context = EglHeadlessContext::create(error);
   if (!impl->context) return nullptr;
