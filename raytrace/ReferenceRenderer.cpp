@@ -7,6 +7,7 @@
 #include "raytrace/ParallelRows.h"
 #include "raytrace/SurfaceOptics.h"
 #include "scene/SceneTriangles.h"
+#include "scene/ShapeValidation.h"
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbViewVolume.h>
@@ -581,6 +582,7 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
     action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
     action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
     action.addPreCallback(SoLight::getClassTypeId(), light, &data);
+    action.addPreCallback(SoShape::getClassTypeId(), skipDefectiveShape, nullptr);
     action.addPreCallback(SoShape::getClassTypeId(), shapeStart, &data);
     action.addTriangleCallback(SoShape::getClassTypeId(), triangle, &data);
     action.addLineSegmentCallback(SoShape::getClassTypeId(), lineSegment, &data);

@@ -2,6 +2,8 @@
 
 #include "scene/CoinMessageCapture.h"
 #include "scene/InputError.h"
+#include "scene/SceneFileCheck.h"
+#include "scene/ShapeValidation.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -33,6 +35,7 @@ LoadedScene loadScene(const std::string& path) {
     throw InputError(path + ": error: cannot read: " + std::strerror(errno));
   }
 
+  checkSceneFile(path);
   CoinMessageCapture capture;
   SoInput input;
   if (!input.openFile(path.c_str(), TRUE)) {
@@ -59,6 +62,8 @@ LoadedScene loadScene(const std::string& path) {
   for (const CoinMessageCapture::Message& message : capture.messages()) {
     scene.warnings.push_back(locationPrefix(path, message.line) + "warning: " + message.text);
   }
+  for (std::string& warning : removeDefectiveShapes(root, path))
+    scene.warnings.push_back(std::move(warning));
   return scene;
 }
 

@@ -1,5 +1,7 @@
 #include "scene/SceneTriangles.h"
 
+#include "scene/ShapeValidation.h"
+
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -158,6 +160,7 @@ SoCallbackAction::Response nextShape(void* data, SoCallbackAction*, const SoNode
 SceneTriangles extractShadowCasters(SoNode* root) {
   Collector collector;
   SoCallbackAction action;
+  action.addPreCallback(SoShape::getClassTypeId(), skipDefectiveShape, nullptr);
   action.addPreCallback(SoShape::getClassTypeId(), nextShape, &collector);
   action.addPreCallback(root->getTypeId(), startGroup, nullptr);
   action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);

@@ -1,0 +1,217 @@
+#include "scene/ShapeValidation.h"
+
+#include "scene/SceneTriangles.h"
+
+#include <Inventor/elements/SoCoordinateElement.h>
+#include <Inventor/elements/SoLazyElement.h>
+#include <Inventor/elements/SoMaterialBindingElement.h>
+#include <Inventor/elements/SoNormalBindingElement.h>
+#include <Inventor/elements/SoNormalElement.h>
+#include <Inventor/elements/SoTextureCoordinateElement.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/fields/SoMFInt32.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoIndexedShape.h>
+#include <Inventor/nodes/SoNonIndexedShape.h>
+#include <Inventor/nodes/SoPointSet.h>
+#include <Inventor/nodes/SoQuadMesh.h>
+#include <Inventor/nodes/SoVertexProperty.h>
+
+#include <mutex>
+#include <set>
+#include <utility>
+
+namespace ivshadow {
+namespace {
+
+struct Counts {
+  long coordinates = 0;
+  long materials = 0;
+  long normals = 0;
+  long textureCoordinates = 0;
+};
+
+// What the shape will read: its own SoVertexProperty where that holds values, otherwise the
+// elements in force.
+Counts countsFor(SoCallbackAction* action, const SoVertexShape* shape) {
+  SoState* state = action->getState();
+  Counts counts;
+  counts.coordinates = SoCoordinateElement::getInstance(state)->getNum();
+  counts.materials = SoLazyElement::getInstance(state)->getNumDiffuse();
+  counts.normals = SoNormalElement::getInstance(state)->getNum();
+  counts.textureCoordinates = SoTextureCoordinateElement::getInstance(state)->getNum();
+  if (const auto* property = static_cast<const SoVertexProperty*>(shape->vertexProperty.getValue());
+      property != nullptr && property->isOfType(SoVertexProperty::getClassTypeId())) {
+    if (property->vertex.getNum() > 0) counts.coordinates = property->vertex.getNum();
+    if (property->orderedRGBA.getNum() > 0) counts.materials = property->orderedRGBA.getNum();
+    if (property->normal.getNum() > 0) counts.normals = property->normal.getNum();
+    if (property->texCoord.getNum() > 0) counts.textureCoordinates = property->texCoord.getNum();
+  }
+  return counts;
+}
+
+std::string needMore(const std::string& what, long need, long start, long have) {
+  return what + " asks for " + std::to_string(need) + " vertices from index " +
+         std::to_string(start) + "; the coordinates hold " + std::to_string(have);
+}
+
+std::string nonIndexedDefect(const SoNonIndexedShape* shape, const Counts& counts) {
+  const long start = shape->startIndex.getValue();
+  if (start < 0) return "startIndex " + std::to_string(start) + " is negative";
+  if (shape->isOfType(SoQuadMesh::getClassTypeId())) {
+    const auto* mesh = static_cast<const SoQuadMesh*>(shape);
+    const long rows = mesh->verticesPerColumn.getValue(), columns = mesh->verticesPerRow.getValue();
+    if (rows < 0 || columns < 0)
+      return "verticesPerRow " + std::to_string(columns) + " x verticesPerColumn " +
+             std::to_string(rows) + " is negative";
+    if (start + rows * columns > counts.coordinates)
+      return needMore("verticesPerRow x verticesPerColumn", rows * columns, start,
+                      counts.coordinates);
+    return {};
+  }
+  if (shape->isOfType(SoPointSet::getClassTypeId())) {
+    const long points = static_cast<const SoPointSet*>(shape)->numPoints.getValue();
+    if (points < -1) return "numPoints " + std::to_string(points) + " is negative";
+    if (points >= 0 && start + points > counts.coordinates)
+      return needMore("numPoints", points, start, counts.coordinates);
+    return {};
+  }
+  // FaceSet, LineSet, TriangleStripSet: one count per face, line or strip; -1 ("the rest of
+  // the coordinates") is allowed last.
+  const auto* field = dynamic_cast<const SoMFInt32*>(shape->getField("numVertices"));
+  if (field == nullptr) return {};
+  long total = 0;
+  for (int i = 0; i < field->getNum(); ++i) {
+    const long count = (*field)[i];
+    if (count == -1 && i == field->getNum() - 1) return {};
+    if (count < 0)
+      return "numVertices[" + std::to_string(i) + "] " + std::to_string(count) + " is negative";
+    total += count;
+    if (start + total > counts.coordinates)
+      return needMore("numVertices", total, start, counts.coordinates);
+  }
+  return {};
+}
+
+// An index array checked against what it indexes: -1 ends a face, line or strip; anything
+// else must lie in 0..count-1.
+std::string indexDefect(const SoMFInt32& indices, const char* name, long count,
+                        const char* what) {
+  for (int i = 0; i < indices.getNum(); ++i) {
+    const long index = indices[i];
+    if (index == -1) continue;
+    if (index < 0 || index >= count)
+      return std::string(name) + "[" + std::to_string(i) + "] " + std::to_string(index) +
+             " is outside the " + std::to_string(count) + " " + what;
+  }
+  return {};
+}
+
+bool boundIndexed(int binding) {
+  return binding == SoMaterialBindingElement::PER_PART_INDEXED ||
+         binding == SoMaterialBindingElement::PER_FACE_INDEXED ||
+         binding == SoMaterialBindingElement::PER_VERTEX_INDEXED;
+}
+
+std::string indexedDefect(SoCallbackAction* action, const SoIndexedShape* shape,
+                          const Counts& counts) {
+  if (std::string defect =
+          indexDefect(shape->coordIndex, "coordIndex", counts.coordinates, "coordinates");
+      !defect.empty())
+    return defect;
+  SoState* state = action->getState();
+  // The other arrays are only read under an indexed binding, and only when the shape gives
+  // them values (otherwise Coin uses coordIndex, or generates normals itself).
+  const bool explicitMaterials =
+      shape->materialIndex.getNum() > 0 && shape->materialIndex[0] != -1;
+  if (boundIndexed(SoMaterialBindingElement::get(state)) && explicitMaterials)
+    if (std::string defect =
+            indexDefect(shape->materialIndex, "materialIndex", counts.materials, "materials");
+        !defect.empty())
+      return defect;
+  const bool explicitNormals = shape->normalIndex.getNum() > 0 && shape->normalIndex[0] != -1;
+  if (boundIndexed(SoNormalBindingElement::get(state)) && explicitNormals && counts.normals > 0)
+    if (std::string defect =
+            indexDefect(shape->normalIndex, "normalIndex", counts.normals, "normals");
+        !defect.empty())
+      return defect;
+  const bool explicitTexture =
+      shape->textureCoordIndex.getNum() > 0 && shape->textureCoordIndex[0] != -1;
+  if (explicitTexture && counts.textureCoordinates > 0)
+    if (std::string defect = indexDefect(shape->textureCoordIndex, "textureCoordIndex",
+                                         counts.textureCoordinates, "texture coordinates");
+        !defect.empty())
+      return defect;
+  return {};
+}
+
+}  // namespace
+
+std::string shapeDefect(SoCallbackAction* action, const SoShape* shape) {
+  if (!shape->isOfType(SoVertexShape::getClassTypeId())) return {};
+  const Counts counts = countsFor(action, static_cast<const SoVertexShape*>(shape));
+  if (shape->isOfType(SoNonIndexedShape::getClassTypeId()))
+    return nonIndexedDefect(static_cast<const SoNonIndexedShape*>(shape), counts);
+  if (shape->isOfType(SoIndexedShape::getClassTypeId()))
+    return indexedDefect(action, static_cast<const SoIndexedShape*>(shape), counts);
+  return {};
+}
+
+SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action,
+                                              const SoNode* node) {
+  const std::string defect = shapeDefect(action, static_cast<const SoShape*>(node));
+  if (defect.empty()) return SoCallbackAction::CONTINUE;
+  // Casters are extracted again whenever the scene changes, and by every renderer in the
+  // process: the warning is said once per shape.
+  static std::mutex mutex;
+  static std::set<const SoNode*> warned;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (warned.insert(node).second)
+    SoDebugError::postWarning("ivshadow", "%s: %s; the shape casts no shadow and the reference "
+                                          "does not draw it",
+                              describeNode(node).c_str(), defect.c_str());
+  return SoCallbackAction::PRUNE;
+}
+
+
+std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file) {
+  struct Found {
+    std::vector<std::pair<SoPath*, std::string>> shapes;
+  } found;
+  SoCallbackAction action;
+  // No primitive callbacks are registered, so Coin generates no primitives while looking.
+  action.addPreCallback(
+      SoShape::getClassTypeId(),
+      [](void* data, SoCallbackAction* action, const SoNode* node) {
+        std::string defect = shapeDefect(action, static_cast<const SoShape*>(node));
+        if (!defect.empty()) {
+          auto* path = action->getCurPath()->copy();
+          path->ref();
+          static_cast<Found*>(data)->shapes.emplace_back(path, std::move(defect));
+        }
+        return SoCallbackAction::CONTINUE;
+      },
+      &found);
+  action.apply(root);
+
+  std::vector<std::string> warnings;
+  // Latest first, so that the child indices of paths found earlier stay valid.
+  for (auto it = found.shapes.rbegin(); it != found.shapes.rend(); ++it) {
+    SoPath* path = it->first;
+    SoNode* parent = path->getLength() >= 2 ? path->getNodeFromTail(1) : nullptr;
+    const SoNode* shape = path->getTail();
+    std::string line = file + ": warning: " + describeNode(shape) + ": " + it->second;
+    if (parent != nullptr && parent->isOfType(SoGroup::getClassTypeId())) {
+      static_cast<SoGroup*>(parent)->removeChild(path->getIndexFromTail(0));
+      line += "; the shape is left out";
+    } else {
+      line += "; it casts no shadow";
+    }
+    warnings.insert(warnings.begin(), line);
+    path->unref();
+  }
+  return warnings;
+}
+
+}  // namespace ivshadow

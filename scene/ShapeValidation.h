@@ -1,0 +1,35 @@
+#pragma once
+
+#include <Inventor/actions/SoCallbackAction.h>
+
+#include <string>
+#include <vector>
+
+class SoShape;
+
+namespace ivshadow {
+
+// What is wrong with `shape`'s vertex data in the traversal state of `action`, or an empty
+// string when nothing is: counts that ask for more vertices than the coordinates in force
+// hold (FaceSet, LineSet, TriangleStripSet, QuadMesh, PointSet: startIndex, numVertices,
+// verticesPerRow x verticesPerColumn, numPoints), negative counts, and indices past the end of
+// the coordinates, or of the materials, normals and texture coordinates they index
+// (coordIndex, materialIndex, normalIndex, textureCoordIndex of indexed shapes). Coin's own GL
+// rendering checks these and warns; its generatePrimitives, which SoCallbackAction runs, reads
+// whatever memory the counts name, so these checks come first.
+std::string shapeDefect(SoCallbackAction* action, const SoShape* shape);
+
+// A pre-callback for SoShape (any user data): prunes a shape with a defect, so that no
+// triangle of it is generated, after one warning per shape and process naming it and the
+// defect ("FaceSet 'Wall': numVertices asks for 7 vertices from index 0; the coordinates hold
+// 3"), and continues with every other shape.
+SoCallbackAction::Response skipDefectiveShape(void* data, SoCallbackAction* action,
+                                              const SoNode* node);
+
+// Removes from `root` every shape with a defect, in each place where it has one, so that no
+// renderer, Coin's included, reads past its data (Coin's GL rendering checks some of these
+// counts and not others: a TriangleStripSet asking for 100,000 vertices of three hangs it).
+// Returns one line per removed shape for `file`: "FILE: warning: FaceSet 'Wall': ...; left out".
+std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file);
+
+}  // namespace ivshadow

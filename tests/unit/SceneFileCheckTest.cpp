@@ -1,0 +1,127 @@
+#include "nodes/IvShadowInit.h"
+#include "scene/InputError.h"
+#include "scene/SceneFileCheck.h"
+#include "scene/SceneLoader.h"
+#include "tests/support/TestSupport.h"
+
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace ivshadow {
+namespace {
+
+std::string write(const std::string& name, const std::string& text) {
+  const std::string path = test::outputDir() + "/" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+std::string checkError(const std::string& path) {
+  try {
+    checkSceneFile(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return {};
+}
+
+std::string nested(int levels) {
+  std::string text = "#Inventor V2.1 ascii\n";
+  for (int i = 0; i < levels; ++i) text += "Separator {\n";
+  text += "Cube { }\n";
+  for (int i = 0; i < levels; ++i) text += "}\n";
+  return text;
+}
+
+// The limit counts braces: `levels` separators and the cube's own brace.
+TEST(SceneFileCheck, NestingUpToTheLimitIsReadAndOneLevelMoreIsRefusedAtItsLine) {
+  EXPECT_EQ(checkError(write("at_limit.iv", nested(kMaxSceneNesting - 1))), "");
+  const std::string deeper = write("deeper.iv", nested(kMaxSceneNesting));
+  // Line 1 is the header, line k + 1 opens brace k; the cube opens brace kMaxSceneNesting + 1.
+  EXPECT_EQ(checkError(deeper), deeper + ":" + std::to_string(kMaxSceneNesting + 2) +
+                                    ": error: nodes nested more than " +
+                                    std::to_string(kMaxSceneNesting) + " levels deep");
+}
+
+TEST(SceneFileCheck, HundredThousandNestedSeparatorsAreRefusedBeforeCoinReadsThem) {
+  // 20,000 already crashed Coin's reader (SceneFileCheck.h); loadScene must refuse, not crash.
+  init();
+  const std::string path = write("deep.iv", nested(100000));
+  try {
+    loadScene(path);
+    ADD_FAILURE() << "a scene nested 100,000 levels deep was read";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("nested more than"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(SceneFileCheck, NestingCountsAcrossIncludedFiles) {
+  write("inner.iv", nested(kMaxSceneNesting - 3));  // 998 braces of its own
+  const std::string outer =
+      write("outer.iv", "#Inventor V2.1 ascii\nSeparator {\n  Separator {\n    File { name "
+                        "\"inner.iv\" }\n  }\n}\n");
+  // Two separators and the File's brace above the included file's 998: one too many.
+  const std::string error = checkError(outer);
+  EXPECT_EQ(error.rfind(test::outputDir() + "/inner.iv:", 0), 0u) << error;
+  EXPECT_NE(error.find("nested more than"), std::string::npos) << error;
+}
+
+TEST(SceneFileCheck, LongNamesAreRefusedAtTheirLineAndStringsAreNotNames) {
+  const std::string at = write("name_at_limit.iv", "#Inventor V2.1 ascii\nDEF " +
+                                                       std::string(kMaxSceneTokenLength, 'A') +
+                                                       " Separator { }\n");
+  EXPECT_EQ(checkError(at), "");
+  const std::string longer = write("long_name.iv", "#Inventor V2.1 ascii\n\nDEF " +
+                                                       std::string(1000000, 'A') +
+                                                       " Separator { }\n");
+  EXPECT_EQ(checkError(longer), longer + ":3: error: a name or value of 1000000 characters (at "
+                                         "most 1000 are read)");
+  // A long quoted string (an Info's text, a file name) is a value Coin reads without trouble.
+  const std::string info = write("long_string.iv", "#Inventor V2.1 ascii\nInfo { string \"" +
+                                                       std::string(50000, 'x') + "\" }\n");
+  EXPECT_EQ(checkError(info), "");
+}
+
+TEST(SceneFileCheck, UseOfAnOpenDefinitionIsACycleAndOtherUsesAreNot) {
+  const std::string cycle = write("cycle.iv",
+                                  "#Inventor V2.1 ascii\nDEF A Separator {\n  Separator {\n"
+                                  "    USE A\n  }\n}\n");
+  EXPECT_EQ(checkError(cycle), cycle + ":4: error: USE A inside the node DEF A itself (a node "
+                                       "that contains itself cannot be traversed)");
+  // Ordinary instancing: A is closed when it is used, and the inner DEF A (a new definition
+  // that hides the open one) is closed before its USE.
+  const std::string shared = write("shared.iv",
+                                   "#Inventor V2.1 ascii\nSeparator {\n  DEF A Cube { }\n  USE A\n"
+                                   "  DEF B Separator {\n    DEF B Sphere { }\n    USE B\n  }\n"
+                                   "  USE B\n}\n");
+  EXPECT_EQ(checkError(shared), "");
+  // Braces and USE inside strings and comments are not syntax.
+  const std::string quoted = write("quoted.iv",
+                                   "#Inventor V2.1 ascii\nDEF A Separator {\n  Info { string "
+                                   "\"USE A { \\\" }\" }\n  # USE A\n}\n");
+  EXPECT_EQ(checkError(quoted), "");
+}
+
+TEST(SceneFileCheck, FilesIncludingThemselvesDirectlyOrThroughOthersAreRefused) {
+  const std::string a = write("a.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"b.iv\" }\n}\n");
+  const std::string b = write("b.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a.iv\" }\n}\n");
+  EXPECT_EQ(checkError(a), b + ":4: error: File a.iv includes a file that includes it (the scene "
+                               "would never end)");
+  const std::string twice = write("twice.iv",
+                                  "#Inventor V2.1 ascii\nSeparator {\n  File { name \"leaf.iv\" }\n"
+                                  "  File { name \"leaf.iv\" }\n}\n");
+  write("leaf.iv", "#Inventor V2.1 ascii\nCube { }\n");
+  EXPECT_EQ(checkError(twice), "") << "including one file twice is no cycle";
+}
+
+TEST(SceneFileCheck, BinaryFilesAreLeftToCoin) {
+  const std::string binary = write("binary.iv", "#Inventor V2.1 binary\n" + std::string(3000, '{'));
+  EXPECT_EQ(checkError(binary), "");
+}
+
+}  // namespace
+}  // namespace ivshadow

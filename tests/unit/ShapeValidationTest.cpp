@@ -1,0 +1,122 @@
+#include "nodes/IvShadowInit.h"
+#include "scene/SceneLoader.h"
+#include "scene/SceneTriangles.h"
+#include "tests/support/TestSupport.h"
+
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoShape.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace ivshadow {
+namespace {
+
+struct Case {
+  const char* name;
+  const char* shapes;   // after three coordinates (0 0 0, 1 0 0, 0 1 0)
+  const char* defect;   // the expected warning's text after "FILE: warning: "
+};
+
+// Each shape reads past its data; Coin's generatePrimitives would read (or, for the strip,
+// allocate) whatever its counts name. A valid shape beside it shows what stays.
+const Case kCases[] = {
+    {"face_set_count", "FaceSet { numVertices 7 }",
+     "FaceSet: numVertices asks for 7 vertices from index 0; the coordinates hold 3"},
+    {"face_set_negative", "FaceSet { numVertices -5 }", "FaceSet: numVertices[0] -5 is negative"},
+    {"face_set_start", "FaceSet { startIndex 2 numVertices 3 }",
+     "FaceSet: numVertices asks for 3 vertices from index 2; the coordinates hold 3"},
+    {"line_set_count", "LineSet { numVertices [ 2, 9 ] }",
+     "LineSet: numVertices asks for 11 vertices from index 0; the coordinates hold 3"},
+    {"strip_count", "TriangleStripSet { numVertices 100000 }",
+     "TriangleStripSet: numVertices asks for 100000 vertices from index 0; the coordinates hold 3"},
+    {"quad_mesh", "QuadMesh { verticesPerRow 5 verticesPerColumn 5 }",
+     "QuadMesh: verticesPerRow x verticesPerColumn asks for 25 vertices from index 0; the "
+     "coordinates hold 3"},
+    {"point_set", "PointSet { numPoints 50 }",
+     "PointSet: numPoints asks for 50 vertices from index 0; the coordinates hold 3"},
+    {"indexed_coordinate", "DEF Wall IndexedFaceSet { coordIndex [ 0, 1, 17, -1 ] }",
+     "IndexedFaceSet 'Wall': coordIndex[2] 17 is outside the 3 coordinates"},
+    {"indexed_negative", "IndexedFaceSet { coordIndex [ 0, 1, -7, -1 ] }",
+     "IndexedFaceSet: coordIndex[2] -7 is outside the 3 coordinates"},
+    {"indexed_strip", "IndexedTriangleStripSet { coordIndex [ 0, 1, 2, 99 ] }",
+     "IndexedTriangleStripSet: coordIndex[3] 99 is outside the 3 coordinates"},
+    {"indexed_material",
+     "MaterialBinding { value PER_VERTEX_INDEXED } IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] "
+     "materialIndex [ 0, 5, 0, -1 ] }",
+     "IndexedFaceSet: materialIndex[1] 5 is outside the 1 materials"},
+    {"indexed_normal",
+     "NormalBinding { value PER_VERTEX_INDEXED } Normal { vector [ 0 0 1, 0 0 1 ] } "
+     "IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] normalIndex [ 0, 1, 2, -1 ] }",
+     "IndexedFaceSet: normalIndex[2] 2 is outside the 2 normals"},
+    {"vertex_property",
+     "FaceSet { vertexProperty VertexProperty { vertex [ 0 0 0, 1 0 0 ] } numVertices 3 }",
+     "FaceSet: numVertices asks for 3 vertices from index 0; the coordinates hold 2"},
+};
+
+class DefectiveShape : public ::testing::TestWithParam<Case> {};
+
+int countShapes(SoNode* root) {
+  SoSearchAction search;
+  search.setType(SoShape::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.apply(root);
+  return search.getPaths().getLength();
+}
+
+TEST_P(DefectiveShape, IsLeftOutWithOneWarningNamingItAndTheDefect) {
+  init();
+  const Case& c = GetParam();
+  const std::string path = test::outputDir() + "/scene.iv";
+  std::ofstream(path) << "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, "
+                         "0 1 0 ] }\n  "
+                      << c.shapes << "\n  DEF Good FaceSet { numVertices 3 }\n}\n";
+  const LoadedScene scene = loadScene(path);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0],
+            path + ": warning: " + c.defect + "; the shape is left out");
+  // Only the valid triangle is left, to be drawn and to cast.
+  EXPECT_EQ(countShapes(scene.root.get()), 1);
+  EXPECT_EQ(extractShadowCasters(scene.root.get()).triangleCount(), 1u);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryKind, DefectiveShape, ::testing::ValuesIn(kCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(ShapeValidation, ValidShapesUsingEveryCountAndIndexAreKept) {
+  init();
+  const std::string path = test::outputDir() + "/valid.iv";
+  std::ofstream(path)
+      << "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] }\n"
+         "  FaceSet { numVertices [ 3, -1 ] startIndex 1 }\n"
+         "  TriangleStripSet { numVertices 4 }\n  QuadMesh { verticesPerRow 2 verticesPerColumn 2 }\n"
+         "  PointSet { numPoints -1 }\n  LineSet { numVertices [ 2, 2 ] }\n"
+         "  MaterialBinding { value PER_VERTEX_INDEXED }\n  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
+         "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 1, 3, 2, -1 ] materialIndex [ 0, 1, 1, -1, "
+         "1, 1, 0, -1 ] }\n}\n";
+  const LoadedScene scene = loadScene(path);
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+  EXPECT_EQ(countShapes(scene.root.get()), 6);
+}
+
+// Applications hand the group graphs that never went through loadScene: the casters'
+// extraction checks every shape itself and skips the defective ones.
+TEST(ShapeValidation, CasterExtractionSkipsDefectiveShapesOfAGraphBuiltInMemory) {
+  init();
+  const char text[] =
+      "#Inventor V2.1 ascii\nSeparator { Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+      "TriangleStripSet { numVertices 100000 } FaceSet { numVertices 3 } }\n";
+  SoInput input;
+  input.setBuffer(text, sizeof(text) - 1);
+  CoinRef<SoSeparator> root(SoDB::readAll(&input));
+  ASSERT_TRUE(root);
+  EXPECT_EQ(countShapes(root.get()), 2);
+  EXPECT_EQ(extractShadowCasters(root.get()).triangleCount(), 1u);
+}
+
+}  // namespace
+}  // namespace ivshadow
