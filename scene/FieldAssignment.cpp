@@ -5,6 +5,7 @@
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/SoInput.h>
 #include <Inventor/fields/SoField.h>
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/lists/SoPathList.h>
@@ -93,9 +94,22 @@ void FieldAssignment::apply(SoNode* root, const std::string& sceneName) const {
                        ") has no field '" + field + "' (its fields: " + joined(fieldNames(target)) +
                        ")");
     }
+    // SoField::set reads what it can and ignores the rest ("1e12" as an SFInt32 gives 1, "0 0
+    // 4 garbage" as an SFVec3f drops the garbage), where a file with the same text fails to
+    // read. Reading through an SoInput first shows whether anything is left over.
     CoinMessageCapture capture;
-    if (!fieldPtr->set(value.c_str())) {
-      const std::string detail = capture.firstError().text;
+    SbString previous;
+    fieldPtr->get(previous);
+    SoInput input;
+    input.setBuffer(value.data(), value.size());
+    const bool parsed = fieldPtr->read(&input, SbName(field.c_str()));
+    SbString rest;
+    const bool leftOver = parsed && input.read(rest);
+    if (!parsed || leftOver || !fieldPtr->set(value.c_str())) {
+      fieldPtr->set(previous.getString());
+      const std::string detail = leftOver ? "'" + std::string(rest.getString()) +
+                                                "' follows the value"
+                                          : capture.firstError().text;
       throw InputError(where + "cannot parse '" + value + "' as " +
                        fieldPtr->getTypeId().getName().getString() + " for " + node + "." + field +
                        (detail.empty() ? "" : " (" + detail + ")"));

@@ -91,5 +91,22 @@ TEST_F(FieldAssignmentTest, UnparsableValueNamesTheFieldTypeAndLeavesTheFieldAlo
   EXPECT_FLOAT_EQ(named("Glass")->transparency[0], 0.5f);
 }
 
+// SoField::set alone stops where the value's syntax ends and drops the rest; the same text in
+// a file fails to read, so --set and variants files must fail as well.
+TEST_F(FieldAssignmentTest, TextLeftAfterTheValueIsAnErrorAndLeavesTheFieldAlone) {
+  EXPECT_NE(errorOf("Glass.diffuseColor=0 0 1 garbage")
+                .find("cannot parse '0 0 1 garbage' as MFColor for Glass.diffuseColor ('garbage' "
+                      "follows the value)"),
+            std::string::npos)
+      << errorOf("Glass.diffuseColor=0 0 1 garbage");
+  EXPECT_EQ(named("Glass")->diffuseColor[0], SbColor(1, 1, 1));
+  EXPECT_NE(errorOf("Glass.transparency=0.25x").find("('x' follows the value)"), std::string::npos)
+      << errorOf("Glass.transparency=0.25x");
+  EXPECT_FLOAT_EQ(named("Glass")->transparency[0], 0.5f);
+  // Whole values in every form Coin reads still pass: lists, a trailing space.
+  EXPECT_EQ(errorOf("Glass.diffuseColor=[1 0 0, 0 1 0] "), "");
+  EXPECT_EQ(named("Glass")->diffuseColor.getNum(), 2);
+}
+
 }  // namespace
 }  // namespace ivshadow
