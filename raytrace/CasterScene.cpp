@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -50,12 +51,20 @@ void shadowFilter(const RTCFilterFunctionNArguments* args) {
   args->valid[0] = 0;  // let light through: look for the next surface
 }
 
+// The casters' bounds where they are traced: callers may have moved the vertices (the
+// reference into world space) after the extraction measured them.
+void measureBounds(SceneTriangles& casters) {
+  casters.bounds.makeEmpty();
+  for (const TriangleVertex& vertex : casters.vertices) casters.bounds.extendBy(SbVec3f(vertex.position));
+}
+
 }  // namespace
 
 std::unique_ptr<CasterScene> CasterScene::build(RTCDevice device, SceneTriangles casters,
                                                 std::string& error) {
   std::unique_ptr<CasterScene> result(new CasterScene);
   result->casters_ = std::move(casters);
+  measureBounds(result->casters_);
   const SceneTriangles& triangles = result->casters_;
   result->triangleTexture_.resize(triangles.triangleCount(), -1);
   for (const TriangleBatch& batch : triangles.batches)
@@ -80,6 +89,7 @@ CasterScene::Update CasterScene::update(const SceneTriangles& casters) {
     for (int k = 0; k < 3; ++k)
       moved = moved || casters.vertices[i].position[k] != casters_.vertices[i].position[k];
   casters_ = casters;
+  measureBounds(casters_);
   for (const TriangleBatch& batch : casters_.batches)
     std::fill_n(triangleTexture_.begin() + std::ptrdiff_t(batch.firstVertex / 3),
                 batch.vertexCount / 3, batch.texture);
@@ -114,17 +124,29 @@ glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& nor
                                      const glm::vec3& to, ShadowColourModel model) const {
   if (casters_.vertices.empty()) return glm::vec3(1.0f);
   // Float positions carry a relative error near 1e-7; stepping 1e-5 of the larger of the
-  // point's magnitude and the ray's length off the surface clears it by two orders.
-  const glm::vec3 toLight = to - from;
-  const float length = glm::length(toLight);
-  if (!(length > 0.0f)) return glm::vec3(1.0f);
+  // point's magnitude and the ray's length off the surface clears it by two orders. A light
+  // far outside the casters (1e20 away) needs no more than their extent: past it no caster
+  // can be met, and a step of 1e-5 of the light's distance would jump over all of them.
+  const glm::dvec3 toLight = glm::dvec3(to) - glm::dvec3(from);
+  const double length = glm::length(toLight);
+  if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(1.0f);
   const float magnitude = std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)});
-  const float offset = 1e-5f * std::max(magnitude, length);
-  const float side = glm::dot(normal, toLight) >= 0.0f ? 1.0f : -1.0f;
+  const float extent = casters_.bounds.isEmpty()
+                           ? float(length)
+                           : std::min(float(length), (casters_.bounds.getMax() -
+                                                      casters_.bounds.getMin()).length());
+  const float offset = 1e-5f * std::max(magnitude, extent);
+  const float side = glm::dot(normal, to - from) >= 0.0f ? 1.0f : -1.0f;
   const float normalLength = glm::length(normal);
   const glm::vec3 origin =
       normalLength > 0.0f ? from + normal * (side * offset / normalLength) : from;
-  const glm::vec3 direction = to - origin;
+  // Embree takes only rays whose origin and direction lie within about 1.8e18 (its
+  // ray.valid() assertion aborted the process for a light at 1e20): a unit direction and the
+  // distance as tfar keep every finite light within that.
+  const glm::dvec3 towards = glm::dvec3(to) - glm::dvec3(origin);
+  const double distance = glm::length(towards);
+  if (!(distance > 0.0)) return glm::vec3(1.0f);
+  const glm::vec3 direction = glm::vec3(towards / distance);
 
   thread_local std::vector<std::pair<std::uint32_t, float>> seen;
   seen.clear();
@@ -140,8 +162,8 @@ glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& nor
   ray.dir_x = direction.x;
   ray.dir_y = direction.y;
   ray.dir_z = direction.z;
-  ray.tnear = std::min(offset / length, 0.5f);
-  ray.tfar = 1.0f;  // the light itself
+  ray.tnear = float(std::min(double(offset), 0.5 * distance));
+  ray.tfar = float(std::min(distance, double(std::numeric_limits<float>::max())));  // the light
   ray.mask = 0xFFFFFFFFu;
   ray.flags = 0;
   rtcOccluded1(scene_.get(), &context, &ray);
