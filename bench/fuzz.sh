@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (fuzz/, clang, AddressSanitizer + UBSan) in build-fuzz/ and
+# runs each for SECONDS (default 60) on one core, seeded from the bundled scenes, malformed
+# files, variants files and images. Prints a Markdown table (runs, seconds, findings) and
+# writes it into docs/RELIABILITY.md between its "fuzz table" markers. Findings (crash-*,
+# leak-*, timeout-* files) are kept in build-fuzz/findings/HARNESS/; fix each and add it to
+# the tests as a regression case.
+#   bench/fuzz.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+build=build-fuzz
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  CXX=clang++ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIVSHADOW_FUZZ=ON \
+    -DBUILD_TESTING=OFF >/dev/null
+fi
+harnesses=(SceneReaderFuzzer FieldAssignmentFuzzer VariantsFileFuzzer ImageReaderFuzzer)
+cmake --build "$build" -j "$(nproc)" --target "${harnesses[@]}" >/dev/null
+
+seed() {
+  local harness=$1 dir=$2
+  rm -rf "$dir" && mkdir -p "$dir"
+  case "$harness" in
+    SceneReaderFuzzer)
+      cp iv_scenes/*.iv iv_scenes/malformed/*.iv tests/loader/*.iv "$dir"/
+      # The stress scenes are large and say nothing the small ones do not.
+      rm -f "$dir"/stress_*.iv ;;
+    FieldAssignmentFuzzer)
+      local i=0
+      for text in "Lamp.resolution=512" "Lamp.location=0 0 4" "Lamp.method=RAYS" \
+                  "Lamp.maxLayers=64" "Lamp.colorModel=POWER" "Lamp.bias=0.001" \
+                  "Group.isActive=FALSE" "Peel.maxPasses=8" "Glass.transparency=[0.5, 1]" \
+                  "Lamp.color=1 0 0"; do
+        printf '%s' "$text" >"$dir/seed$((i++))"
+      done ;;
+    VariantsFileFuzzer)
+      cp iv_scenes/*.variants tests/variants/*.variants "$dir"/ ;;
+    ImageReaderFuzzer)
+      local i=0
+      for png in docs/trade/*/*.png; do
+        { printf '\001'; cat "$png"; } >"$dir/png$((i++))"
+      done
+      { printf '\000PF\n2 1\n-1.0\n'; head -c 24 /dev/zero; } >"$dir/pfm0" ;;
+  esac
+}
+
+export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/sanitizers/ubsan.supp
+table="| harness | seconds | runs | findings |
+|---|---|---|---|"
+for harness in "${harnesses[@]}"; do
+  corpus=$build/corpus/$harness findings=$build/findings/$harness
+  seed "$harness" "$corpus"
+  mkdir -p "$findings"
+  log=$build/$harness.log
+  "$build/fuzz/$harness" "$corpus" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=20 \
+    -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || true
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  found=$(find "$findings" -type f | wc -l)
+  table+=$'\n'"| $harness | $seconds | ${runs:-0} | $found |"
+  echo "$harness: ${runs:-0} runs in $seconds s, $found findings ($log)" >&2
+done
+echo "$table"
+python3 - "$table" <<'PY'
+import re, sys
+path = "docs/RELIABILITY.md"
+text = open(path).read()
+table = sys.argv[1]
+new = re.sub(r"(<!-- fuzz table -->\n).*?(\n<!-- /fuzz table -->)",
+             lambda m: m.group(1) + table + m.group(2), text, flags=re.S)
+open(path, "w").write(new)
+PY
