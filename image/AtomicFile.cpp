@@ -20,16 +20,46 @@ std::string temporaryNameFor(const std::string& path) {
   return (target.parent_path() / name).string();
 }
 
+// The file a path finally names: a symbolic link is followed (a rename over the link would
+// replace the link with a file and leave its target as it was).
+std::filesystem::path finalTarget(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  fs::path current = path;
+  std::error_code ec;
+  // Linux gives up after 40 links (ELOOP); so does this.
+  for (int i = 0; i < 40 && fs::is_symlink(fs::symlink_status(current, ec)); ++i) {
+    const fs::path next = fs::read_symlink(current, ec);
+    if (ec) break;
+    current = next.is_absolute() ? next : current.parent_path() / next;
+  }
+  return current;
+}
+
+// A device, a pipe or a socket that already exists: written to in place (`-o /dev/null`,
+// `-o /dev/stdout`), never replaced by a renamed file.
+bool writesThrough(const std::filesystem::path& target) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(target, ec);
+  return !ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+         !std::filesystem::is_directory(status);
+}
+
 }  // namespace
 
-AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), temporary_(temporaryNameFor(path_)) {}
+AtomicFile::AtomicFile(std::string path) : path_(finalTarget(path).string()) {
+  writeThrough_ = writesThrough(path_);
+  temporary_ = writeThrough_ ? path_ : temporaryNameFor(path_);
+}
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) std::remove(temporary_.c_str());
+  if (!committed_ && !writeThrough_) std::remove(temporary_.c_str());
 }
 
 void AtomicFile::commit() {
+  if (writeThrough_) {
+    committed_ = true;
+    return;
+  }
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
     throw std::runtime_error(path_ + ": error: cannot write: " + std::strerror(errno));
   }
@@ -39,7 +69,12 @@ void AtomicFile::commit() {
 void AtomicFile::checkWritable(const std::string& path, const std::string& what) {
   namespace fs = std::filesystem;
   if (path.empty()) throw InputError(what + ": error: empty file name");
-  const fs::path target(path);
+  const fs::path target = finalTarget(path);
+  if (writesThrough(target)) {
+    if (::access(target.c_str(), W_OK) != 0)
+      throw InputError(path + ": error: cannot write " + what + ": " + std::strerror(errno));
+    return;
+  }
   const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(directory, ec)) {
@@ -52,6 +87,13 @@ void AtomicFile::checkWritable(const std::string& path, const std::string& what)
   if (::access(directory.c_str(), W_OK) != 0) {
     throw InputError(path + ": error: cannot write " + what + ": " + std::strerror(errno));
   }
+}
+
+void AtomicFile::checkNotInput(const std::string& path, const std::string& input,
+                               const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::equivalent(finalTarget(path), input, ec) && !ec)
+    throw InputError(path + ": error: cannot write " + what + " over the input file " + input);
 }
 
 void writeTextFileAtomically(const std::string& path, const std::string& text) {

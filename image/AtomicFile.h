@@ -6,7 +6,9 @@ namespace ivshadow {
 
 // Writes go to a temporary file beside `path`; commit() renames it over `path`. A file that
 // is not committed (an error, an exception, Ctrl-C handled by the caller) is removed, so no
-// partial output is ever left under the final name.
+// partial output is ever left under the final name. A symbolic link is followed and its
+// target replaced; a device, pipe or socket (`/dev/null`, `/dev/stdout`) is written to in
+// place, since replacing it (as root) would destroy it.
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);
@@ -21,11 +23,16 @@ class AtomicFile {
   // Throws InputError when `path` cannot be created (missing directory, no permission), so
   // bad output paths are reported before any work is done.
   static void checkWritable(const std::string& path, const std::string& what);
+  // Throws InputError when `path` names the file `input` (through links or other
+  // spellings): an output must never overwrite the scene it was made from.
+  static void checkNotInput(const std::string& path, const std::string& input,
+                            const std::string& what);
 
  private:
   std::string path_;
   std::string temporary_;
   bool committed_ = false;
+  bool writeThrough_ = false;
 };
 
 // Writes `text` to `path` through an AtomicFile.
