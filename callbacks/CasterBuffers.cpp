@@ -30,8 +30,6 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
   // mutable buffer that is reallocated in place is enough.
   glNamedBufferData(vertexBuffer_.get(), GLsizeiptr(size > 0 ? size : 1),
                     size > 0 ? triangles.vertices.data() : nullptr, GL_STATIC_DRAW);
-  bytes_ = size;
-  triangles_ = triangles.triangleCount();
 
   batches_.clear();
   for (const TriangleBatch& batch : triangles.batches)

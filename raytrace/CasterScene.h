@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/GlLimits.h"
+#include "scene/ShadowTypes.h"
 #include "raytrace/EmbreeHandles.h"
 #include "scene/SceneTriangles.h"
 
@@ -42,7 +42,6 @@ class CasterScene {
   glm::vec3 transmittance(const glm::vec3& from, const glm::vec3& normal, const glm::vec3& to,
                           ShadowColourModel model) const;
 
-  const SceneTriangles& casters() const { return casters_; }
   bool coloured() const { return casters_.hasColouredTransparent; }
 
   // Colour and opacity of triangle `primitive` at barycentrics (u, v), texture applied.

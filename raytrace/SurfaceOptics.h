@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/GlLimits.h"
+#include "scene/ShadowTypes.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
