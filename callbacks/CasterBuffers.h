@@ -2,7 +2,6 @@
 
 #include "callbacks/GlHandles.h"
 
-#include <cstddef>
 #include <vector>
 
 namespace ivshadow {

@@ -4,11 +4,11 @@
 // Usage: render_scene_graph OUT.png
 #include "headless/OffscreenRenderer.h"
 #include "image/PngFile.h"
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoPeelingSeparator.h"
-#include "nodes/SoTransparentShadowGroup.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoPeelingSeparator.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/ViewSetup.h"
 
 #include <Inventor/SbViewportRegion.h>

@@ -1,6 +1,6 @@
 #include "nodes/DeepShadowSettings.h"
 
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 
 #include <Inventor/errors/SoDebugError.h>
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 class SoDeepShadowLight;
 
 namespace ivshadow {
@@ -20,6 +22,6 @@ struct DeepShadowSettings {
 
 // Reads and clamps the light's fields; each field that is out of range is reported once per
 // light through SoDebugError::postWarning, naming the node and the field.
-DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
+IVSHADOW_INTERNAL DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
 
 }  // namespace ivshadow
