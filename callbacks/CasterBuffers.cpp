@@ -53,7 +53,6 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
     glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, filter);
     glTextureParameteri(name, GL_TEXTURE_WRAP_S, image.repeatS ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     glTextureParameteri(name, GL_TEXTURE_WRAP_T, image.repeatT ? GL_REPEAT : GL_CLAMP_TO_EDGE);
-    bytes_ += image.rgba.size();
     textures_.push_back(std::move(texture));
   }
 }
