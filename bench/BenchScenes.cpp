@@ -1,7 +1,7 @@
 #include "BenchScenes.h"
 
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoTransparentShadowGroup.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowGroup.h>

@@ -4,9 +4,9 @@
 // --benchmark_filter='Map|Frame|Coin'. Times are wall clock, GPU finished.
 #include "BenchScenes.h"
 #include "headless/OffscreenRenderer.h"
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoDeepShadowLight.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 

@@ -3,7 +3,7 @@
 // (--benchmark_format=json for machines). Times are wall clock to glFinish per frame.
 #include "callbacks/GlCapabilities.h"
 #include "headless/OffscreenRenderer.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "scene/SceneLoader.h"
 #include "scene/TransparencyType.h"
 #include "scene/ViewSetup.h"

@@ -4,7 +4,7 @@
 // --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
 // largest channel error (0..255) against the exact CPU compositing of tests/gl/PeelReference.
 #include "headless/OffscreenRenderer.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "tests/gl/PeelReference.h"
 
 #include <Inventor/SoDB.h>

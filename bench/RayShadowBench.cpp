@@ -5,9 +5,9 @@
 // GPU finished.
 #include "BenchScenes.h"
 #include "headless/OffscreenRenderer.h"
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoDeepShadowLight.h"
 
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoMaterial.h>

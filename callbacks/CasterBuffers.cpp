@@ -30,8 +30,6 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
   // mutable buffer that is reallocated in place is enough.
   glNamedBufferData(vertexBuffer_.get(), GLsizeiptr(size > 0 ? size : 1),
                     size > 0 ? triangles.vertices.data() : nullptr, GL_STATIC_DRAW);
-  bytes_ = size;
-  triangles_ = triangles.triangleCount();
 
   batches_.clear();
   for (const TriangleBatch& batch : triangles.batches)
@@ -55,7 +53,6 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
     glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, filter);
     glTextureParameteri(name, GL_TEXTURE_WRAP_S, image.repeatS ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     glTextureParameteri(name, GL_TEXTURE_WRAP_T, image.repeatT ? GL_REPEAT : GL_CLAMP_TO_EDGE);
-    bytes_ += image.rgba.size();
     textures_.push_back(std::move(texture));
   }
 }

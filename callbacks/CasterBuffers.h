@@ -2,7 +2,6 @@
 
 #include "callbacks/GlHandles.h"
 
-#include <cstddef>
 #include <vector>
 
 namespace ivshadow {
@@ -18,8 +17,6 @@ class CasterBuffers {
   // Draws every batch with `program` current, binding each batch's texture to `textureUnit`
   // and setting the program's uTexture* uniforms.
   void draw(const GlProgram& program, int textureUnit) const;
-  std::size_t bytes() const { return bytes_; }
-  std::size_t triangles() const { return triangles_; }
 
  private:
   struct Batch {
@@ -36,8 +33,6 @@ class CasterBuffers {
   GlBuffer vertexBuffer_;
   std::vector<Batch> batches_;
   std::vector<Texture> textures_;
-  std::size_t bytes_ = 0;
-  std::size_t triangles_ = 0;
 };
 
 }  // namespace ivshadow

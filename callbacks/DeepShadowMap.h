@@ -1,7 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
-#include "callbacks/GlLimits.h"
+#include "scene/ShadowTypes.h"
 
 #include <array>
 #include <cstdint>

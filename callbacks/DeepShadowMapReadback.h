@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@ struct MapLayerReadback {
 // shading program, the current program then (its uMapDepth and uMapVisibility samplers).
 // Stalls the GL until the map is read; restores the active texture unit, the pack buffer
 // and the pixel-store state. Returns false with the reason in `whyNot`.
-bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out, std::string& whyNot);
+IVSHADOW_INTERNAL bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out,
+                                         std::string& whyNot);
 
 }  // namespace ivshadow

@@ -35,7 +35,6 @@ class DeepShadowPass {
   MapBuildResult build(int slot, const MapRequest& request);
   std::uint64_t mapBytes(int slot) const;
   std::uint64_t mapPeakBytes(int slot) const;
-  std::size_t casterBytes() const { return casters_.bytes(); }
   // Drops the maps of slots >= `count` (their lights are gone).
   void keepSlots(int count);
 

@@ -1,11 +1,13 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <string>
 
 namespace ivshadow {
 
 // What the current GL context offers, read once per context right after it is made current.
-struct GlCapabilities {
+struct IVSHADOW_INTERNAL GlCapabilities {
   std::string version;
   std::string renderer;
   std::string vendor;

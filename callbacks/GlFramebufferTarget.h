@@ -2,13 +2,14 @@
 
 #include "callbacks/GlHandles.h"
 #include "image/Image.h"
+#include "ivshadow/Export.h"
 
 #include <string>
 
 namespace ivshadow {
 
 // An off-screen render target: RGBA8 colour plus a 24-bit depth / 8-bit stencil buffer.
-class GlFramebufferTarget {
+class IVSHADOW_INTERNAL GlFramebufferTarget {
  public:
   // Builds the target in the current context; on failure returns an empty target and says
   // why in `error`.

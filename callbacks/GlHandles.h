@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlObject.h"
+#include "ivshadow/Export.h"
 
 namespace ivshadow {
 
@@ -17,10 +18,10 @@ struct GlVertexArrayRelease {
 struct GlProgramRelease {
   void operator()(unsigned int name) const;
 };
-struct GlFramebufferObjectRelease {
+struct IVSHADOW_INTERNAL GlFramebufferObjectRelease {
   void operator()(unsigned int name) const;
 };
-struct GlRenderbufferObjectRelease {
+struct IVSHADOW_INTERNAL GlRenderbufferObjectRelease {
   void operator()(unsigned int name) const;
 };
 

@@ -166,13 +166,4 @@ std::unique_ptr<GlStateScope> RayShadowPass::bind() const {
   return scope;
 }
 
-std::uint64_t RayShadowPass::bytes() const {
-  const std::uint64_t capture =
-      std::uint64_t(width_) * std::uint64_t(height_) * (3 * (16 + 16) + 4);
-  const std::uint64_t shading = std::uint64_t(shadingWidth_) * std::uint64_t(shadingHeight_) *
-                                (std::uint64_t(uploadedLayers_) * 4 +
-                                 std::uint64_t(uploadedLayers_) * std::uint64_t(uploadedRays_) * 8);
-  return capture + shading;
-}
-
 }  // namespace ivshadow

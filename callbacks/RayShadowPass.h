@@ -1,7 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
-#include "raytrace/ScreenShadowTracer.h"
+#include "scene/ShadowTypes.h"
 
 #include <cstdint>
 #include <memory>
@@ -45,8 +45,6 @@ class RayShadowPass {
   int layers() const { return uploadedLayers_; }
   // Binds the shading textures until the returned scope ends.
   std::unique_ptr<GlStateScope> bind() const;
-  // GPU memory held between frames: capture targets and shading textures.
-  std::uint64_t bytes() const;
 
  private:
   void allocate(int width, int height);

@@ -7,7 +7,7 @@
 #include "image/ImageSize.h"
 #include "image/PfmFile.h"
 #include "image/PngFile.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "raytrace/ReferenceRenderer.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"

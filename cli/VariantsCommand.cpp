@@ -5,7 +5,7 @@
 #include "cli/ProgressBar.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
 #include "scene/VariantsFile.h"

@@ -3,7 +3,7 @@
 #include "cli/RenderCommand.h"
 #include "cli/TradeCommand.h"
 #include "cli/VariantsCommand.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "viewer/ViewerApplication.h"
 #include "viewer/ViewerCommandLine.h"
 

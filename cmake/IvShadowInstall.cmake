@@ -3,13 +3,15 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
+# Exactly the files of include/ivshadow/ (tests/layers/check_layers.py fails on a difference).
 set(IVSHADOW_PUBLIC_HEADERS
-  nodes/IvShadowInit.h
-  nodes/SoDeepShadowLight.h
-  nodes/SoTransparentShadowGroup.h
-  nodes/SoPeelingSeparator.h
-  nodes/DeepShadowStatistics.h
-  nodes/PeelStatistics.h)
+  include/ivshadow/Export.h
+  include/ivshadow/IvShadowInit.h
+  include/ivshadow/SoDeepShadowLight.h
+  include/ivshadow/SoTransparentShadowGroup.h
+  include/ivshadow/SoPeelingSeparator.h
+  include/ivshadow/DeepShadowStatistics.h
+  include/ivshadow/PeelStatistics.h)
 
 target_include_directories(ivshadow_core INTERFACE
                            $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)

@@ -1,17 +1,19 @@
 // Builds a scene graph in C++ with the plugin's nodes — a red and a green glass slab over a
 // white floor, in a SoTransparentShadowGroup lit by a SoDeepShadowLight, the glasses inside a
-// SoPeelingSeparator — and renders it headlessly to a PNG with the plugin's renderer.
+// SoPeelingSeparator — and renders it headlessly to a PNG. It uses the installed headers only;
+// the GL context is its own (ExampleGl.h), the PNG is written with libpng.
 // Usage: render_scene_graph OUT.png
-#include "headless/OffscreenRenderer.h"
-#include "image/PngFile.h"
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoPeelingSeparator.h"
-#include "nodes/SoTransparentShadowGroup.h"
-#include "scene/ViewSetup.h"
+#include <ivshadow/DeepShadowStatistics.h>
+#include <ivshadow/IvShadowInit.h>
+#include <ivshadow/SoDeepShadowLight.h>
+#include <ivshadow/SoPeelingSeparator.h>
+#include <ivshadow/SoTransparentShadowGroup.h>
 
-#include <Inventor/SbViewportRegion.h>
+#include "ExampleGl.h"
+
+#include <png.h>
+
+#include <Inventor/misc/SoContextHandler.h>
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
@@ -20,8 +22,26 @@
 #include <Inventor/nodes/SoTranslation.h>
 
 #include <iostream>
+#include <vector>
 
 namespace {
+
+constexpr int kWidth = 640;
+constexpr int kHeight = 480;
+
+// Reads the framebuffer and writes it as an 8-bit RGB PNG.
+bool writeFramebufferPng(const char* path) {
+  std::vector<unsigned char> pixels(std::size_t(kWidth) * std::size_t(kHeight) * 3);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, kWidth, kHeight, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = kWidth;
+  image.height = kHeight;
+  image.format = PNG_FORMAT_RGB;
+  // A negative row stride: GL rows are bottom-up, PNG rows top-down.
+  return png_image_write_to_file(&image, path, 0, pixels.data(), -kWidth * 3, nullptr) != 0;
+}
 
 // A square slab `size` wide and `thickness` high centred at `centre`, in its own separator.
 void addSlab(SoGroup* scene, const SbVec3f& centre, float size, float thickness,
@@ -75,19 +95,22 @@ int main(int argc, char** argv) {
   addSlab(glasses, SbVec3f(-0.3f, 1.0f, 0.0f), 1.5f, 0.05f, SbColor(1.0f, 0.0f, 0.0f), 0.5f);
   addSlab(glasses, SbVec3f(0.4f, 1.6f, 0.3f), 1.2f, 0.05f, SbColor(0.0f, 1.0f, 0.0f), 0.5f);
 
-  std::string error;
-  auto renderer = ivshadow::OffscreenRenderer::create(640, 480, error);
-  if (!renderer) {
-    std::cerr << "render_scene_graph: error: " << error << '\n';
+  if (!example::makeContext()) {
+    std::cerr << "render_scene_graph: error: no EGL context\n";
     scene->unref();
     return 3;
   }
-  // ViewSetup adds a camera or headlight only where a scene lacks them; this one has both.
-  const ivshadow::ViewSetup view = ivshadow::ViewSetup::prepare(scene, SbViewportRegion(640, 480));
-  renderer->render(view.root.get());
-  ivshadow::writePng(argv[1], renderer->read());
+  example::bindFramebuffer(kWidth, kHeight);
+  const std::uint32_t cacheContext = example::render(scene, kWidth, kHeight);
+  if (!writeFramebufferPng(argv[1])) {
+    std::cerr << "render_scene_graph: error: cannot write " << argv[1] << '\n';
+    scene->unref();
+    return 1;
+  }
   // Statistics of the frame: the map was built once, the glasses peeled.
   const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(scene);
+  // Let the plugin free its GL resources while the context is still current.
+  SoContextHandler::destructingContext(cacheContext);
   scene->unref();
   std::cout << "wrote " << argv[1] << " (deep shadow map built " << stats.rebuilds << " time, "
             << stats.lights.size() << " light)\n";

@@ -2,9 +2,9 @@
 // transparent, coloured shadows with the few lines marked "plugin": one init() call, and the
 // application's root wrapped in a SoTransparentShadowGroup with a SoDeepShadowLight.
 // Usage: soqt_add_shadows SCENE.iv [--quit-after-ms N]
-#include "nodes/IvShadowInit.h"              // plugin
-#include "nodes/SoDeepShadowLight.h"         // plugin
-#include "nodes/SoTransparentShadowGroup.h"  // plugin
+#include <ivshadow/IvShadowInit.h>              // plugin
+#include <ivshadow/SoDeepShadowLight.h>         // plugin
+#include <ivshadow/SoTransparentShadowGroup.h>  // plugin
 
 #include <Inventor/Qt/SoQt.h>
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>

@@ -1,12 +1,14 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <cstdint>
 #include <vector>
 
 namespace ivshadow {
 
 // An 8-bit RGBA picture, rows top to bottom, as written to PNG.
-class Image {
+class IVSHADOW_INTERNAL Image {
  public:
   Image() = default;
   Image(int width, int height);

@@ -8,18 +8,19 @@
 // names to the plugin library; the So-prefixed functions are the nodes' own, and the
 // unprefixed ones below forward to them. Each registers the node (without the prefix, as
 // Coin's own nodes are registered), so both spellings then resolve to the same type.
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoPeelingSeparator.h"
-#include "nodes/SoTransparentShadowGroup.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoPeelingSeparator.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 
-// Declared and defined out of line so that each is an exported function of the library.
-struct TransparentShadowGroup {
+// Declared and defined out of line, and marked for export (the library hides everything
+// else), so that each is a function of the library that Coin can look up by name.
+struct IVSHADOW_API TransparentShadowGroup {
   static void initClass();
 };
-struct DeepShadowLight {
+struct IVSHADOW_API DeepShadowLight {
   static void initClass();
 };
-struct PeelingSeparator {
+struct IVSHADOW_API PeelingSeparator {
   static void initClass();
 };
 

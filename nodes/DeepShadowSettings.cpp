@@ -1,6 +1,6 @@
 #include "nodes/DeepShadowSettings.h"
 
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 
 #include <Inventor/errors/SoDebugError.h>
 
@@ -52,13 +52,6 @@ float finiteOr(const SoDeepShadowLight& light, const char* field, float value, f
 }
 
 }  // namespace
-
-bool DeepShadowSettings::operator==(const DeepShadowSettings& o) const {
-  return resolution == o.resolution && maxLayers == o.maxLayers && nearRadius == o.nearRadius &&
-         farRadius == o.farRadius && bias == o.bias && shadowColor == o.shadowColor &&
-         colorModel == o.colorModel && halfPrecision == o.halfPrecision &&
-         filterRadius == o.filterRadius && method == o.method;
-}
 
 DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize) {
   DeepShadowSettings s;

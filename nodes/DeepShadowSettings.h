@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 class SoDeepShadowLight;
 
 namespace ivshadow {
@@ -16,13 +18,10 @@ struct DeepShadowSettings {
   bool halfPrecision = false;
   int filterRadius = 0;  // 0 = nearest texel, r = (2r+1)^2 taps
   int method = 0;        // SoDeepShadowLight::Method as set (AUTO not yet resolved)
-
-  bool operator==(const DeepShadowSettings& other) const;
-  bool operator!=(const DeepShadowSettings& other) const { return !(*this == other); }
 };
 
 // Reads and clamps the light's fields; each field that is out of range is reported once per
 // light through SoDebugError::postWarning, naming the node and the field.
-DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
+IVSHADOW_INTERNAL DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
 
 }  // namespace ivshadow

@@ -1,7 +1,7 @@
-#include "nodes/DeepShadowStatistics.h"
+#include "ivshadow/DeepShadowStatistics.h"
 
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
-#include "nodes/SoTransparentShadowGroup.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,8 +1,8 @@
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoPeelingSeparator.h"
-#include "nodes/SoTransparentShadowGroup.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoPeelingSeparator.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 
 #include <Inventor/SoDB.h>
 

@@ -1,7 +1,7 @@
-#include "nodes/PeelStatistics.h"
+#include "ivshadow/PeelStatistics.h"
 
+#include "ivshadow/SoPeelingSeparator.h"
 #include "nodes/NodesOfType.h"
-#include "nodes/SoPeelingSeparator.h"
 
 namespace ivshadow {
 

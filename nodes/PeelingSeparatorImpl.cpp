@@ -2,8 +2,8 @@
 
 #include "callbacks/PeelPass.h"
 #include "callbacks/ShadingUniforms.h"
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/SoPeelingSeparator.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/SoPeelingSeparator.h"
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SbViewportRegion.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "nodes/PeelStatistics.h"
+#include "ivshadow/PeelStatistics.h"
 #include "nodes/PerContext.h"
 #include "nodes/TransparentShadowGroupImpl.h"
 

@@ -1,4 +1,4 @@
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 
 SO_NODE_SOURCE(SoDeepShadowLight);
 

@@ -1,7 +1,7 @@
-#include "nodes/SoPeelingSeparator.h"
+#include "ivshadow/SoPeelingSeparator.h"
 
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/PeelingSeparatorImpl.h"
-#include "nodes/SoTransparentShadowGroup.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 

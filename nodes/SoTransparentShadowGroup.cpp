@@ -1,6 +1,6 @@
-#include "nodes/SoTransparentShadowGroup.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/TransparentShadowGroupImpl.h"
 
 #include <Inventor/actions/SoCallbackAction.h>

@@ -5,7 +5,7 @@
 #include "callbacks/GlStateScope.h"
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SoPath.h>

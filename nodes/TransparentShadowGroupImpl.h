@@ -2,8 +2,9 @@
 
 #include "callbacks/GlPassTimer.h"
 #include "callbacks/ShadingUniforms.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/Export.h"
 #include "nodes/DeepShadowSettings.h"
-#include "nodes/DeepShadowStatistics.h"
 #include "nodes/PerContext.h"
 #include "nodes/ShadingProgram.h"
 #include "raytrace/CasterScene.h"
@@ -56,10 +57,10 @@ class TransparentShadowGroupImpl {
   const DeepShadowStatistics& statistics() const { return statistics_; }
   // The innermost group with deep shadows rendering its children right now on this thread,
   // or null: a peeling separator inside one shades its layers with that group's shading.
-  static TransparentShadowGroupImpl* activeGroup();
+  IVSHADOW_INTERNAL static TransparentShadowGroupImpl* activeGroup();
   // True while a group draws its children into the capture targets of RAYS lights: a
   // peeling separator then draws its children plainly, with the group's capture program.
-  static bool capturing();
+  IVSHADOW_INTERNAL static bool capturing();
 
   // While the children render: binds the peel-pass variant of the shading program (through
   // Coin, in the action's current state) with the same uniforms, and returns its GL name

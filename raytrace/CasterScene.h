@@ -1,8 +1,9 @@
 #pragma once
 
-#include "callbacks/GlLimits.h"
+#include "ivshadow/Export.h"
 #include "raytrace/EmbreeHandles.h"
 #include "scene/SceneTriangles.h"
+#include "scene/ShadowTypes.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -18,7 +19,7 @@ namespace ivshadow {
 // every surface in between. The casters and the surface model are the GL path's own
 // (extractShadowCasters, SurfaceOptics), so the answer differs from the map only by the map's
 // discretisation.
-class CasterScene {
+class IVSHADOW_INTERNAL CasterScene {
  public:
   // Null with the reason in `error` when Embree fails (no memory, bad device).
   static std::unique_ptr<CasterScene> build(RTCDevice device, SceneTriangles casters,
@@ -42,7 +43,6 @@ class CasterScene {
   glm::vec3 transmittance(const glm::vec3& from, const glm::vec3& normal, const glm::vec3& to,
                           ShadowColourModel model) const;
 
-  const SceneTriangles& casters() const { return casters_; }
   bool coloured() const { return casters_.hasColouredTransparent; }
 
   // Colour and opacity of triangle `primitive` at barycentrics (u, v), texture applied.

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <embree3/rtcore.h>
 
 #include <atomic>
@@ -33,12 +35,13 @@ struct EmbreeMemory {
 // A robust scene of `count` separate triangles whose corner i (0 .. 3 count - 1) is at
 // corner(i)[0..2], with `filter` called for every hit found by rtcIntersect1 or rtcOccluded1
 // (triangle k is primitive k). Null with the reason in `error` when Embree cannot hold it.
-EmbreeScene buildTriangleScene(RTCDevice device, std::size_t count,
-                               const std::function<const float*(std::size_t)>& corner,
-                               RTCFilterFunctionN filter, std::string& error);
+IVSHADOW_INTERNAL EmbreeScene buildTriangleScene(
+    RTCDevice device, std::size_t count, const std::function<const float*(std::size_t)>& corner,
+    RTCFilterFunctionN filter, std::string& error);
 
 // A device using every core; null with Embree's reason in `error` when it cannot be made.
 // `memory`, when given, must outlive the device.
-EmbreeDevice createEmbreeDevice(std::string& error, EmbreeMemory* memory = nullptr);
+IVSHADOW_INTERNAL EmbreeDevice createEmbreeDevice(std::string& error,
+                                                  EmbreeMemory* memory = nullptr);
 
 }  // namespace ivshadow

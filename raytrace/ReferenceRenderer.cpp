@@ -1,7 +1,7 @@
 #include "raytrace/ReferenceRenderer.h"
 
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoTransparentShadowGroup.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
 #include "raytrace/ParallelRows.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/GlLimits.h"
+#include "scene/ShadowTypes.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -9,21 +9,6 @@
 namespace ivshadow {
 
 class CasterScene;
-
-// One captured layer of visible surfaces, read back from the GL capture pass: per pixel
-// (rows bottom-up, as GL stores them) the position in the group's coordinates and window
-// depth (depth 1: nothing), and the geometric normal with a flag (w == 2: shaded by the group
-// and to be traced).
-struct SurfaceLayer {
-  int width = 0;
-  int height = 0;
-  std::vector<float> position;  // x, y, z, window depth
-  std::vector<float> normal;    // x, y, z, flag
-
-  bool traced(std::size_t pixel) const {
-    return position[pixel * 4 + 3] < 1.0f && normal[pixel * 4 + 3] > 1.5f;
-  }
-};
 
 struct RayLight {
   float position[3] = {0.0f, 0.0f, 0.0f};  // in the group's coordinates

@@ -1,6 +1,7 @@
 #pragma once
 
-#include "callbacks/GlLimits.h"
+#include "ivshadow/Export.h"
+#include "scene/ShadowTypes.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -28,14 +29,14 @@ inline bool sameSurface(float a, float b) {
 }
 
 // Fraction of light per channel that passes a surface of colour c.rgb and opacity c.a.
-glm::vec3 transmittance(const glm::vec4& c, ShadowColourModel model);
+IVSHADOW_INTERNAL glm::vec3 transmittance(const glm::vec4& c, ShadowColourModel model);
 
 // Coin's texture models (SoMultiTextureImageElement::Model values = GL enums); 0 = none.
-glm::vec4 applyTextureModel(const glm::vec4& colour, const glm::vec4& texel, int model,
-                            const glm::vec3& blendColour);
+IVSHADOW_INTERNAL glm::vec4 applyTextureModel(const glm::vec4& colour, const glm::vec4& texel,
+                                              int model, const glm::vec3& blendColour);
 
 // Samples `image` at (s, t) as GL would: nearest or bilinear, repeat or clamp to edge.
-glm::vec4 sampleTexture(const TextureImage& image, float s, float t);
+IVSHADOW_INTERNAL glm::vec4 sampleTexture(const TextureImage& image, float s, float t);
 
 // What a triangle shows at barycentrics (u, v) of corners 1 and 2: its corners' colour and
 // opacity interpolated, and with a texture the texel at the interpolated coordinates.
@@ -43,11 +44,12 @@ struct SurfaceSample {
   glm::vec4 colour{1.0f};
   glm::vec4 texel{1.0f};
 };
-SurfaceSample sampleSurface(const glm::vec4 colours[3], const glm::vec2 texCoords[3],
-                            const TextureImage* image, float u, float v);
+IVSHADOW_INTERNAL SurfaceSample sampleSurface(const glm::vec4 colours[3],
+                                              const glm::vec2 texCoords[3],
+                                              const TextureImage* image, float u, float v);
 // The sample's colour after the image's texture model (the colour itself without an image),
 // as Coin's fixed-function texturing and the shading program apply it.
-glm::vec4 texturedColour(const glm::vec4& colour, const glm::vec4& texel,
-                         const TextureImage* image);
+IVSHADOW_INTERNAL glm::vec4 texturedColour(const glm::vec4& colour, const glm::vec4& texel,
+                                           const TextureImage* image);
 
 }  // namespace ivshadow

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <Inventor/SbBox3f.h>
 #include <Inventor/SbColor.h>
 
@@ -65,20 +67,20 @@ struct SceneTriangles {
 // The triangles under `root` that cast shadows: those whose SoShadowStyle includes
 // CASTS_SHADOW (the default inside a SoTransparentShadowGroup). Fully clear triangles are
 // kept; they cast nothing, which the map builder handles per fragment (texture alpha).
-SceneTriangles extractShadowCasters(SoNode* root);
+IVSHADOW_INTERNAL SceneTriangles extractShadowCasters(SoNode* root);
 
 // A node as messages name it: its type and, when it has one, its DEF name ("LineSet 'Wire'").
-std::string describeNode(const SoNode* node);
+IVSHADOW_INTERNAL std::string describeNode(const SoNode* node);
 
 // Whether a colour is grey to within one 8-bit step (such a tint would not show).
-bool isGrey(float r, float g, float b);
+IVSHADOW_INTERNAL bool isGrey(float r, float g, float b);
 
 // The current texture of `action` (index into `textures`, added on first use; -1 for none).
 // `cache` maps Coin's image data to indices so that each image is copied once.
 struct TextureCache {
   std::map<std::tuple<const unsigned char*, int, int, int, int>, int> index;
 };
-int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures,
-                   TextureCache& cache);
+IVSHADOW_INTERNAL int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures,
+                                     TextureCache& cache);
 
 }  // namespace ivshadow

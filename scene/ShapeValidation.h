@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <Inventor/actions/SoCallbackAction.h>
 
 #include <string>
@@ -17,19 +19,19 @@ namespace ivshadow {
 // (coordIndex, materialIndex, normalIndex, textureCoordIndex of indexed shapes). Coin's own GL
 // rendering checks these and warns; its generatePrimitives, which SoCallbackAction runs, reads
 // whatever memory the counts name, so these checks come first.
-std::string shapeDefect(SoCallbackAction* action, const SoShape* shape);
+IVSHADOW_INTERNAL std::string shapeDefect(SoCallbackAction* action, const SoShape* shape);
 
 // A pre-callback for SoShape (any user data): prunes a shape with a defect, so that no
 // triangle of it is generated, after one warning per shape and process naming it and the
 // defect ("FaceSet 'Wall': numVertices asks for 7 vertices from index 0; the coordinates hold
 // 3"), and continues with every other shape.
-SoCallbackAction::Response skipDefectiveShape(void* data, SoCallbackAction* action,
+IVSHADOW_INTERNAL SoCallbackAction::Response skipDefectiveShape(void* data, SoCallbackAction* action,
                                               const SoNode* node);
 
 // Removes from `root` every shape with a defect, in each place where it has one, so that no
 // renderer, Coin's included, reads past its data (Coin's GL rendering checks some of these
 // counts and not others: a TriangleStripSet asking for 100,000 vertices of three hangs it).
 // Returns one line per removed shape for `file`: "FILE: warning: FaceSet 'Wall': ...; left out".
-std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file);
+IVSHADOW_INTERNAL std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file);
 
 }  // namespace ivshadow

@@ -1,6 +1,6 @@
 #include "viewer/LightDragger.h"
 
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPath.h>

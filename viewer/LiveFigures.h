@@ -1,7 +1,7 @@
 #pragma once
 
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/PeelStatistics.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/PeelStatistics.h"
 
 #include <QString>
 

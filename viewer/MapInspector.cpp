@@ -1,8 +1,8 @@
 #include "viewer/MapInspector.h"
 
-#include "nodes/DeepShadowStatistics.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
-#include "nodes/SoTransparentShadowGroup.h"
 #include "nodes/TransparentShadowGroupImpl.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>

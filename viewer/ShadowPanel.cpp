@@ -1,9 +1,9 @@
 #include "viewer/ShadowPanel.h"
 
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoPeelingSeparator.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoPeelingSeparator.h"
-#include "nodes/SoTransparentShadowGroup.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 #include "viewer/FieldEditor.h"

@@ -2,8 +2,8 @@
 
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/IvShadowInit.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 #include "viewer/MapInspector.h"

@@ -2,7 +2,7 @@
 
 #include "image/AtomicFile.h"
 #include "image/PngFile.h"
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
 #include "scene/ViewSetup.h"

@@ -1,7 +1,7 @@
 #include "viewer/WrapInShadowGroup.h"
 
-#include "nodes/SoDeepShadowLight.h"
-#include "nodes/SoTransparentShadowGroup.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>

@@ -1,4 +1,4 @@
-#include "nodes/DeepShadowStatistics.h"
+#include "ivshadow/DeepShadowStatistics.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoNode.h>

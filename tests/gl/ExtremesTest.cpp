@@ -2,7 +2,7 @@
 // what it expects: the analytic picture where one exists, and the exact CPU reference beside
 // the GL path. Whatever the input, no pixel may be NaN or infinite, and more surfaces between
 // a point and the light never let more light through.
-#include "nodes/DeepShadowStatistics.h"
+#include "ivshadow/DeepShadowStatistics.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoNode.h>

@@ -1,5 +1,5 @@
 #include "headless/OffscreenRenderer.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "scene/SceneLoader.h"
 #include "scene/ViewSetup.h"
 #include "tests/gl/LitPlane.h"

@@ -1,6 +1,6 @@
 #include "headless/OffscreenRenderer.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/PeelStatistics.h"
+#include "ivshadow/IvShadowInit.h"
+#include "ivshadow/PeelStatistics.h"
 #include "tests/gl/PeelReference.h"
 #include "tests/gl/ShadowScene.h"
 

@@ -3,9 +3,9 @@
 #include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
-#include "nodes/DeepShadowStatistics.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 

@@ -1,7 +1,7 @@
 // The GL half of ShadowScene.h: kept apart so that the unit tests, which share the scenes and
 // pictures but render only with the CPU reference, build without the headless renderer.
 #include "headless/OffscreenRenderer.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoSeparator.h>

@@ -1,6 +1,6 @@
 #include "tests/gl/ShadowScene.h"
 
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "raytrace/ReferenceRenderer.h"
 #include "scene/ViewSetup.h"
 

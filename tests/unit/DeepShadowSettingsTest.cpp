@@ -1,9 +1,9 @@
 // The light's fields as the map builder takes them: the extremes of resolution (issue: "resolution
 // 1 and the GL maximum"; rendering at the maximum, 16384^2 texels per face, would take gigabytes
 // and minutes on llvmpipe, so the clamping to it is what is tested).
+#include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/DeepShadowSettings.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
 
 #include <gtest/gtest.h>

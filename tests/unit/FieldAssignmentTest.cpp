@@ -1,4 +1,4 @@
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/fields/SoSFInt32.h>
@@ -44,7 +46,7 @@
   Out-of-range values are clamped when the map is built, with one warning naming the node and
   the field.
 */
-class SoDeepShadowLight : public SoPointLight {
+class IVSHADOW_API SoDeepShadowLight : public SoPointLight {
   typedef SoPointLight inherited;
   SO_NODE_HEADER(SoDeepShadowLight);
 

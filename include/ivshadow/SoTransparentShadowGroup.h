@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <Inventor/fields/SoSFBool.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -32,7 +34,7 @@ struct DeepShadowStatistics;
     }
   \endcode
 */
-class SoTransparentShadowGroup : public SoSeparator {
+class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   typedef SoSeparator inherited;
   SO_NODE_HEADER(SoTransparentShadowGroup);
 

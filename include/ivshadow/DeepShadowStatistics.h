@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -56,11 +58,11 @@ namespace ivshadow {
 // for the GPU to finish the pass, so it is off unless a profiler asks: `ivshadow render
 // --stats` and the viewer's live figures turn it on. Map builds are always timed (they wait
 // for each pass anyway).
-void setPassTiming(bool on);
-bool passTiming();
+IVSHADOW_API void setPassTiming(bool on);
+IVSHADOW_API bool passTiming();
 
 // The statistics of every SoTransparentShadowGroup under `root`, summed: lights of all groups
 // in traversal order, build times and rebuild counts added up.
-DeepShadowStatistics collectDeepShadowStatistics(SoNode* root);
+IVSHADOW_API DeepShadowStatistics collectDeepShadowStatistics(SoNode* root);
 
 }  // namespace ivshadow

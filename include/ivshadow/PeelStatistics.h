@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 class SoNode;
 
 namespace ivshadow {
@@ -13,6 +15,6 @@ struct PeelStatistics {
 };
 
 // The last frame of every SoPeelingSeparator under `root`, summed.
-PeelStatistics collectPeelStatistics(SoNode* root);
+IVSHADOW_API PeelStatistics collectPeelStatistics(SoNode* root);
 
 }  // namespace ivshadow

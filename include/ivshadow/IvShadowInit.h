@@ -1,12 +1,14 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 namespace ivshadow {
 
 // Initialises Coin (SoDB::init) if needed and registers every node class of the plugin with
 // Coin's type system. Safe to call more than once; call it after SoQt::init in GUI programs.
-void init();
+IVSHADOW_API void init();
 
 // The plugin's version, "MAJOR.MINOR.PATCH".
-const char* version();
+IVSHADOW_API const char* version();
 
 }  // namespace ivshadow

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <Inventor/fields/SoSFBool.h>
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFInt32.h>
@@ -38,7 +40,7 @@ struct PeelStatistics;
     }
   \endcode
 */
-class SoPeelingSeparator : public SoSeparator {
+class IVSHADOW_API SoPeelingSeparator : public SoSeparator {
   typedef SoSeparator inherited;
   SO_NODE_HEADER(SoPeelingSeparator);
 
