@@ -6,8 +6,8 @@
 //   ivshadow_soak SCENE.iv --frames N [--set NAME.field=VALUE ...] [--move LIGHT] [--size WxH]
 //   ivshadow_soak --contexts N
 #include "headless/OffscreenRenderer.h"
-#include "nodes/IvShadowInit.h"
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoDeepShadowLight.h"
 #include "scene/FieldAssignment.h"
 #include "scene/SceneLoader.h"
 #include "scene/ViewSetup.h"

@@ -3,7 +3,7 @@
 // runs on whatever the fields hold.
 #include "fuzz/FuzzInput.h"
 #include "nodes/DeepShadowSettings.h"
-#include "nodes/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowLight.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 

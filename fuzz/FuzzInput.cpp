@@ -1,7 +1,7 @@
 #include "fuzz/FuzzInput.h"
 
 #include "headless/CoinOffscreenContexts.h"
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/errors/SoReadError.h>

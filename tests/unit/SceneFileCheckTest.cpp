@@ -1,4 +1,4 @@
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "scene/InputError.h"
 #include "scene/SceneFileCheck.h"
 #include "scene/SceneLoader.h"

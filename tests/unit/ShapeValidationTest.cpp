@@ -1,4 +1,4 @@
-#include "nodes/IvShadowInit.h"
+#include "ivshadow/IvShadowInit.h"
 #include "scene/SceneLoader.h"
 #include "scene/SceneTriangles.h"
 #include "tests/support/TestSupport.h"
