@@ -2,10 +2,12 @@
 
 #include "cli/ExitStatus.h"
 #include "cli/ProgressBar.h"
+#include "cli/RenderMemory.h"
 #include "image/AtomicFile.h"
+#include "image/ImageFile.h"
 #include "image/ImageSize.h"
+#include "image/MemoryBudget.h"
 #include "image/PfmFile.h"
-#include "image/PngFile.h"
 #include "nodes/IvShadowInit.h"
 #include "raytrace/ReferenceRenderer.h"
 #include "scene/FieldAssignment.h"
@@ -46,7 +48,9 @@ int runReference(const ReferenceCommandOptions& options) {
     std::vector<FieldAssignment> assignments;
     for (const std::string& text : options.assignments)
       assignments.push_back(FieldAssignment::parse(text));
+    imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
+    MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
     if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
 
     init();
@@ -83,11 +87,11 @@ int runReference(const ReferenceCommandOptions& options) {
     }
     for (const std::string& warning : result->warnings)
       std::cerr << options.scene << ": warning: " << warning << '\n';
-    // Both files or neither: the float picture goes first, and is removed if the PNG fails.
+    // Both files or neither: the float picture goes first, and is removed if the image fails.
     if (!options.pfm.empty())
       writePfm(options.pfm, result->image.width, result->image.height, result->image.rgb);
     try {
-      writePng(options.output, result->image.toImage());
+      writeImage(options.output, result->image.toImage());
     } catch (...) {
       if (!options.pfm.empty()) std::remove(options.pfm.c_str());
       throw;

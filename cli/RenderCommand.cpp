@@ -2,12 +2,15 @@
 
 #include "callbacks/GlCapabilities.h"
 #include "cli/ExitStatus.h"
+#include "cli/GroupTransparency.h"
 #include "cli/OpenRenderer.h"
+#include "cli/RenderMemory.h"
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
+#include "image/ImageFile.h"
 #include "image/ImageSize.h"
-#include "image/PngFile.h"
+#include "image/MemoryBudget.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/IvShadowInit.h"
 #include "nodes/PeelStatistics.h"
@@ -119,6 +122,7 @@ int runRender(const RenderOptions& options) {
     for (const std::string& text : options.assignments) {
       assignments.push_back(FieldAssignment::parse(text));
     }
+    imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
     if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
 
@@ -133,7 +137,16 @@ int runRender(const RenderOptions& options) {
 
     std::unique_ptr<OffscreenRenderer> renderer = openRenderer(size);
     if (!renderer) return 3;
-    if (transparency) renderer->action().setTransparencyType(*transparency);
+    // Only now is it known whether AUTO traces rays (on a software renderer), the costlier
+    // path; the frame buffer is allocated but untouched until the first frame.
+    const RenderMemory memory =
+        RenderMemory::of(scene.root.get(), renderer->capabilities().isSoftwareRenderer());
+    MemoryBudget::check(size, memory.cost, memory.what, 1, MemoryBudget::available());
+    if (transparency) {
+      const GroupTransparency chosen = GroupTransparency::choose(scene.root.get(), *transparency);
+      if (!chosen.warning.empty()) std::cerr << chosen.warning << '\n';
+      renderer->action().setTransparencyType(chosen.type);
+    }
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(),
         SbViewportRegion(static_cast<short>(size.width), static_cast<short>(size.height)));
@@ -144,7 +157,7 @@ int runRender(const RenderOptions& options) {
       wallMs.push_back(timing.wallMs);
       gpuMs.push_back(timing.gpuMs);
     }
-    writePng(options.output, renderer->read());
+    writeImage(options.output, renderer->read());
     if (!options.statsPath.empty()) {
       const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
       writeTextFileAtomically(

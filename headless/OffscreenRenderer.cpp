@@ -28,7 +28,8 @@ struct OffscreenRenderer::Impl {
 };
 
 std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(int width, int height,
-                                                             std::string& error) {
+                                                             std::string& error,
+                                                             bool* outsideGlLimits) {
   auto impl = std::make_unique<Impl>();
   impl->context = EglHeadlessContext::create(error);
   if (!impl->context) return nullptr;
@@ -36,6 +37,12 @@ std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(int width, int heig
   if (!impl->capabilities.framebufferObjects) {
     error = "the GL context (" + impl->capabilities.version + ", " + impl->capabilities.renderer +
             ") has no framebuffer objects";
+    return nullptr;
+  }
+  error = impl->capabilities.sizeProblem(width, height);
+  if (!error.empty()) {
+    error = std::to_string(width) + "x" + std::to_string(height) + " is too large: " + error;
+    if (outsideGlLimits) *outsideGlLimits = true;
     return nullptr;
   }
   impl->target = GlFramebufferTarget::create(width, height, error);
