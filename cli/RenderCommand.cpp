@@ -135,13 +135,16 @@ int runRender(const RenderOptions& options) {
       assignment.apply(scene.root.get(), options.scene);
     }
 
+    // Before the frame buffer is allocated (seconds at the largest sizes): what the scene
+    // needs whatever the GL; AUTO counts as a map until the renderer says it traces.
+    const auto checkMemory = [&](bool softwareRenderer) {
+      const RenderMemory memory = RenderMemory::of(scene.root.get(), softwareRenderer);
+      MemoryBudget::check(size, memory.cost, memory.what, 1, MemoryBudget::available());
+    };
+    checkMemory(false);
     std::unique_ptr<OffscreenRenderer> renderer = openRenderer(size);
     if (!renderer) return 3;
-    // Only now is it known whether AUTO traces rays (on a software renderer), the costlier
-    // path; the frame buffer is allocated but untouched until the first frame.
-    const RenderMemory memory =
-        RenderMemory::of(scene.root.get(), renderer->capabilities().isSoftwareRenderer());
-    MemoryBudget::check(size, memory.cost, memory.what, 1, MemoryBudget::available());
+    checkMemory(renderer->capabilities().isSoftwareRenderer());
     if (transparency) {
       const GroupTransparency chosen = GroupTransparency::choose(scene.root.get(), *transparency);
       if (!chosen.warning.empty()) std::cerr << chosen.warning << '\n';
