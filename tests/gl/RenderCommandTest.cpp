@@ -21,6 +21,15 @@ std::string scene(const std::string& name) {
   return test::scenesDir() + "/" + name;
 }
 
+// Runs `ivshadow render ARGUMENTS`; true when it succeeded, else a failure with its stderr.
+bool render(const std::vector<std::string>& arguments) {
+  std::vector<std::string> command = {test::ivshadowExe(), "render"};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  const test::ProcessResult result = run(command);
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  return result.exitCode == 0;
+}
+
 TEST(RenderCommand, SetAssignsMaterialAndLightFieldsAsTheAnalyticPictureExpects) {
   const std::string out = test::outputDir() + "/set.png";
   const test::ProcessResult result =
@@ -134,14 +143,9 @@ TEST(RenderCommand, WithoutTheGlFeaturesTheGroupWarnsOnceAndRendersPlainly) {
 
 TEST(CompareCommand, MeasuresTwoRendersAndWritesAHeatMap) {
   const std::string dir = test::outputDir();
-  ASSERT_EQ(run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", dir + "/a.png",
-                 "--size", "120x120"})
-                .exitCode,
-            0);
-  ASSERT_EQ(run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", dir + "/b.png",
-                 "--size", "120x120", "--set", "Lamp.intensity=0.5"})
-                .exitCode,
-            0);
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/a.png", "--size", "120x120"}));
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/b.png", "--size", "120x120", "--set",
+                      "Lamp.intensity=0.5"}));
   const test::ProcessResult result =
       run({test::ivshadowExe(), "compare", dir + "/a.png", dir + "/b.png", "--diff",
            dir + "/diff.png", "--json", dir + "/metrics.json"});
@@ -253,13 +257,8 @@ TEST(RenderCommand, BadArgumentsExitTwoWithOneLineAndNoOutput) {
 
 TEST(RenderCommand, AJpegNameGetsAJpegOfTheSamePicture) {
   const std::string dir = test::outputDir();
-  ASSERT_EQ(run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", dir + "/a.png",
-                 "--size", "120x90"})
-                .exitCode,
-            0);
-  const test::ProcessResult jpeg = run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o",
-                                        dir + "/a.JPG", "--size", "120x90"});
-  ASSERT_EQ(jpeg.exitCode, 0) << jpeg.err;
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/a.png", "--size", "120x90"}));
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/a.JPG", "--size", "120x90"}));
   std::ifstream in(dir + "/a.JPG", std::ios::binary);
   char marker[3] = {};
   in.read(marker, 3);
@@ -285,9 +284,8 @@ TEST(RenderCommand, ASizeBeyondMemoryIsRefusedAtOnceNamingTheLimit) {
   EXPECT_EQ(result.exitCode, 2) << result.err;
   const std::vector<std::string> errors = test::lines(result.err);
   ASSERT_FALSE(errors.empty());
-  EXPECT_EQ(errors.back().rfind("--size 16384x16384: error: a render with traced (RAYS) shadows",
-                                0),
-            0u)
+  EXPECT_EQ(
+      errors.back().rfind("--size 16384x16384: error: a render with traced (RAYS) shadows", 0), 0u)
       << result.err;
   EXPECT_NE(errors.back().find("382 bytes per pixel"), std::string::npos) << errors.back();
   EXPECT_NE(errors.back().find("is available (MemAvailable)"), std::string::npos);
@@ -314,11 +312,12 @@ TEST(RenderCommand, AnEmptySeparatorRendersTheBackground) {
 // SORTED_OBJECT_BLEND, pixel for pixel.
 TEST(RenderCommand, SortedLayersInsideAGroupWarnsOnceAndUsesSortedObjectBlend) {
   const std::string dir = test::outputDir();
-  const std::vector<std::string> common = {"--size", "120x90", "--set", "Lamp.method=MAP",
-                                           "--set", "Lamp.resolution=128"};
-  std::vector<std::string> layers = {test::ivshadowExe(), "render", scene("coloured_shadows.iv"),
-                                     "-o", dir + "/layers.png", "--stats", dir + "/stats.json",
-                                     "--transparency", "SORTED_LAYERS_BLEND"};
+  const std::vector<std::string> common = {"--size",          "120x90", "--set",
+                                           "Lamp.method=MAP", "--set",  "Lamp.resolution=128"};
+  std::vector<std::string> layers = {
+      test::ivshadowExe(),  "render",  scene("coloured_shadows.iv"), "-o",
+      dir + "/layers.png",  "--stats", dir + "/stats.json",          "--transparency",
+      "SORTED_LAYERS_BLEND"};
   layers.insert(layers.end(), common.begin(), common.end());
   const test::ProcessResult warned = run(layers);
   ASSERT_EQ(warned.exitCode, 0) << warned.err;
@@ -331,9 +330,9 @@ TEST(RenderCommand, SortedLayersInsideAGroupWarnsOnceAndUsesSortedObjectBlend) {
   std::ifstream in(dir + "/stats.json");
   EXPECT_EQ(nlohmann::json::parse(in).at("transparency"), "SORTED_OBJECT_BLEND");
 
-  std::vector<std::string> sorted = {test::ivshadowExe(), "render", scene("coloured_shadows.iv"),
-                                     "-o", dir + "/sorted.png", "--transparency",
-                                     "SORTED_OBJECT_BLEND"};
+  std::vector<std::string> sorted = {
+      test::ivshadowExe(), "render",         scene("coloured_shadows.iv"), "-o",
+      dir + "/sorted.png", "--transparency", "SORTED_OBJECT_BLEND"};
   sorted.insert(sorted.end(), common.begin(), common.end());
   const test::ProcessResult plain = run(sorted);
   ASSERT_EQ(plain.exitCode, 0) << plain.err;
@@ -367,8 +366,8 @@ TEST(RenderCommand, VersionAndHelp) {
 }
 
 TEST(Ivshadow, EachCommandsHelpShowsItsOwnExamples) {
-  const std::vector<std::string> commands = {"render",  "variants", "reference",
-                                             "trade",   "compare",  "view"};
+  const std::vector<std::string> commands = {"render", "variants", "reference",
+                                             "trade",  "compare",  "view"};
   for (const std::string& command : commands) {
     const test::ProcessResult help = run({test::ivshadowExe(), command, "--help"});
     EXPECT_EQ(help.exitCode, 0) << command;

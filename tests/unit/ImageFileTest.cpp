@@ -20,12 +20,7 @@ std::string firstBytes(const std::string& path, std::size_t count) {
 }
 
 std::string formatError(const std::string& path) {
-  try {
-    imageFormatFor(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return {};
+  return test::inputErrorOf([&] { imageFormatFor(path); });
 }
 
 TEST(ImageFile, FormatFollowsTheExtensionInAnyCase) {

@@ -1,5 +1,5 @@
 #include "image/MemoryBudget.h"
-#include "scene/InputError.h"
+#include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +12,8 @@ namespace {
 constexpr MemoryCost kCost{300.0, 1000.0};
 
 std::string refusal(const ImageSize& size, int copies, std::uint64_t available) {
-  try {
-    MemoryBudget::check(size, kCost, "a test render", copies, available);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return {};
+  return test::inputErrorOf(
+      [&] { MemoryBudget::check(size, kCost, "a test render", copies, available); });
 }
 
 TEST(MemoryBudget, EstimateIsFixedPlusPerPixelTimesCopies) {

@@ -1,5 +1,4 @@
 #include "nodes/IvShadowInit.h"
-#include "scene/InputError.h"
 #include "scene/SceneLoader.h"
 #include "tests/support/TestSupport.h"
 
@@ -16,12 +15,7 @@ namespace ivshadow {
 namespace {
 
 std::string loadError(const std::string& path) {
-  try {
-    loadScene(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return {};
+  return test::inputErrorOf([&] { loadScene(path); });
 }
 
 // Each malformed scene states on a line "# expect-error: LINE" where Coin should place the
