@@ -32,7 +32,26 @@ GlCapabilities GlCapabilities::queryCurrent() {
   caps.framebufferObjects = caps.major >= 3 || epoxy_has_gl_extension("GL_ARB_framebuffer_object");
   caps.timerQueries = (caps.major > 3 || (caps.major == 3 && caps.minor >= 3)) ||
                       epoxy_has_gl_extension("GL_ARB_timer_query");
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &caps.maxRenderbufferSize);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &caps.maxTextureSize);
+  GLint viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  caps.maxViewportWidth = viewport[0];
+  caps.maxViewportHeight = viewport[1];
   return caps;
+}
+
+std::string GlCapabilities::sizeProblem(int width, int height) const {
+  const std::string gl = " of this GL (" + renderer + ")";
+  const auto side = [](int limit) { return std::to_string(limit) + " pixels per side"; };
+  if (width > maxRenderbufferSize || height > maxRenderbufferSize)
+    return "GL_MAX_RENDERBUFFER_SIZE" + gl + " is " + side(maxRenderbufferSize);
+  if (width > maxTextureSize || height > maxTextureSize)
+    return "GL_MAX_TEXTURE_SIZE" + gl + " is " + side(maxTextureSize);
+  if (width > maxViewportWidth || height > maxViewportHeight)
+    return "GL_MAX_VIEWPORT_DIMS" + gl + " is " + std::to_string(maxViewportWidth) + "x" +
+           std::to_string(maxViewportHeight);
+  return {};
 }
 
 bool GlCapabilities::isSoftwareRenderer() const {

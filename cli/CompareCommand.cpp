@@ -3,7 +3,7 @@
 #include "cli/ExitStatus.h"
 #include "image/AtomicFile.h"
 #include "image/ImageComparison.h"
-#include "image/PngFile.h"
+#include "image/ImageFile.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,10 +37,13 @@ void printRow(const char* name, const ImageComparison::Channel& channel) {
 
 int runCompare(const CompareOptions& options) {
   return withExitStatus([&] {
-    if (!options.diffPath.empty()) AtomicFile::checkWritable(options.diffPath, "the diff image");
+    if (!options.diffPath.empty()) {
+      imageFormatFor(options.diffPath);
+      AtomicFile::checkWritable(options.diffPath, "the diff image");
+    }
     if (!options.jsonPath.empty()) AtomicFile::checkWritable(options.jsonPath, "the metrics");
-    const Image a = readPng(options.reference);
-    const Image b = readPng(options.candidate);
+    const Image a = readImage(options.reference);
+    const Image b = readImage(options.candidate);
     const ImageComparison result =
         ImageComparison::compare(a, b, options.reference.c_str(), options.candidate.c_str());
     std::printf("%-6s %9s %5s %9s %11s\n", "", "RMSE", "max", "PSNR dB", "> 2/255");
@@ -51,7 +54,7 @@ int runCompare(const CompareOptions& options) {
                 result.maxErrorY);
     if (!options.diffPath.empty()) {
       const int scale = options.scale > 0 ? options.scale : std::max(result.all.maxError, 1);
-      writePng(options.diffPath, errorHeatMap(a, b, scale));
+      writeImage(options.diffPath, errorHeatMap(a, b, scale));
       std::printf("wrote %s (white = %d steps or more)\n", options.diffPath.c_str(), scale);
     }
     if (!options.jsonPath.empty()) {

@@ -2,9 +2,12 @@
 
 #include "cli/ExitStatus.h"
 #include "cli/ProgressBar.h"
+#include "cli/RenderMemory.h"
 #include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
+#include "image/ImageFile.h"
 #include "image/ImageSize.h"
+#include "image/MemoryBudget.h"
 #include "image/PfmFile.h"
 #include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
@@ -47,7 +50,9 @@ int runReference(const ReferenceCommandOptions& options) {
     std::vector<FieldAssignment> assignments;
     for (const std::string& text : options.assignments)
       assignments.push_back(FieldAssignment::parse(text));
+    imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
+    MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
     if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
 
     init();
@@ -85,11 +90,11 @@ int runReference(const ReferenceCommandOptions& options) {
     }
     for (const std::string& warning : result->warnings)
       std::cerr << options.scene << ": warning: " << warning << '\n';
-    // Both files or neither: the float picture goes first, and is removed if the PNG fails.
+    // Both files or neither: the float picture goes first, and is removed if the image fails.
     if (!options.pfm.empty())
       writePfm(options.pfm, result->image.width, result->image.height, result->image.rgb);
     try {
-      writePng(options.output, result->image.toImage());
+      writeImage(options.output, result->image.toImage());
     } catch (...) {
       if (!options.pfm.empty()) std::remove(options.pfm.c_str());
       throw;

@@ -2,11 +2,15 @@
 
 #include "callbacks/GlCapabilities.h"
 #include "cli/ExitStatus.h"
+#include "cli/GroupTransparency.h"
 #include "cli/OpenRenderer.h"
+#include "cli/RenderMemory.h"
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
+#include "image/ImageFile.h"
 #include "image/ImageSize.h"
+#include "image/MemoryBudget.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
@@ -119,6 +123,7 @@ int runRender(const RenderOptions& options) {
     for (const std::string& text : options.assignments) {
       assignments.push_back(FieldAssignment::parse(text));
     }
+    imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
     if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
 
@@ -131,9 +136,21 @@ int runRender(const RenderOptions& options) {
       assignment.apply(scene.root.get(), options.scene);
     }
 
+    // Before the frame buffer is allocated (seconds at the largest sizes): what the scene
+    // needs whatever the GL; AUTO counts as a map until the renderer says it traces.
+    const auto checkMemory = [&](bool softwareRenderer) {
+      const RenderMemory memory = RenderMemory::of(scene.root.get(), softwareRenderer);
+      MemoryBudget::check(size, memory.cost, memory.what, 1, MemoryBudget::available());
+    };
+    checkMemory(false);
     std::unique_ptr<OffscreenRenderer> renderer = openRenderer(size);
     if (!renderer) return 3;
-    if (transparency) renderer->action().setTransparencyType(*transparency);
+    checkMemory(renderer->capabilities().isSoftwareRenderer());
+    if (transparency) {
+      const GroupTransparency chosen = GroupTransparency::choose(scene.root.get(), *transparency);
+      if (!chosen.warning.empty()) std::cerr << chosen.warning << '\n';
+      renderer->action().setTransparencyType(chosen.type);
+    }
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(),
         SbViewportRegion(static_cast<short>(size.width), static_cast<short>(size.height)));
@@ -144,7 +161,7 @@ int runRender(const RenderOptions& options) {
       wallMs.push_back(timing.wallMs);
       gpuMs.push_back(timing.gpuMs);
     }
-    writePng(options.output, renderer->read());
+    writeImage(options.output, renderer->read());
     if (!options.statsPath.empty()) {
       const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
       writeTextFileAtomically(

@@ -4,12 +4,14 @@
 #include "cli/ExitStatus.h"
 #include "cli/OpenRenderer.h"
 #include "cli/ProgressBar.h"
+#include "cli/RenderMemory.h"
 #include "cli/TradePlot.h"
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
 #include "image/ImageComparison.h"
 #include "image/ImageSize.h"
+#include "image/MemoryBudget.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
@@ -114,14 +116,22 @@ int runTrade(const TradeOptions& options) {
       throw InputError(options.scene +
                        ": error: expected a DeepShadowLight inside a TransparentShadowGroup; "
                        "there is no deep shadow setting to trade");
-    // Only good input makes the directory; its files are written once the sweep is done.
-    std::filesystem::create_directories(options.outputDir);
-    AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
+    // One process holds the reference and the renders, the traced setting's among them, at
+    // once.
+    const MemoryCost render = RenderMemory::of(scene.root.get(), false, rays).cost;
+    MemoryBudget::check(size,
+                        {kReferenceCost.bytesPerPixel + render.bytesPerPixel,
+                         kReferenceCost.fixedBytes + render.fixedBytes},
+                        "the trade (the reference and the renders in one process)", 1,
+                        MemoryBudget::available());
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
 
     std::unique_ptr<OffscreenRenderer> renderer = openRenderer(size);
     if (!renderer) return 3;
+    // Only good input makes the directory; its files are written once the sweep is done.
+    std::filesystem::create_directories(options.outputDir);
+    AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
 
     std::vector<Setting> settings;
     if (rays) settings.push_back(Setting{"rays (exact)", true, 0, 0, "", ""});

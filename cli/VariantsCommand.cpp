@@ -3,8 +3,10 @@
 #include "cli/ChildProcesses.h"
 #include "cli/ExitStatus.h"
 #include "cli/ProgressBar.h"
+#include "cli/RenderMemory.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
+#include "image/MemoryBudget.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
@@ -74,21 +76,6 @@ std::string assignmentsText(const Variant& variant) {
   return text;
 }
 
-// "Lamp:0/2/2/0/0/5" per light, from the render's statistics.
-std::string layersText(const nlohmann::json& stats) {
-  std::string text;
-  if (!stats.contains("dsm_layers_used")) return text;
-  for (const auto& light : stats["dsm_layers_used"]) {
-    text += (text.empty() ? "" : " ") + light.value("light", std::string("light")) + ":";
-    bool first = true;
-    for (int used : light["faces"]) {
-      text += (first ? "" : "/") + std::to_string(used);
-      first = false;
-    }
-  }
-  return text;
-}
-
 double number(const nlohmann::json& stats, const char* key, const char* inner = nullptr) {
   const nlohmann::json* value = &stats;
   if (!value->contains(key)) return 0.0;
@@ -100,11 +87,93 @@ double number(const nlohmann::json& stats, const char* key, const char* inner = 
   return value->is_number() ? value->get<double>() : 0.0;
 }
 
+// Which shadow methods a render used, from its statistics: a map's build time and memory
+// mean nothing for a light whose shadows are traced, and the other way round.
+struct Methods {
+  bool map = false;
+  bool rays = false;
+};
+
+Methods methodsOf(const nlohmann::json& stats) {
+  Methods methods;
+  if (!stats.is_object() || !stats.contains("dsm_layers_used")) return methods;
+  for (const auto& light : stats["dsm_layers_used"]) {
+    const std::string method = light.value("method", std::string());
+    methods.map = methods.map || method == "MAP";
+    methods.rays = methods.rays || method == "RAYS";
+  }
+  return methods;
+}
+
+// "Lamp:0/2/2/0/0/5" per light that has a map, from the render's statistics.
+std::string layersText(const nlohmann::json& stats) {
+  std::string text;
+  if (!stats.is_object() || !stats.contains("dsm_layers_used")) return text;
+  for (const auto& light : stats["dsm_layers_used"]) {
+    if (light.value("method", std::string()) != "MAP") continue;
+    text += (text.empty() ? "" : " ") + light.value("light", std::string("light")) + ":";
+    bool first = true;
+    for (int used : light["faces"]) {
+      text += (first ? "" : "/") + std::to_string(used);
+      first = false;
+    }
+  }
+  return text;
+}
+
+std::string shadowMethod(const nlohmann::json& stats) {
+  if (!stats.is_object() || !stats.contains("passes")) return {};
+  return stats["passes"].value("shadow_method", std::string());
+}
+
+// A CSV number, or an empty field when the column does not apply to this render.
+std::string field(bool applies, double value) {
+  if (!applies) return {};
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+std::string csvLine(const Variant& variant, const Outcome& outcome, const std::string& image) {
+  const bool ok = outcome.exitCode == 0;
+  const nlohmann::json& stats = outcome.stats;
+  const Methods used = ok ? methodsOf(stats) : Methods{};
+  std::ostringstream csv;
+  csv << csvField(variant.name) << ',' << csvField(assignmentsText(variant)) << ','
+      << (ok ? "ok" : "failed") << ',' << shadowMethod(stats) << ','
+      << field(ok, number(stats, "frame_ms_median")) << ','
+      << field(used.map, number(stats, "passes", "dsm_build_ms")) << ','
+      << field(used.rays, number(stats, "passes", "rays_ms")) << ','
+      << field(used.rays, number(stats, "passes", "bvh_build_ms")) << ','
+      << field(ok, number(stats, "passes", "peel_ms")) << ','
+      << field(used.map, number(stats, "dsm_bytes")) << ','
+      << field(used.rays, number(stats, "bvh_bytes")) << ',' << csvField(layersText(stats)) << ','
+      << (ok ? csvField(image) : "\"\"") << '\n';
+  return csv.str();
+}
+
+// "12.0 ms a frame, map built in 2.2 ms, 40 KiB, rays traced in 31.0 ms, BVH 96 KiB": the
+// figures of the methods the render used.
+std::string captionFigures(const nlohmann::json& stats) {
+  const Methods used = methodsOf(stats);
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << number(stats, "frame_ms_median") << " ms a frame";
+  if (used.map)
+    out << ", map built in " << number(stats, "passes", "dsm_build_ms") << " ms, "
+        << std::uint64_t(number(stats, "dsm_bytes")) / 1024 << " KiB";
+  if (used.rays)
+    out << ", rays traced in " << number(stats, "passes", "rays_ms") << " ms, BVH "
+        << std::uint64_t(number(stats, "bvh_bytes")) / 1024 << " KiB";
+  return out.str();
+}
+
 void writeReports(const VariantsOptions& options, const std::vector<Variant>& variants,
                   const std::vector<Outcome>& outcomes) {
   std::ostringstream csv;
-  csv << "variant,assignments,status,frame_ms_median,dsm_build_ms,peel_ms,dsm_bytes,"
-         "dsm_layers_used,image\n";
+  // Columns of a method the variant did not use (a map's for traced lights, the rays' for
+  // mapped ones) are left empty rather than 0, which would read as "free".
+  csv << "variant,assignments,status,shadow_method,frame_ms_median,dsm_build_ms,rays_ms,"
+         "bvh_build_ms,peel_ms,dsm_bytes,bvh_bytes,dsm_layers_used,image\n";
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Variants of "
        << htmlEscape(options.base) << "</title>\n<style>body{font-family:sans-serif}"
@@ -117,12 +186,7 @@ void writeReports(const VariantsOptions& options, const std::vector<Variant>& va
     const Outcome& outcome = outcomes[i];
     const bool ok = outcome.exitCode == 0;
     const std::string image = variant.name + ".png";
-    csv << csvField(variant.name) << ',' << csvField(assignmentsText(variant)) << ','
-        << (ok ? "ok" : "failed") << ',' << number(outcome.stats, "frame_ms_median") << ','
-        << number(outcome.stats, "passes", "dsm_build_ms") << ','
-        << number(outcome.stats, "passes", "peel_ms") << ','
-        << std::uint64_t(number(outcome.stats, "dsm_bytes")) << ','
-        << csvField(layersText(outcome.stats)) << ',' << (ok ? csvField(image) : "\"\"") << '\n';
+    csv << csvLine(variant, outcome, image);
     html << "<figure id=\"" << htmlEscape(variant.name) << "\">";
     if (ok)
       html << "<a href=\"" << htmlEscape(image) << "\"><img src=\"" << htmlEscape(image)
@@ -130,9 +194,7 @@ void writeReports(const VariantsOptions& options, const std::vector<Variant>& va
     html << "<figcaption><b>" << htmlEscape(variant.name) << "</b><br>"
          << htmlEscape(assignmentsText(variant)) << "<br>";
     if (ok)
-      html << std::fixed << std::setprecision(1) << number(outcome.stats, "frame_ms_median")
-           << " ms a frame, map built in " << number(outcome.stats, "passes", "dsm_build_ms")
-           << " ms, " << std::uint64_t(number(outcome.stats, "dsm_bytes")) / 1024 << " KiB";
+      html << htmlEscape(captionFigures(outcome.stats));
     else
       html << "<span class=\"failed\">" << htmlEscape(outcome.error) << "</span>";
     html << "</figcaption></figure>\n";
@@ -146,13 +208,18 @@ void writeReports(const VariantsOptions& options, const std::vector<Variant>& va
 
 int runVariants(const VariantsOptions& options) {
   return withExitStatus([&] {
-    ImageSize::parse(options.size, "--size");
+    const ImageSize size = ImageSize::parse(options.size, "--size");
     if (options.frames < 1)
       throw InputError("--frames " + std::to_string(options.frames) +
                        ": error: expected a whole number of at least 1");
     if (options.jobs < 1)
       throw InputError("--jobs " + std::to_string(options.jobs) +
                        ": error: expected a whole number of at least 1");
+    // Every variant's render checks its own size (memory for its shadow method, the GL
+    // limits); this refuses at once what no variant could render with --jobs at a time.
+    MemoryBudget::check(size, {kFrameBytesPerPixel, kFrameFixedBytes},
+                        "a render of the plainest variant", options.jobs,
+                        MemoryBudget::available());
     const std::vector<Variant> variants = readVariantsFile(options.variantsFile);
     init();
     loadScene(options.base);  // a broken base scene is one error, not one per variant

@@ -29,7 +29,8 @@ struct OffscreenRenderer::Impl {
 };
 
 std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(int width, int height,
-                                                             std::string& error) {
+                                                             std::string& error,
+                                                             bool* outsideGlLimits) {
   installCoinOffscreenContexts();
   auto impl = std::make_unique<Impl>();
   impl->context = EglHeadlessContext::create(error);
@@ -38,6 +39,12 @@ std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(int width, int heig
   if (!impl->capabilities.framebufferObjects) {
     error = "the GL context (" + impl->capabilities.version + ", " + impl->capabilities.renderer +
             ") has no framebuffer objects";
+    return nullptr;
+  }
+  error = impl->capabilities.sizeProblem(width, height);
+  if (!error.empty()) {
+    error = std::to_string(width) + "x" + std::to_string(height) + " is too large: " + error;
+    if (outsideGlLimits) *outsideGlLimits = true;
     return nullptr;
   }
   impl->target = GlFramebufferTarget::create(width, height, error);

@@ -26,8 +26,11 @@ class OffscreenRenderer {
     double gpuMs = 0.0;
   };
 
-  // Null with the reason in `error` when no context or render target can be made.
-  static std::unique_ptr<OffscreenRenderer> create(int width, int height, std::string& error);
+  // Null with the reason in `error` when no context or render target can be made. A size
+  // beyond the context's GL limits (GlCapabilities::sizeProblem) is refused before anything
+  // is allocated, and sets `*outsideGlLimits` when given: that is the caller's bad input.
+  static std::unique_ptr<OffscreenRenderer> create(int width, int height, std::string& error,
+                                                   bool* outsideGlLimits = nullptr);
   ~OffscreenRenderer();
 
   OffscreenRenderer(const OffscreenRenderer&) = delete;

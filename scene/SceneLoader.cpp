@@ -7,6 +7,7 @@
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
+#include <Inventor/nodes/SoNode.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <unistd.h>
@@ -20,6 +21,22 @@ namespace ivshadow {
 std::string locationPrefix(const std::string& file, int line) {
   return line > 0 ? file + ":" + std::to_string(line) + ": " : file + ": ";
 }
+
+namespace {
+
+bool holdsANode(const std::string& path) {
+  SoInput input;
+  if (!input.openFile(path.c_str(), TRUE)) return false;
+  SoNode* node = nullptr;
+  const bool read = SoDB::read(&input, node);
+  if (node != nullptr) {
+    node->ref();
+    node->unref();
+  }
+  return read && node != nullptr;
+}
+
+}  // namespace
 
 LoadedScene loadScene(const std::string& path) {
   namespace fs = std::filesystem;
@@ -54,7 +71,10 @@ LoadedScene loadScene(const std::string& path) {
     const std::string text = error.text.empty() ? "could not be read" : error.text;
     throw InputError(locationPrefix(path, error.line) + "error: " + text);
   }
-  if (root->getNumChildren() == 0) {
+  // SoDB::readAll returns a file's only top-level Separator itself, so an empty root is
+  // either `Separator { }` (an empty scene, rendered empty) or a file without any node (most
+  // likely not the file meant, refused). Reading the first node again tells them apart.
+  if (root->getNumChildren() == 0 && !holdsANode(path)) {
     throw InputError(path +
                      ": error: the file holds no nodes (expected at least one node "
                      "after the header)");

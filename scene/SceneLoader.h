@@ -16,7 +16,8 @@ struct LoadedScene {
 };
 
 // Reads a whole scene file. Throws InputError naming the file and line for a missing,
-// unreadable, empty or malformed file (syntax errors, unknown nodes or fields, bad values).
+// unreadable or malformed file (syntax errors, unknown nodes or fields, bad values) or one
+// without any node; an empty `Separator { }` is an empty scene, not an error.
 LoadedScene loadScene(const std::string& path);
 
 // Formats a location prefix the way compilers do: "FILE:LINE: " or "FILE: ".

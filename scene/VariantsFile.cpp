@@ -79,6 +79,49 @@ std::vector<std::string> sweepValues(const std::string& values, const std::strin
   return out;
 }
 
+// "A * B * C": the factors of a crossed sweep, split at each '*' outside double quotes (an
+// Inventor string value may hold one).
+std::vector<std::string> factors(const std::string& text) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (char c : text) {
+    if (c == '"') quoted = !quoted;
+    if (c == '*' && !quoted)
+      out.emplace_back();
+    else
+      out.back() += c;
+  }
+  return out;
+}
+
+// The variants of "sweep NAME NODE.field = VALUES [* NODE.field = VALUES ...]": one per
+// combination of values, the first factor varying slowest, named NAME-V1-V2-...
+std::vector<Variant> crossedSweep(const std::string& name, const std::string& rest,
+                                  const std::string& path, int line) {
+  constexpr std::size_t kMaxVariants = 10000;
+  std::vector<Variant> out{{name, line, {}}};
+  for (const std::string& factor : factors(rest)) {
+    const std::string swept = assignment(trim(factor), path, line);
+    const auto equals = swept.find('=');
+    const std::string target = swept.substr(0, equals);
+    const std::vector<std::string> values = sweepValues(swept.substr(equals + 1), path, line);
+    if (out.size() * values.size() > kMaxVariants)
+      fail(path, line,
+           "the crossed sweep gives more than " + std::to_string(kMaxVariants) + " variants");
+    std::vector<Variant> crossed;
+    for (const Variant& partial : out)
+      for (const std::string& value : values) {
+        Variant variant = partial;
+        variant.name += "-" + value;
+        variant.assignments.push_back({target + "=" + value, line});
+        crossed.push_back(std::move(variant));
+      }
+    out = std::move(crossed);
+  }
+  for (Variant& variant : out) variant.name = sanitise(variant.name);
+  return out;
+}
+
 }  // namespace
 
 std::vector<Variant> parseVariants(const std::string& text, const std::string& path) {
@@ -106,12 +149,9 @@ std::vector<Variant> parseVariants(const std::string& text, const std::string& p
       if (!(words >> name)) fail(path, line, "expected \"sweep NAME NODE.field = VALUES\"");
       std::string rest;
       std::getline(words, rest);
-      const std::string swept = assignment(trim(rest), path, line);
-      const auto equals = swept.find('=');
-      const std::string target = swept.substr(0, equals);
       blockStart = variants.size();
-      for (const std::string& value : sweepValues(swept.substr(equals + 1), path, line))
-        variants.push_back({sanitise(name + "-" + value), line, {{target + "=" + value, line}}});
+      for (Variant& variant : crossedSweep(name, rest, path, line))
+        variants.push_back(std::move(variant));
       inBlock = true;
     } else if (inBlock) {
       const std::string text = assignment(content, path, line);

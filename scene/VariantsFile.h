@@ -22,6 +22,8 @@ struct Variant {
 //     NODE.field = VALUE               VALUE in Inventor field syntax, to the end of the line
 //   sweep NAME NODE.field = V1 | V2    one variant per value, named NAME-V (sanitised)
 //   sweep NAME NODE.field = A .. B step S   numbers from A to B
+//   sweep NAME A.f = 1 | 2 * B.g = 0 .. 1 step 0.5   crossed: one variant per combination,
+//                                      named NAME-V1-V2 (at most 10000)
 //     NODE.field = VALUE               ...and assignments shared by all the sweep's variants
 // Throws InputError naming `path` and the line for a line it cannot read, a duplicate
 // variant name or an empty file. Whether a node, field or value exists is for the scene to

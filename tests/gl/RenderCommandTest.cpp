@@ -1,3 +1,6 @@
+#include "image/ImageComparison.h"
+#include "image/ImageFile.h"
+#include "image/MemoryBudget.h"
 #include "image/PngFile.h"
 #include "tests/gl/LitPlane.h"
 #include "tests/support/TestSupport.h"
@@ -16,6 +19,15 @@ using test::run;
 
 std::string scene(const std::string& name) {
   return test::scenesDir() + "/" + name;
+}
+
+// Runs `ivshadow render ARGUMENTS`; true when it succeeded, else a failure with its stderr.
+bool render(const std::vector<std::string>& arguments) {
+  std::vector<std::string> command = {test::ivshadowExe(), "render"};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  const test::ProcessResult result = run(command);
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  return result.exitCode == 0;
 }
 
 TEST(RenderCommand, SetAssignsMaterialAndLightFieldsAsTheAnalyticPictureExpects) {
@@ -131,14 +143,9 @@ TEST(RenderCommand, WithoutTheGlFeaturesTheGroupWarnsOnceAndRendersPlainly) {
 
 TEST(CompareCommand, MeasuresTwoRendersAndWritesAHeatMap) {
   const std::string dir = test::outputDir();
-  ASSERT_EQ(run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", dir + "/a.png",
-                 "--size", "120x120"})
-                .exitCode,
-            0);
-  ASSERT_EQ(run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", dir + "/b.png",
-                 "--size", "120x120", "--set", "Lamp.intensity=0.5"})
-                .exitCode,
-            0);
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/a.png", "--size", "120x120"}));
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/b.png", "--size", "120x120", "--set",
+                      "Lamp.intensity=0.5"}));
   const test::ProcessResult result =
       run({test::ivshadowExe(), "compare", dir + "/a.png", dir + "/b.png", "--diff",
            dir + "/diff.png", "--json", dir + "/metrics.json"});
@@ -231,6 +238,8 @@ TEST(RenderCommand, BadArgumentsExitTwoWithOneLineAndNoOutput) {
       {{lit, "-o", out, "--transparency", "GLASS"}, "--transparency 'GLASS'"},
       {{lit, "-o", dir + "/missing/out.png"}, "does not exist"},
       {{lit, "-o", out, "--stats", dir + "/missing/s.json"}, "does not exist"},
+      {{lit, "-o", dir + "/out.bmp"}, "cannot write images of type '.bmp'; supported: .png, .jpg"},
+      {{lit, "-o", dir + "/out"}, "supported: .png, .jpg, .jpeg"},
   };
   for (const BadArguments& c : cases) {
     std::vector<std::string> arguments = {test::ivshadowExe(), "render"};
@@ -241,7 +250,97 @@ TEST(RenderCommand, BadArgumentsExitTwoWithOneLineAndNoOutput) {
     ASSERT_EQ(errorLines.size(), 1u) << result.err;
     EXPECT_NE(errorLines[0].find(c.expected), std::string::npos) << errorLines[0];
     EXPECT_FALSE(test::fileExists(out));
+    EXPECT_FALSE(test::fileExists(dir + "/out.bmp"));
+    EXPECT_FALSE(test::fileExists(dir + "/out"));
   }
+}
+
+TEST(RenderCommand, AJpegNameGetsAJpegOfTheSamePicture) {
+  const std::string dir = test::outputDir();
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/a.png", "--size", "120x90"}));
+  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/a.JPG", "--size", "120x90"}));
+  std::ifstream in(dir + "/a.JPG", std::ios::binary);
+  char marker[3] = {};
+  in.read(marker, 3);
+  EXPECT_EQ(std::string(marker, 3), std::string("\xFF\xD8\xFF", 3)) << "JPEG data, not PNG";
+  const Image png = readPng(dir + "/a.png"), decoded = readImage(dir + "/a.JPG");
+  ASSERT_EQ(decoded.width(), 120);
+  ASSERT_EQ(decoded.height(), 90);
+  const ImageComparison error = ImageComparison::compare(png, decoded, "png", "jpeg");
+  // The lit plane is a smooth gradient: JPEG at quality 92 keeps it within a few 8-bit
+  // steps on average (lossy, so not exact).
+  EXPECT_LT(error.all.rmse, 2.0);
+}
+
+TEST(RenderCommand, ASizeBeyondMemoryIsRefusedAtOnceNamingTheLimit) {
+  const std::string out = test::outputDir() + "/big.png";
+  // Traced shadows cost 12 + 370 bytes a pixel (cli/RenderMemory.h): 95 GiB at 16384 x 16384,
+  // refused before the first frame instead of the kernel killing the render a minute later.
+  const double needed = 382.0 * 16384.0 * 16384.0;
+  if (double(MemoryBudget::available()) > needed) GTEST_SKIP() << "this machine has the memory";
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", scene("coloured_shadows.iv"), "-o", out, "--size",
+           "16384x16384", "--set", "Lamp.method=RAYS"});
+  EXPECT_EQ(result.exitCode, 2) << result.err;
+  const std::vector<std::string> errors = test::lines(result.err);
+  ASSERT_FALSE(errors.empty());
+  EXPECT_EQ(
+      errors.back().rfind("--size 16384x16384: error: a render with traced (RAYS) shadows", 0), 0u)
+      << result.err;
+  EXPECT_NE(errors.back().find("382 bytes per pixel"), std::string::npos) << errors.back();
+  EXPECT_NE(errors.back().find("is available (MemAvailable)"), std::string::npos);
+  EXPECT_FALSE(test::fileExists(out));
+}
+
+TEST(RenderCommand, AnEmptySeparatorRendersTheBackground) {
+  const std::string dir = test::outputDir();
+  const std::string file = dir + "/empty.iv";
+  std::ofstream(file) << "#Inventor V2.1 ascii\nSeparator { }\n";
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", file, "-o", dir + "/empty.png", "--size", "40x30"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  const Image image = readPng(dir + "/empty.png");
+  ASSERT_EQ(image.width(), 40);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(image.pixel(x, y)[c], 0) << x << "," << y;
+}
+
+// Coin's SORTED_LAYERS_BLEND renders each layer with its own fragment program, which the
+// group's GLSL program replaces: the glass came out opaque. The render warns once and uses
+// SORTED_OBJECT_BLEND, pixel for pixel.
+TEST(RenderCommand, SortedLayersInsideAGroupWarnsOnceAndUsesSortedObjectBlend) {
+  const std::string dir = test::outputDir();
+  const std::vector<std::string> common = {"--size",          "120x90", "--set",
+                                           "Lamp.method=MAP", "--set",  "Lamp.resolution=128"};
+  std::vector<std::string> layers = {
+      test::ivshadowExe(),  "render",  scene("coloured_shadows.iv"), "-o",
+      dir + "/layers.png",  "--stats", dir + "/stats.json",          "--transparency",
+      "SORTED_LAYERS_BLEND"};
+  layers.insert(layers.end(), common.begin(), common.end());
+  const test::ProcessResult warned = run(layers);
+  ASSERT_EQ(warned.exitCode, 0) << warned.err;
+  const std::vector<std::string> errors = test::lines(warned.err);
+  ASSERT_EQ(errors.size(), 1u) << warned.err;
+  EXPECT_EQ(errors[0],
+            "ivshadow: warning: --transparency SORTED_LAYERS_BLEND is not supported inside "
+            "TransparentShadowGroup (Coin's layer passes cannot peel the shapes it shades, so "
+            "its glass would turn opaque); using SORTED_OBJECT_BLEND instead");
+  std::ifstream in(dir + "/stats.json");
+  EXPECT_EQ(nlohmann::json::parse(in).at("transparency"), "SORTED_OBJECT_BLEND");
+
+  std::vector<std::string> sorted = {
+      test::ivshadowExe(), "render",         scene("coloured_shadows.iv"), "-o",
+      dir + "/sorted.png", "--transparency", "SORTED_OBJECT_BLEND"};
+  sorted.insert(sorted.end(), common.begin(), common.end());
+  const test::ProcessResult plain = run(sorted);
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_EQ(plain.err, "") << "no warning for a type the group handles";
+  const Image a = readPng(dir + "/layers.png"), b = readPng(dir + "/sorted.png");
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(a.pixel(x, y)[c], b.pixel(x, y)[c]) << x << "," << y;
 }
 
 TEST(RenderCommand, NoGlContextSaysWhichEglStepFailedAndExitsThree) {
@@ -264,6 +363,31 @@ TEST(RenderCommand, VersionAndHelp) {
   EXPECT_NE(help.out.find("Examples:"), std::string::npos);
   EXPECT_NE(help.out.find("render"), std::string::npos);
   EXPECT_NE(help.out.find("view"), std::string::npos);
+}
+
+TEST(Ivshadow, EachCommandsHelpShowsItsOwnExamples) {
+  const std::vector<std::string> commands = {"render", "variants", "reference",
+                                             "trade",  "compare",  "view"};
+  for (const std::string& command : commands) {
+    const test::ProcessResult help = run({test::ivshadowExe(), command, "--help"});
+    EXPECT_EQ(help.exitCode, 0) << command;
+    EXPECT_NE(help.out.find("  ivshadow " + command + " "), std::string::npos) << help.out;
+    for (const std::string& other : commands)
+      if (other != command)
+        EXPECT_EQ(help.out.find("  ivshadow " + other + " "), std::string::npos)
+            << command << " --help shows an example of " << other;
+  }
+}
+
+TEST(Ivshadow, AnUnknownCommandIsNamedWithTheValidOnes) {
+  const test::ProcessResult result = run({test::ivshadowExe(), "rendr", "scene.iv"});
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_EQ(result.err,
+            "ivshadow: error: unknown command 'rendr'; expected one of render, variants, "
+            "reference, trade, compare, view (ivshadow --help lists them)\n");
+  const test::ProcessResult none = run({test::ivshadowExe()});
+  EXPECT_EQ(none.exitCode, 2);
+  EXPECT_NE(none.err.find("expected a command: render, variants"), std::string::npos) << none.err;
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "image/MemoryBudget.h"
 #include "image/PngFile.h"
 #include "tests/support/TestSupport.h"
 
@@ -85,6 +86,21 @@ TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
   EXPECT_EQ(noLight.exitCode, 2);
   EXPECT_NE(noLight.err.find("lit_plane.iv"), std::string::npos) << noLight.err;
   EXPECT_FALSE(test::fileExists(dir + "/trade.csv"));
+}
+
+TEST(TradeCommand, ASizeBeyondMemoryIsRefusedBeforeTheReference) {
+  const std::string dir = test::outputDir() + "/out";
+  // The reference (16) and the traced render (12 + 370) in one process: 398 bytes a pixel.
+  if (double(MemoryBudget::available()) > 398.0 * 16384.0 * 16384.0)
+    GTEST_SKIP() << "this machine has the memory";
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o", dir,
+           "--size", "16384x16384"});
+  EXPECT_EQ(result.exitCode, 2) << result.err;
+  EXPECT_NE(result.err.find("--size 16384x16384: error: the trade"), std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("398 bytes per pixel"), std::string::npos) << result.err;
+  EXPECT_FALSE(test::fileExists(dir)) << "bad input makes no directory";
 }
 
 }  // namespace

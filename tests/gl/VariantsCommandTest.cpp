@@ -42,7 +42,7 @@ TEST(VariantsCommand, RendersEveryGoodVariantAndReportsTheBadOneWithItsLine) {
 
   const std::vector<std::string> csv = test::lines(readText(dir + "/variants.csv"));
   ASSERT_EQ(csv.size(), 5u);
-  EXPECT_EQ(csv[0].rfind("variant,assignments,status,frame_ms_median,dsm_build_ms", 0), 0u);
+  EXPECT_EQ(csv[0].rfind("variant,assignments,status,shadow_method,frame_ms_median,", 0), 0u);
   EXPECT_EQ(csv[1].rfind("\"dim\",\"Lamp.intensity=0.4\",ok,", 0), 0u) << csv[1];
   EXPECT_EQ(csv[2].rfind("\"typo\",\"Lamp.intensity=0.7; Lamp.colour=1 0 0\",failed,", 0), 0u)
       << csv[2];
@@ -57,6 +57,63 @@ TEST(VariantsCommand, RendersEveryGoodVariantAndReportsTheBadOneWithItsLine) {
     ++files;
   }
   EXPECT_EQ(files, 5);
+}
+
+// Splits a CSV line at commas outside double quotes; quotes are dropped.
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      fields.emplace_back();
+    else
+      fields.back() += c;
+  }
+  return fields;
+}
+
+TEST(VariantsCommand, ACrossedSweepRendersTheGridWithColumnsOfEachMethod) {
+  const std::string dir = test::outputDir() + "/out";
+  const std::string file = test::outputDir() + "/grid.variants";
+  std::ofstream(file) << "sweep grid Lamp.method = MAP | RAYS * Lamp.intensity = 0.5 | 1\n"
+                         "  Lamp.resolution = 64\n";
+  const test::ProcessResult result =
+      test::run({test::ivshadowExe(), "variants", test::scenesDir() + "/coloured_shadows.iv", file,
+                 "-o", dir, "--size", "64x48", "--frames", "1", "--jobs", "2"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const std::vector<std::string> csv = test::lines(readText(dir + "/variants.csv"));
+  ASSERT_EQ(csv.size(), 5u);
+  EXPECT_EQ(csv[0],
+            "variant,assignments,status,shadow_method,frame_ms_median,dsm_build_ms,rays_ms,"
+            "bvh_build_ms,peel_ms,dsm_bytes,bvh_bytes,dsm_layers_used,image");
+  const char* names[] = {"grid-MAP-0.5", "grid-MAP-1", "grid-RAYS-0.5", "grid-RAYS-1"};
+  const std::string html = readText(dir + "/index.html");
+  for (int i = 0; i < 4; ++i) {
+    const std::vector<std::string> row = csvFields(csv[std::size_t(i) + 1]);
+    ASSERT_EQ(row.size(), 13u) << csv[std::size_t(i) + 1];
+    EXPECT_EQ(row[0], names[i]);
+    EXPECT_EQ(readPng(dir + "/" + row[12]).width(), 64);
+    const bool rays = i >= 2;
+    EXPECT_EQ(row[1], std::string("Lamp.method=") + (rays ? "RAYS" : "MAP") +
+                          "; Lamp.intensity=" + (i % 2 ? "1" : "0.5") + "; Lamp.resolution=64");
+    EXPECT_EQ(row[3], rays ? "RAYS" : "MAP");
+    // A method's columns are filled for the lights that use it and empty otherwise.
+    EXPECT_EQ(row[5].empty(), rays) << "dsm_build_ms: " << csv[std::size_t(i) + 1];
+    EXPECT_EQ(row[6].empty(), !rays) << "rays_ms: " << csv[std::size_t(i) + 1];
+    EXPECT_EQ(row[7].empty(), !rays) << "bvh_build_ms";
+    EXPECT_EQ(row[9].empty(), rays) << "dsm_bytes";
+    EXPECT_EQ(row[10].empty(), !rays) << "bvh_bytes";
+    EXPECT_EQ(row[11].empty(), rays) << "dsm_layers_used";
+    // What the method keeps is not nothing: a map of 64^2 texels a layer, the casters' BVH.
+    EXPECT_GT(std::stod(rays ? row[10] : row[9]), 0.0);
+    const std::size_t at = html.find("<figure id=\"" + std::string(names[i]) + "\">");
+    ASSERT_NE(at, std::string::npos);
+    const std::string caption = html.substr(at, html.find("</figure>", at) - at);
+    EXPECT_EQ(caption.find("rays traced in") != std::string::npos, rays) << caption;
+    EXPECT_EQ(caption.find("map built in") != std::string::npos, !rays) << caption;
+  }
 }
 
 TEST(VariantsCommand, ABadVariantsFileStopsBeforeRendering) {

@@ -1,6 +1,7 @@
 #include "tests/support/TestSupport.h"
 
 #include "image/PngFile.h"
+#include "scene/InputError.h"
 
 #include <gtest/gtest.h>
 
@@ -97,6 +98,15 @@ ProcessResult run(const std::vector<std::string>& arguments,
   std::filesystem::remove(outPath);
   std::filesystem::remove(errPath);
   return result;
+}
+
+std::string inputErrorOf(const std::function<void()>& body) {
+  try {
+    body();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return {};
 }
 
 bool fileExists(const std::string& path) {

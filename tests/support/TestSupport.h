@@ -29,6 +29,10 @@ ProcessResult run(const std::vector<std::string>& arguments,
 
 bool fileExists(const std::string& path);
 
+// The message of the InputError `body` throws, or empty when it throws none (any other
+// exception propagates).
+std::string inputErrorOf(const std::function<void()>& body);
+
 // Non-empty lines of `text`.
 std::vector<std::string> lines(const std::string& text);
 

@@ -16,12 +16,7 @@ namespace ivshadow {
 namespace {
 
 std::string loadError(const std::string& path) {
-  try {
-    loadScene(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return {};
+  return test::inputErrorOf([&] { loadScene(path); });
 }
 
 // Each malformed scene states on a line "# expect-error: LINE" where Coin should place the
@@ -72,6 +67,20 @@ TEST(SceneLoader, MissingFileAndDirectoryAreNamed) {
             "/nonexistent/scene.iv: error: no such file (expected an Open Inventor .iv file)");
   const std::string dir = test::scenesDir() + "/malformed";
   EXPECT_EQ(loadError(dir), dir + ": error: is a directory (expected an Open Inventor .iv file)");
+}
+
+TEST(SceneLoader, AnEmptySeparatorIsAnEmptySceneButAHeaderAloneIsRefused) {
+  init();
+  const std::string dir = test::outputDir();
+  // Coin's readAll hands back a file's only Separator itself: both roots have no child.
+  for (const char* body : {"Separator { }\n", "DEF Empty Separator { }\n", "Group { }\n"}) {
+    const std::string path = dir + "/empty_separator.iv";
+    std::ofstream(path) << "#Inventor V2.1 ascii\n" << body;
+    EXPECT_EQ(loadError(path), "") << body;
+  }
+  const std::string headerOnly = dir + "/header_only.iv";
+  std::ofstream(headerOnly) << "#Inventor V2.1 ascii\n# nothing else\n";
+  EXPECT_NE(loadError(headerOnly).find("the file holds no nodes"), std::string::npos);
 }
 
 TEST(SceneLoader, ReadsEveryBundledScene) {

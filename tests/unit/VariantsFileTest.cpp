@@ -54,6 +54,36 @@ TEST(VariantsFile, RangeSweep) {
   EXPECT_EQ(texts(fractions[2]), (std::vector<std::string>{"Glass.transparency=0.5"}));
 }
 
+TEST(VariantsFile, CrossedSweepMakesEveryCombinationFirstFactorSlowest) {
+  const auto variants = parseVariants(
+      "# header\n"
+      "sweep grid Lamp.maxLayers = 1 .. 5 step 1 * Lamp.resolution = 128 | 256 | 512\n"
+      "  Lamp.method = MAP\n",
+      "v");
+  ASSERT_EQ(variants.size(), 15u);
+  // Layers 1..5 outer, resolutions inner: index = 3 * (layers - 1) + resolution index.
+  const char* resolutions[] = {"128", "256", "512"};
+  for (int layers = 1; layers <= 5; ++layers)
+    for (int r = 0; r < 3; ++r) {
+      const Variant& variant = variants[std::size_t(3 * (layers - 1) + r)];
+      EXPECT_EQ(variant.name, "grid-" + std::to_string(layers) + "-" + resolutions[r]);
+      EXPECT_EQ(variant.line, 2);
+      EXPECT_EQ(texts(variant),
+                (std::vector<std::string>{"Lamp.maxLayers=" + std::to_string(layers),
+                                          std::string("Lamp.resolution=") + resolutions[r],
+                                          "Lamp.method=MAP"}));
+      EXPECT_EQ(variant.assignments[2].line, 3);
+    }
+}
+
+TEST(VariantsFile, CrossedSweepOfThreeAndQuotedStars) {
+  const auto variants =
+      parseVariants("sweep s A.x = 1 | 2 * B.y = 3 | 4 * Label.string = \"a*b\" | \"c\"\n", "v");
+  ASSERT_EQ(variants.size(), 8u);
+  EXPECT_EQ(variants[0].name, "s-1-3-_a_b");
+  EXPECT_EQ(texts(variants[7]), (std::vector<std::string>{"A.x=2", "B.y=4", "Label.string=\"c\""}));
+}
+
 // Each malformed line is reported with the file and its line.
 TEST(VariantsFile, ErrorsNameTheLine) {
   const struct {
@@ -70,6 +100,11 @@ TEST(VariantsFile, ErrorsNameTheLine) {
       {"sweep s Lamp.intensity = 0 .. 1 step -1\n", "v:1: error: expected a range"},
       {"sweep s Lamp.intensity = 1 || 2\n", "v:1: error: an empty value"},
       {"# nothing\n", "v:1: error: no variants"},
+      {"sweep s A.x = 1 | 2 * \n", "v:1: error: expected NODE.field = VALUE"},
+      {"sweep s A.x = 1 | 2 * B.y\n", "v:1: error: expected NODE.field = VALUE"},
+      {"sweep s A.x = 1 .. 100 step 1 * B.y = 1 .. 101 step 1\n",
+       "v:1: error: the crossed sweep gives more than 10000 variants"},
+      {"sweep s A.x = 1 | 2 * B.y = 1 | 1\n", "v:1: error: a second variant named \"s-1-1\""},
   };
   for (const auto& c : cases) {
     try {

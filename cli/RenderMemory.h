@@ -1,0 +1,34 @@
+#pragma once
+
+#include "image/MemoryBudget.h"
+
+#include <string>
+
+class SoNode;
+
+namespace ivshadow {
+
+// Peak memory of the paths, per image pixel, measured on llvmpipe as the maximum resident set
+// (/usr/bin/time -v) of renders at 1000x1000 and 3000x3000: the difference over the 8 million
+// pixels added (README "Image sizes"). Fixed parts are the smaller run's rest, rounded up;
+// deep shadow maps do not grow with the image and are not counted.
+inline constexpr double kFrameBytesPerPixel = 12.0;  // colour, depth-stencil, read-back
+inline constexpr double kFrameFixedBytes = 128.0 * (1 << 20);
+// Each SoPeelingSeparator's targets: 2 RG32F + 4 RGBA32F (measured 80 too).
+inline constexpr double kPeelingBytesPerPixel = 80.0;
+// Captured surface layers, their read-back and the rays on the CPU: 292 measured with
+// coloured_shadows.iv, 368 with peeled_glasses.iv, which captures more layers; the larger.
+inline constexpr double kRaysBytesPerPixel = 370.0;
+inline constexpr MemoryCost kReferenceCost{16.0, 64.0 * (1 << 20)};
+
+// The cost of rendering `root`: the frame, each peeling separator, and traced shadows when a
+// deep shadow light traces them (method RAYS, or AUTO on a software renderer, as the group
+// resolves it) or `traced` says a command sets RAYS itself. `what` names what makes it costly.
+struct RenderMemory {
+  MemoryCost cost;
+  std::string what;
+
+  static RenderMemory of(SoNode* root, bool softwareRenderer, bool traced = false);
+};
+
+}  // namespace ivshadow

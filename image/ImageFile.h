@@ -1,0 +1,25 @@
+#pragma once
+
+#include "image/Image.h"
+
+#include <string>
+
+namespace ivshadow {
+
+enum class ImageFormat { Png, Jpeg };
+
+// The format `path`'s extension names, case-insensitively: .png, .jpg or .jpeg. Throws
+// InputError naming `path` and the supported extensions for any other (or none), so a
+// command refuses an output name before doing any work instead of writing PNG data under a
+// .jpg name.
+ImageFormat imageFormatFor(const std::string& path);
+
+// Writes `image` atomically in the format its file name asks for (imageFormatFor). JPEG has
+// no alpha channel: the colour is written as rendered, alpha dropped.
+void writeImage(const std::string& path, const Image& image);
+
+// Reads a PNG or JPEG as 8-bit RGBA, chosen by the file name like writeImage. Throws
+// InputError naming the file when it is of another type, missing or unreadable.
+Image readImage(const std::string& path);
+
+}  // namespace ivshadow
