@@ -52,8 +52,12 @@ int runReference(const ReferenceCommandOptions& options) {
       assignments.push_back(FieldAssignment::parse(text));
     imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
+    AtomicFile::checkNotInput(options.output, options.scene, "the image");
     MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
-    if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
+    if (!options.pfm.empty()) {
+      AtomicFile::checkWritable(options.pfm, "the float image");
+      AtomicFile::checkNotInput(options.pfm, options.scene, "the float image");
+    }
 
     init();
     installCoinOffscreenContexts();

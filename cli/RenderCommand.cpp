@@ -125,7 +125,11 @@ int runRender(const RenderOptions& options) {
     }
     imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
-    if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
+    AtomicFile::checkNotInput(options.output, options.scene, "the image");
+    if (!options.statsPath.empty()) {
+      AtomicFile::checkWritable(options.statsPath, "statistics");
+      AtomicFile::checkNotInput(options.statsPath, options.scene, "statistics");
+    }
 
     init();
     // The statistics report GPU time per pass; without them no pass waits for its timer.

@@ -354,6 +354,21 @@ TEST(RenderCommand, NoGlContextSaysWhichEglStepFailedAndExitsThree) {
   EXPECT_FALSE(test::fileExists(out));
 }
 
+// Run as root, as CI runs, nothing stopped an output from replacing the scene it came from.
+TEST(RenderCommand, OutputsNamingTheInputSceneAreRefusedAndTheSceneIsKept) {
+  const std::string dir = test::outputDir();
+  const std::string copy = dir + "/scene.iv";
+  std::filesystem::copy_file(scene("lit_plane.iv"), copy);
+  const auto before = std::filesystem::file_size(copy);
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "render", copy, "-o", dir + "/out.png", "--stats", dir + "/./scene.iv"});
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.err.find("cannot write statistics over the input file"), std::string::npos)
+      << result.err;
+  EXPECT_EQ(std::filesystem::file_size(copy), before);
+  EXPECT_FALSE(test::fileExists(dir + "/out.png"));
+}
+
 TEST(RenderCommand, VersionAndHelp) {
   const test::ProcessResult version = run({test::ivshadowExe(), "--version"});
   EXPECT_EQ(version.exitCode, 0);
