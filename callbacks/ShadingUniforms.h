@@ -7,6 +7,7 @@
 namespace ivshadow {
 
 class DeepShadowPass;
+class UniformLocations;
 
 // The uniforms of the camera-pass program (shading.frag) that Coin does not manage. Coin's
 // SoShaderParameter nodes cannot set them: Coin matches uniform names against
@@ -33,8 +34,9 @@ struct ShadingUniforms {
     return none;
   }
 
-  // Sets the uniforms on `program` (the program Coin made current for this group).
-  void apply(unsigned int program, const DeepShadowPass& pass) const;
+  // Sets the uniforms on `program` (a variant of ShadingProgram that Coin made current); a
+  // variant without some of them ignores those.
+  void apply(const UniformLocations& program, const DeepShadowPass& pass) const;
 };
 
 // Sets GL lights [first, ShadingUniforms::kMaxLights) to contribute nothing. The program

@@ -1,5 +1,6 @@
 #include "nodes/SoTransparentShadowGroup.h"
 
+#include "nodes/ShadowGroupElement.h"
 #include "nodes/SoDeepShadowLight.h"
 #include "nodes/TransparentShadowGroupImpl.h"
 
@@ -12,6 +13,7 @@ SO_NODE_SOURCE(SoTransparentShadowGroup);
 void SoTransparentShadowGroup::initClass() {
   if (getClassTypeId() != SoType::badType()) return;
   SoDeepShadowLight::initClass();
+  ivshadow::ShadowGroupElement::initClass();
   // Registered without the "So" prefix, as Coin registers its own nodes: Coin writes that
   // name to files, and SoType::fromName finds "TransparentShadowGroup" from either spelling.
   PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup",
