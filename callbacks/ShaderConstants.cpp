@@ -2,6 +2,8 @@
 
 #include "callbacks/GlLimits.h"
 
+#include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ivshadow {
@@ -23,7 +25,9 @@ std::string faceArray(const FaceVectors& vectors) {
 
 std::string shaderConstantDefines() {
   std::ostringstream text;
-  text << "#define IVSHADOW_MAX_LIGHTS " << kMaxGlLights << "\n"
+  text << std::setprecision(std::numeric_limits<float>::max_digits10)
+       << "#define IVSHADOW_MAX_LIGHTS " << kMaxGlLights << "\n"
+       << "#define IVSHADOW_OPAQUE_ALPHA " << kOpaqueAlpha << "\n"
        << "#define IVSHADOW_FACE_AXIS " << faceArray(kFaceAxis) << "\n"
        << "#define IVSHADOW_FACE_RIGHT " << faceArray(kFaceRight) << "\n"
        << "#define IVSHADOW_FACE_UP " << faceArray(kFaceUp) << "\n"

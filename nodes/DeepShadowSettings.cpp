@@ -92,4 +92,12 @@ DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize)
   return s;
 }
 
+ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {
+  const bool coloured = shadowColor == SoDeepShadowLight::COLORED ||
+                        (shadowColor == SoDeepShadowLight::AUTO && colouredCasters);
+  if (!coloured) return ShadowColourModel::Monochrome;
+  return colorModel == SoDeepShadowLight::POWER ? ShadowColourModel::Power
+                                                : ShadowColourModel::Saturate;
+}
+
 }  // namespace ivshadow

@@ -14,6 +14,18 @@
 #include <set>
 
 namespace ivshadow {
+namespace {
+
+// A copy of the path to the last node of `type` under `root` that a traversal reaches.
+CoinRef<SoPath> lastPathTo(SoNode* root, SoType type) {
+  SoSearchAction search;
+  search.setType(type);
+  search.setInterest(SoSearchAction::LAST);
+  search.apply(root);
+  return CoinRef<SoPath>(search.getPath() ? search.getPath()->copy() : nullptr);
+}
+
+}  // namespace
 
 GroupContents::GroupContents(SoSeparator* owner, bool deepShadows)
     : owner_(owner), deepShadows_(deepShadows) {}
@@ -49,17 +61,8 @@ void GroupContents::changed(SoNotList* list) {
 void GroupContents::findLights() {
   lights_.clear();
   subgraphLightsOn_ = 0;
-  SoSearchAction cameras;
-  cameras.setType(SoCamera::getClassTypeId());
-  cameras.setInterest(SoSearchAction::LAST);
-  cameras.apply(owner_);
-  cameraPath_ = CoinRef<SoPath>(cameras.getPath() ? cameras.getPath()->copy() : nullptr);
-  SoSearchAction environments;
-  environments.setType(SoEnvironment::getClassTypeId());
-  environments.setInterest(SoSearchAction::LAST);
-  environments.apply(owner_);
-  environmentPath_ =
-      CoinRef<SoPath>(environments.getPath() ? environments.getPath()->copy() : nullptr);
+  cameraPath_ = lastPathTo(owner_, SoCamera::getClassTypeId());
+  environmentPath_ = lastPathTo(owner_, SoEnvironment::getClassTypeId());
 
   SoSearchAction search;
   search.setType(SoLight::getClassTypeId());

@@ -5,6 +5,7 @@
 #include "callbacks/GlStateScope.h"
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
+#include "nodes/MapMethod.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/SoDeepShadowLight.h"
 #include "nodes/TransparencyOverride.h"
@@ -34,33 +35,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <set>
 
 namespace ivshadow {
 namespace {
 
 constexpr int kMaxLights = ShadingUniforms::kMaxLights;
-
-// Distance from `point` to the box (0 inside) and to its farthest corner.
-void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, float& farthest) {
-  const SbVec3f& low = box.getMin();
-  const SbVec3f& high = box.getMax();
-  float inside = 0.0f, outside = 0.0f;
-  for (int i = 0; i < 3; ++i) {
-    const float below = std::max(low[i] - point[i], 0.0f);
-    const float above = std::max(point[i] - high[i], 0.0f);
-    inside += (below + above) * (below + above);
-    const float corner = std::max(std::fabs(point[i] - low[i]), std::fabs(point[i] - high[i]));
-    outside += corner * corner;
-  }
-  nearest = std::sqrt(inside);
-  farthest = std::sqrt(outside);
-}
-
-}  // namespace
-
-namespace {
 
 const char* methodName(int method) {
   return method == SoDeepShadowLight::RAYS ? "RAYS" : "MAP";
@@ -109,15 +89,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     map.settings = resolveSettings(*entry.light, pass.maxTextureSize());
     matrixAction.apply(entry.path.get());
     matrixAction.getMatrix().multVecMatrix(entry.light->location.getValue(), map.position);
-    float nearest = 0.0f, farthest = 1.0f;
-    if (!casters.bounds.isEmpty()) distanceRange(casters.bounds, map.position, nearest, farthest);
-    // The map must reach past the farthest caster; the near plane may not cut off any of
-    // them, and reversed floating-point depth keeps a 1e5 ratio precise.
-    const float far = farthest > 0.0f ? farthest * 1.01f : 1.0f;
-    map.farRadius = map.settings.farRadius > 0.0f ? map.settings.farRadius : far;
-    map.nearRadius = map.settings.nearRadius > 0.0f ? map.settings.nearRadius
-                                                    : std::max(nearest * 0.99f, far * 1e-5f);
-    if (map.nearRadius >= map.farRadius) map.nearRadius = map.farRadius * 1e-5f;
+    fitMapRange(map, casters.bounds);
     int method = map.settings.method;
     if (method == SoDeepShadowLight::AUTO_METHOD) {
       method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
@@ -131,21 +103,9 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
                            lightName(*entry.light), statistics_))
       method = SoDeepShadowLight::MAP;
     map.rays = method == SoDeepShadowLight::RAYS;
-    switch (map.settings.shadowColor) {
-      case SoDeepShadowLight::COLORED:
-        map.coloured = true;
-        break;
-      case SoDeepShadowLight::MONOCHROME:
-        map.coloured = false;
-        break;
-      default:
-        map.coloured = casters.hasColouredTransparent;
-        break;
-    }
-
-    map.model = !map.coloured ? ShadowColourModel::Monochrome
-                : map.settings.colorModel == SoDeepShadowLight::POWER ? ShadowColourModel::Power
-                                                                      : ShadowColourModel::Saturate;
+    map.model = shadowColourModel(map.settings.shadowColor, map.settings.colorModel,
+                                  casters.hasColouredTransparent);
+    map.coloured = map.model != ShadowColourModel::Monochrome;
     DeepShadowLightStatistics light;
     light.name = entry.light->getName().getString();
     light.coloured = map.coloured;
@@ -154,26 +114,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
       statistics_.lights.push_back(light);
       continue;
     }
-    MapRequest request;
-    for (int i = 0; i < 3; ++i) request.light[i] = map.position[i];
-    request.nearRadius = map.nearRadius;
-    request.farRadius = map.farRadius;
-    request.resolution = map.settings.resolution;
-    request.layers = map.settings.maxLayers;
-    request.coloured = map.coloured;
-    request.halfPrecision = map.settings.halfPrecision;
-    request.colourModel = map.model;
-    const MapBuildResult built = pass.build(int(slot), request);
-    map.faceFirst = built.firstLayer;
-    map.faceLayers = built.layersUsed;
-
-    light.layersUsed = built.layersUsed;
-    light.passes = built.passes;
-    light.bytes = pass.mapBytes(int(slot));
-    light.peakBytes = pass.mapPeakBytes(int(slot));
-    light.resolution = request.resolution;
-    light.nearRadius = map.nearRadius;
-    light.farRadius = map.farRadius;
+    buildSlotMap(pass, int(slot), map, light);
     statistics_.lights.push_back(light);
   }
   pass.keepSlots(int(lights.size()));

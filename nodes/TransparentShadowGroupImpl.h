@@ -5,6 +5,7 @@
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/GroupContents.h"
+#include "nodes/MapState.h"
 #include "nodes/PerContext.h"
 #include "nodes/RayCasters.h"
 #include "nodes/ShadingProgram.h"
@@ -59,17 +60,6 @@ class TransparentShadowGroupImpl {
   const UniformLocations* bindProgram(SoGLRenderAction* action, ShadingVariant variant);
 
  private:
-  struct MapState {
-    SbVec3f position;
-    DeepShadowSettings settings;
-    bool coloured = false;
-    float nearRadius = 0.0f;
-    float farRadius = 0.0f;
-    std::array<int, 6> faceFirst{};
-    std::array<int, 6> faceLayers{};
-    bool rays = false;  // method RAYS: no map, traced per pixel
-    ShadowColourModel model = ShadowColourModel::Monochrome;
-  };
   // What a trace of RAYS lights depends on: an equal key reuses the last trace.
   struct TraceKey {
     std::uint64_t mapsVersion = 0;

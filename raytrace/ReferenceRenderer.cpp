@@ -1,5 +1,6 @@
 #include "raytrace/ReferenceRenderer.h"
 
+#include "nodes/DeepShadowSettings.h"
 #include "nodes/SoDeepShadowLight.h"
 #include "nodes/SoTransparentShadowGroup.h"
 #include "raytrace/CasterScene.h"
@@ -541,12 +542,8 @@ class Tracer {
   }
 
   static ShadowColourModel modelOf(const SoDeepShadowLight& light, const CasterScene& casters) {
-    const int mode = light.shadowColor.getValue();
-    const bool coloured = mode == SoDeepShadowLight::COLORED ||
-                          (mode == SoDeepShadowLight::AUTO && casters.coloured());
-    if (!coloured) return ShadowColourModel::Monochrome;
-    return light.colorModel.getValue() == SoDeepShadowLight::POWER ? ShadowColourModel::Power
-                                                                   : ShadowColourModel::Saturate;
+    return shadowColourModel(light.shadowColor.getValue(), light.colorModel.getValue(),
+                             casters.coloured());
   }
 
   const Extraction& data_;

@@ -14,9 +14,8 @@ int cubeFace(vec3 d) {
   return d.z >= 0.0 ? 4 : 5;
 }
 
-// Coin sends colours as 8-bit values, and interpolating a constant alpha of 1 across a
-// triangle can give 0.99999994: opacity within half an 8-bit step of 1 counts as opaque.
-bool isOpaque(float alpha) { return alpha >= 1.0 - 0.5 / 255.0; }
+// Opacity within half an 8-bit step of 1 counts as opaque (kOpaqueAlpha).
+bool isOpaque(float alpha) { return alpha >= IVSHADOW_OPAQUE_ALPHA; }
 
 // Coin may draw a shape differently from pass to pass (immediate mode, then a render cache
 // that splits its polygons differently), which moves depth by a few ulps: window depths that

@@ -40,6 +40,26 @@ GLint GLAPIENTRY countGetUniformLocation(GLuint program, const GLchar* name) {
   return realGetUniformLocation(program, name);
 }
 
+// Puts `counting` in epoxy's `pointer`, keeping what it held in `real`; or puts `real` back.
+template <typename Function>
+void hook(Function& pointer, Function& real, Function counting, bool on) {
+  if (on) {
+    real = pointer;
+    pointer = counting;
+  } else {
+    pointer = real;
+  }
+}
+
+void hookAll(bool on) {
+  hook(epoxy_glGetIntegerv, realGetIntegerv, &countGetIntegerv, on);
+  hook(epoxy_glGetIntegeri_v, realGetIntegeri_v, &countGetIntegeri_v, on);
+  hook(epoxy_glGetBooleanv, realGetBooleanv, &countGetBooleanv, on);
+  hook(epoxy_glGetFloatv, realGetFloatv, &countGetFloatv, on);
+  hook(epoxy_glIsEnabled, realIsEnabled, &countIsEnabled, on);
+  hook(epoxy_glGetUniformLocation, realGetUniformLocation, &countGetUniformLocation, on);
+}
+
 }  // namespace
 
 GlCallCounter::GlCallCounter() {
@@ -59,28 +79,12 @@ GlCallCounter::GlCallCounter() {
   glGetUniformLocation(0, "");
   glGetError();
   if (debugOutput) glEnable(GL_DEBUG_OUTPUT);
-  realGetIntegerv = epoxy_glGetIntegerv;
-  realGetIntegeri_v = epoxy_glGetIntegeri_v;
-  realGetBooleanv = epoxy_glGetBooleanv;
-  realGetFloatv = epoxy_glGetFloatv;
-  realIsEnabled = epoxy_glIsEnabled;
-  realGetUniformLocation = epoxy_glGetUniformLocation;
-  epoxy_glGetIntegerv = countGetIntegerv;
-  epoxy_glGetIntegeri_v = countGetIntegeri_v;
-  epoxy_glGetBooleanv = countGetBooleanv;
-  epoxy_glGetFloatv = countGetFloatv;
-  epoxy_glIsEnabled = countIsEnabled;
-  epoxy_glGetUniformLocation = countGetUniformLocation;
+  hookAll(true);
   reset();
 }
 
 GlCallCounter::~GlCallCounter() {
-  epoxy_glGetIntegerv = realGetIntegerv;
-  epoxy_glGetIntegeri_v = realGetIntegeri_v;
-  epoxy_glGetBooleanv = realGetBooleanv;
-  epoxy_glGetFloatv = realGetFloatv;
-  epoxy_glIsEnabled = realIsEnabled;
-  epoxy_glGetUniformLocation = realGetUniformLocation;
+  hookAll(false);
 }
 
 long GlCallCounter::queries() const {

@@ -35,11 +35,11 @@ int boundOn(int unit, GLenum binding) {
   return texture;
 }
 
-constexpr unsigned int kEverything =
-    GlStateScope::kFramebuffers | GlStateScope::kViewport | GlStateScope::kProgram |
-    GlStateScope::kVertexArray | GlStateScope::kStorageBuffers | GlStateScope::kBlendFunction |
-    GlStateScope::kDepth | GlStateScope::kColourMask | GlStateScope::kClipControl |
-    GlStateScope::kFragmentTests;
+constexpr unsigned int kEverything = GlStateScope::kFramebuffers | GlStateScope::kViewport |
+                                     GlStateScope::kProgram | GlStateScope::kVertexArray |
+                                     GlStateScope::kStorageBuffers | GlStateScope::kBlendFunction |
+                                     GlStateScope::kDepth | GlStateScope::kColourMask |
+                                     GlStateScope::kClipControl | GlStateScope::kFragmentTests;
 
 TEST_F(GlStateScopeGLTest, PutsBackEveryNamedGroupAsItFoundIt) {
   // A state far from GL's defaults in every group, so that a value the scope failed to put

@@ -22,8 +22,7 @@ struct FrameCase {
   const char* method;  // the light's method
 };
 
-class ShadingFrameGLTest : public GlContextTest,
-                           public ::testing::WithParamInterface<FrameCase> {};
+class ShadingFrameGLTest : public GlContextTest, public ::testing::WithParamInterface<FrameCase> {};
 
 TEST_P(ShadingFrameGLTest, ASteadyFrameLooksUpNoUniform) {
   const LoadedScene loaded = loadScene(scenesDir() + "/" + GetParam().scene);

@@ -56,14 +56,20 @@ class CasterSceneTest : public ::testing::Test {
     device_ = createEmbreeDevice(error);
     ASSERT_TRUE(device_) << error;
   }
+  // The Embree scene of `glass` as it is now.
+  std::unique_ptr<CasterScene> build(const Glass& glass) {
+    std::string error;
+    auto scene = CasterScene::build(device_.get(), extractShadowCasters(glass.root.get()), error);
+    EXPECT_TRUE(scene) << error;
+    return scene;
+  }
   EmbreeDevice device_;
 };
 
 TEST_F(CasterSceneTest, MovedCastersAreRefittedAndTracedWhereTheyAreNow) {
   Glass glass;
-  std::string error;
-  auto scene = CasterScene::build(device_.get(), extractShadowCasters(glass.root.get()), error);
-  ASSERT_TRUE(scene) << error;
+  const auto scene = build(glass);
+  ASSERT_TRUE(scene);
   EXPECT_NEAR(through(*scene, 0.0f).r, 0.5f, kExact);
   EXPECT_NEAR(through(*scene, 5.0f).r, 1.0f, kExact);
 
@@ -76,9 +82,8 @@ TEST_F(CasterSceneTest, MovedCastersAreRefittedAndTracedWhereTheyAreNow) {
 
 TEST_F(CasterSceneTest, RecolouringKeepsTheGeometry) {
   Glass glass;
-  std::string error;
-  auto scene = CasterScene::build(device_.get(), extractShadowCasters(glass.root.get()), error);
-  ASSERT_TRUE(scene) << error;
+  const auto scene = build(glass);
+  ASSERT_TRUE(scene);
   glass.material->transparency = 0.75f;
   EXPECT_EQ(scene->update(extractShadowCasters(glass.root.get())), CasterScene::Update::Colours);
   // Opacity 0.25 now lets 0.75 through.
@@ -87,9 +92,8 @@ TEST_F(CasterSceneTest, RecolouringKeepsTheGeometry) {
 
 TEST_F(CasterSceneTest, OtherTrianglesNeedANewScene) {
   Glass glass;
-  std::string error;
-  auto scene = CasterScene::build(device_.get(), extractShadowCasters(glass.root.get()), error);
-  ASSERT_TRUE(scene) << error;
+  const auto scene = build(glass);
+  ASSERT_TRUE(scene);
   // A fifth corner makes a pentagon: three triangles where there were two.
   glass.coordinates->point.set1Value(4, SbVec3f(0.0f, 2.0f, 0.0f));
   glass.faces->numVertices = 5;
