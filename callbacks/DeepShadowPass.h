@@ -26,9 +26,10 @@ class DeepShadowPass {
   static std::unique_ptr<DeepShadowPass> create(std::string& whyNot);
 
   int maxTextureSize() const { return maxTextureSize_; }
+  int textureUnits() const { return textureUnits_; }
   // Units the camera pass samples slot s's maps from: depthUnit(s), visibilityUnit(s).
-  int depthUnit(int slot) const { return firstMapUnit(textureUnits_) + slot; }
-  int visibilityUnit(int slot) const { return firstMapUnit(textureUnits_) + kMaxSlots + slot; }
+  int depthUnit(int slot) const { return mapDepthUnit(textureUnits_, slot); }
+  int visibilityUnit(int slot) const { return mapVisibilityUnit(textureUnits_, slot); }
   // Unit i (0..kRayUnits-1) of the RAYS lights' samplers (RayShadowPass).
   int rayUnit(int i) const { return firstRayUnit(textureUnits_) + i; }
 

@@ -31,7 +31,8 @@ std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
   pass->progress_ = createBuffer();
   glNamedBufferData(pass->progress_.get(), sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
   pass->emptyVertexArray_ = createVertexArray();
-  pass->firstUnit_ = firstPeelUnit(glInteger(GL_MAX_TEXTURE_IMAGE_UNITS));
+  pass->textureUnits_ = glInteger(GL_MAX_TEXTURE_IMAGE_UNITS);
+  pass->firstUnit_ = firstPeelUnit(pass->textureUnits_);
   return pass;
 }
 

@@ -24,6 +24,9 @@ class PeelPass {
   static std::unique_ptr<PeelPass> create(std::string& whyNot);
   ~PeelPass();
 
+  // GL_MAX_TEXTURE_IMAGE_UNITS of the context (read once).
+  int textureUnits() const { return textureUnits_; }
+
   // Saves GL state, sizes the targets to cover the viewport (x, y, width, height) in window
   // coordinates, copies the depth of the opaque pass from the current framebuffer and
   // switches to the peel targets with MAX blending.
@@ -62,6 +65,7 @@ class PeelPass {
   std::unique_ptr<GlStateScope> saved_;
   int targetFramebuffer_ = 0;
   std::array<int, 4> viewport_{};
+  int textureUnits_ = 0;
   int firstUnit_ = 0;
   GlPassTimer timer_;
 };

@@ -53,6 +53,13 @@ constexpr int firstPeelUnit(int available) {
 constexpr int firstRayUnit(int available) {
   return firstPeelUnit(available) - kRayUnits;
 }
+// The units of light slot `slot`'s map: its depths and its visibility.
+constexpr int mapDepthUnit(int available, int slot) {
+  return firstMapUnit(available) + slot;
+}
+constexpr int mapVisibilityUnit(int available, int slot) {
+  return firstMapUnit(available) + kMaxGlLights + slot;
+}
 
 // The constants above (and the colour models of ShadowColourModel) as GLSL #define lines.
 std::string shaderConstantDefines();

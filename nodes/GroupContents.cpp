@@ -1,6 +1,7 @@
 #include "nodes/GroupContents.h"
 
 #include "callbacks/ShaderConstants.h"
+#include "nodes/NodesOfType.h"
 #include "nodes/SoDeepShadowLight.h"
 
 #include <Inventor/SoPath.h>
@@ -64,24 +65,18 @@ void GroupContents::findLights() {
   cameraPath_ = lastPathTo(owner_, SoCamera::getClassTypeId());
   environmentPath_ = lastPathTo(owner_, SoEnvironment::getClassTypeId());
 
-  SoSearchAction search;
-  search.setType(SoLight::getClassTypeId());
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(FALSE);
-  search.apply(owner_);
-  const SoPathList& paths = search.getPaths();
-  for (int i = 0; i < paths.getLength(); ++i) {
-    auto* light = static_cast<SoLight*>(paths[i]->getTail());
-    if (!light->on.getValue()) continue;
+  forEachPathTo(owner_, SoLight::getClassTypeId(), false, [this](SoPath& path) {
+    auto* light = static_cast<SoLight*>(path.getTail());
+    if (!light->on.getValue()) return;
     ++subgraphLightsOn_;
     if (deepShadows_ && light->isOfType(SoDeepShadowLight::getClassTypeId()) &&
         int(lights_.size()) < kMaxGlLights) {
       Light entry;
-      entry.path = CoinRef<SoPath>(paths[i]->copy());
+      entry.path = CoinRef<SoPath>(path.copy());
       entry.light = static_cast<SoDeepShadowLight*>(light);
       lights_.push_back(std::move(entry));
     }
-  }
+  });
   lightsValid_ = true;
 }
 

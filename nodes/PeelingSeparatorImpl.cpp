@@ -23,9 +23,7 @@
 namespace ivshadow {
 
 PeelingSeparatorImpl::PeelingSeparatorImpl(SoPeelingSeparator* owner)
-    : owner_(owner), shading_(owner, false, [this](SoGLRenderAction* action, bool inPath) {
-        peel(action, inPath);
-      }) {}
+    : owner_(owner), contents_(owner, false), shading_(contents_) {}
 
 PeelingSeparatorImpl::~PeelingSeparatorImpl() = default;
 
@@ -36,24 +34,8 @@ void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) 
     owner_->SoSeparator::GLRenderBelowPath(action);
 }
 
-void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
-  // A group capturing surfaces for its RAYS lights wants every layer drawn with its program.
-  SoState* state = action->getState();
-  if (ShadowGroupElement::capturing(state)) {
-    renderPlainly(action, inPath);
-    return;
-  }
-  // Inside a deep shadow group its program, uniforms and maps are already in place.
-  if (ShadowGroupElement::activeGroup(state) != nullptr) {
-    peel(action, inPath);
-    return;
-  }
-  if (!shading_.render(action, inPath)) renderPlainly(action, inPath);
-}
-
-void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
-  SoState* state = action->getState();
-  PeelPass* pass = passes_.get(SoGLCacheContextElement::get(state), [] {
+PeelPass* PeelingSeparatorImpl::passFor(SoState* state) {
+  return passes_.get(SoGLCacheContextElement::get(state), [] {
     std::string whyNot;
     auto made = PeelPass::create(whyNot);
     if (!made) {
@@ -66,6 +48,46 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
     }
     return made;
   });
+}
+
+void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
+  // A group capturing surfaces for its RAYS lights wants every layer drawn with its program.
+  SoState* state = action->getState();
+  if (ShadowGroupElement::capturing(state)) {
+    renderPlainly(action, inPath);
+    return;
+  }
+  // Inside a deep shadow group its program, uniforms and maps are already in place.
+  if (GroupShading* group = ShadowGroupElement::activeGroup(state)) {
+    peel(action, inPath, *group);
+    return;
+  }
+  PeelPass* pass = passFor(state);
+  if (pass == nullptr) {
+    renderPlainly(action, inPath);
+    return;
+  }
+  // The uniforms and the program belong to this frame; a render cache above the separator
+  // must not replay them.
+  SoCacheElement::invalidate(state);
+  contents_.update();
+  state->push();
+  if (shading_.begin(action, pass->textureUnits()) == nullptr) {
+    state->pop();
+    renderPlainly(action, inPath);
+    return;
+  }
+  shading_.apply();
+  SoShapeStyleElement::setShadowsRendering(state, TRUE);
+  peel(action, inPath, shading_);
+  shading_.end();
+  SoShapeStyleElement::setShadowsRendering(state, FALSE);
+  state->pop();
+}
+
+void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShading& shading) {
+  SoState* state = action->getState();
+  PeelPass* pass = passFor(state);
   // No program current: a SoShadowStyle above switched shading off for these shapes.
   if (pass == nullptr || currentProgram() == 0) {
     renderPlainly(action, inPath);
@@ -73,13 +95,11 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
   }
   // Each pass sets its own uniforms and targets; no cache above may replay one of them.
   SoCacheElement::invalidate(state);
-  TransparentShadowGroupImpl* group = ShadowGroupElement::activeGroup(state);
-  TransparentShadowGroupImpl& shading = group ? *group : shading_;
 
   state->push();
   // The opaque pass discards transparent fragments; drawn at once, none is delayed.
   overrideTransparencyType(state, SoGLRenderAction::NONE);
-  const bool opaqueBound = shading.bindProgram(action, ShadingVariant::OpaqueOnly) != nullptr;
+  const bool opaqueBound = shading.bind(action, ShadingVariant::OpaqueOnly) != nullptr;
   renderPlainly(action, inPath);
   state->pop();
   // Without the opaque variant (Coin has said why) the plain pass drew everything.
@@ -105,9 +125,9 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
   int passes = 0;
   for (;;) {
     const UniformLocations* peelProgram =
-        shading.bindProgram(action, passes == 0 ? ShadingVariant::PeelInit
-                                    : dual      ? ShadingVariant::PeelDual
-                                                : ShadingVariant::PeelFrontToBack);
+        shading.bind(action, passes == 0 ? ShadingVariant::PeelInit
+                             : dual      ? ShadingVariant::PeelDual
+                                         : ShadingVariant::PeelFrontToBack);
     // A peel variant did not build (Coin has said why): the passes done so far stand.
     if (peelProgram == nullptr) break;
     pass->startPass(passes);

@@ -51,6 +51,9 @@ VariantSource sourceOf(ShadingVariant variant) {
 
 }  // namespace
 
+ShadingProgram::ShadingProgram() = default;
+ShadingProgram::~ShadingProgram() = default;
+
 SoShaderProgram* ShadingProgram::node(ShadingVariant variant) {
   CoinRef<SoShaderProgram>& program = nodes_[std::size_t(variant)];
   if (program) return program.get();

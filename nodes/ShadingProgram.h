@@ -31,7 +31,9 @@ inline constexpr int kShadingVariants = 7;
 // program and context.
 class ShadingProgram {
  public:
-  ShadingProgram() = default;
+  // Out of line: the nodes' type is complete only in the .cpp.
+  ShadingProgram();
+  ~ShadingProgram();
   ShadingProgram(const ShadingProgram&) = delete;
   ShadingProgram& operator=(const ShadingProgram&) = delete;
 

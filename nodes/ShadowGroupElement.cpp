@@ -40,7 +40,7 @@ SoElement* ShadowGroupElement::copyMatchInfo() const {
   return copy;
 }
 
-void ShadowGroupElement::setActiveGroup(SoState* state, TransparentShadowGroupImpl* group) {
+void ShadowGroupElement::setActiveGroup(SoState* state, GroupShading* group) {
   static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->group_ = group;
 }
 
@@ -48,7 +48,7 @@ void ShadowGroupElement::setCapturing(SoState* state, bool capturing) {
   static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->capturing_ = capturing;
 }
 
-TransparentShadowGroupImpl* ShadowGroupElement::activeGroup(SoState* state) {
+GroupShading* ShadowGroupElement::activeGroup(SoState* state) {
   return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->group_;
 }
 

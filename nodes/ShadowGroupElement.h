@@ -5,13 +5,13 @@
 
 namespace ivshadow {
 
-class TransparentShadowGroupImpl;
+class GroupShading;
 
 // What the enclosing SoTransparentShadowGroup is doing, carried in the traversal state (and so
 // per action and popped with the group's separator) instead of in process-wide variables: the
-// innermost group with deep shadows whose children are being drawn, and whether they are
-// being drawn into the capture targets of its RAYS lights. A SoPeelingSeparator below reads it
-// to shade its layers with that group's program, or to draw plainly during a capture.
+// shading of the innermost group whose children are being drawn, and whether they are being
+// drawn into the capture targets of its RAYS lights. A SoPeelingSeparator below reads it to
+// shade its layers with that group's programs and maps, or to draw plainly during a capture.
 class ShadowGroupElement : public SoElement {
   typedef SoElement inherited;
   SO_ELEMENT_HEADER(ShadowGroupElement);
@@ -26,16 +26,16 @@ class ShadowGroupElement : public SoElement {
   SoElement* copyMatchInfo() const override;
 
   // Set in a state the caller has pushed.
-  static void setActiveGroup(SoState* state, TransparentShadowGroupImpl* group);
+  static void setActiveGroup(SoState* state, GroupShading* group);
   static void setCapturing(SoState* state, bool capturing);
-  static TransparentShadowGroupImpl* activeGroup(SoState* state);
+  static GroupShading* activeGroup(SoState* state);
   static bool capturing(SoState* state);
 
  protected:
   ~ShadowGroupElement() override;
 
  private:
-  TransparentShadowGroupImpl* group_ = nullptr;
+  GroupShading* group_ = nullptr;
   bool capturing_ = false;
 };
 

@@ -23,7 +23,7 @@ void SoTransparentShadowGroup::initClass() {
 }
 
 SoTransparentShadowGroup::SoTransparentShadowGroup()
-    : impl_(new ivshadow::TransparentShadowGroupImpl(this, true,
+    : impl_(new ivshadow::TransparentShadowGroupImpl(this,
                                                      [this](SoGLRenderAction* action, bool inPath) {
                                                        if (inPath)
                                                          inherited::GLRenderInPath(action);

@@ -53,22 +53,14 @@ std::string lightName(const SoDeepShadowLight& light) {
 
 }  // namespace
 
-TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows,
+TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner,
                                                        ChildrenRenderer renderChildren)
     : owner_(owner),
-      deepShadows_(deepShadows),
       renderChildren_(std::move(renderChildren)),
-      contents_(owner, deepShadows) {}
+      contents_(owner, true),
+      shading_(contents_) {}
 
 TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
-
-const UniformLocations* TransparentShadowGroupImpl::bindProgram(SoGLRenderAction* action,
-                                                                ShadingVariant variant) {
-  if (renderingPass_ == nullptr) return nullptr;
-  const UniformLocations* program = programs_.bind(action, variant);
-  if (program != nullptr) uniforms_.apply(*program, *renderingPass_);
-  return program;
-}
 
 void TransparentShadowGroupImpl::changed(SoNotList* list) {
   contents_.changed(list);
@@ -133,32 +125,6 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.mapsVersion = contents_.mapsVersion();
 }
 
-SbMatrix TransparentShadowGroupImpl::localToEye(SoState* state) const {
-  if (!contents_.cameraPath())
-    return SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state);
-  // A camera inside the group is traversed after the group sets its uniforms; the viewing
-  // matrix it will set, relative to the group's coordinates, is what maps them to the eye.
-  SbMatrix viewing = SbMatrix::identity();
-  SoCallbackAction action;
-  action.addPostCallback(
-      SoCamera::getClassTypeId(),
-      [](void* data, SoCallbackAction* a, const SoNode*) {
-        *static_cast<SbMatrix*>(data) = a->getViewingMatrix();
-        return SoCallbackAction::CONTINUE;
-      },
-      &viewing);
-  action.apply(contents_.cameraPath());
-  return viewing;
-}
-
-int TransparentShadowGroupImpl::fogType(SoState* state) const {
-  // Like a camera, an environment inside the group is traversed after the uniforms are set.
-  if (contents_.environmentPath())
-    return static_cast<const SoEnvironment*>(contents_.environmentPath()->getTail())
-        ->fogType.getValue();
-  return int(SoEnvironmentElement::getFogType(state));
-}
-
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   SoState* state = action->getState();
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
@@ -169,8 +135,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
       static std::set<std::string> warned;
       const std::string node = owner_->getTypeId().getName().getString();
       if (warned.insert(node).second)
-        SoDebugError::postWarning(node.c_str(), "rendering without %s: %s",
-                                  deepShadows_ ? "deep shadows" : "depth peeling", whyNot.c_str());
+        SoDebugError::postWarning(node.c_str(), "rendering without deep shadows: %s",
+                                  whyNot.c_str());
       return std::unique_ptr<Context>();
     }
     auto context = std::make_unique<Context>();
@@ -195,47 +161,37 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   if (context.mapsVersion != contents_.mapsVersion()) buildMaps(action, context);
 
   state->push();
-  const UniformLocations* program = programs_.bind(action, ShadingVariant::Shade);
-  if (program == nullptr) {
+  ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits());
+  if (uniforms == nullptr) {
     state->pop();
     return false;
   }
-  ShadingUniforms& uniforms = uniforms_;
-  uniforms = ShadingUniforms{};
-  const int outside = SoLightElement::getLights(state).getLength();
-  uniforms.lightCount = std::min(kMaxLights, outside + contents_.lightsOn());
-  const SbMatrix toEye = localToEye(state);
-  uniforms.mapCount = int(std::min(contents_.lights().size(), context.maps.size()));
+  const SbMatrix& toEye = shading_.localToEye();
+  uniforms->mapCount = int(std::min(contents_.lights().size(), context.maps.size()));
   int rayCount = 0;
-  for (std::size_t slot = 0; slot < std::size_t(uniforms.mapCount); ++slot) {
+  for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot) {
     const MapState& map = context.maps[slot];
     SbVec3f eye;
     toEye.multVecMatrix(map.position, eye);
     for (int i = 0; i < 3; ++i) {
-      uniforms.mapLight[slot * 3 + std::size_t(i)] = map.position[i];
-      uniforms.mapLightEye[slot * 3 + std::size_t(i)] = eye[i];
+      uniforms->mapLight[slot * 3 + std::size_t(i)] = map.position[i];
+      uniforms->mapLightEye[slot * 3 + std::size_t(i)] = eye[i];
     }
-    uniforms.mapParams[slot * 4 + 0] = float(map.settings.resolution);
+    uniforms->mapParams[slot * 4 + 0] = float(map.settings.resolution);
     for (std::size_t face = 0; face < 6; ++face) {
-      uniforms.mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
-      uniforms.mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
+      uniforms->mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
+      uniforms->mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
     }
-    uniforms.mapParams[slot * 4 + 2] = map.settings.bias;
-    uniforms.mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
-    uniforms.mapColoured[slot] = map.coloured ? 1 : 0;
-    if (map.rays) uniforms.mapRay[slot] = rayCount++;
+    uniforms->mapParams[slot * 4 + 2] = map.settings.bias;
+    uniforms->mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
+    uniforms->mapColoured[slot] = map.coloured ? 1 : 0;
+    if (map.rays) uniforms->mapRay[slot] = rayCount++;
   }
-  const SbMatrix eyeToLocal = toEye.inverse();
-  for (int row = 0; row < 4; ++row)
-    for (int column = 0; column < 4; ++column)
-      uniforms.eyeToLocal[row * 4 + column] = eyeToLocal[row][column];
-  uniforms.fogType = fogType(state);
-  uniforms.apply(*program, *context.pass);
-  darkenLights(outside);
+  shading_.apply();
   if (rayCount > 0) {
     traceRays(action, context, inPath);
-    uniforms.rayLayers = context.rays->layers();
-    uniforms.apply(*program, *context.pass);
+    uniforms->rayLayers = context.rays->layers();
+    shading_.apply();
   }
 
   {
@@ -244,8 +200,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
         rayCount > 0 ? context.rays->bind() : std::unique_ptr<GlStateScope>();
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     // A peeling separator below shades its layers with this group's program and maps.
-    if (deepShadows_) ShadowGroupElement::setActiveGroup(state, this);
-    renderingPass_ = context.pass.get();
+    ShadowGroupElement::setActiveGroup(state, &shading_);
     const bool timed = passTiming();
     if (timed) context.shadingTimer.start();
     renderChildren_(action, inPath);
@@ -253,7 +208,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
       context.shadingTimer.stop();
       statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();  // waits for the GPU
     }
-    renderingPass_ = nullptr;
+    shading_.end();
     SoShapeStyleElement::setShadowsRendering(state, FALSE);
     state->pop();
   }
@@ -302,10 +257,9 @@ void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& co
   const int lastLayer =
       contents_.casters().hasTransparent ? RayShadowPass::kMaxTransparentLayers : 0;
   for (int layer = 0; layer <= lastLayer; ++layer) {
-    const UniformLocations* capture = programs_.bind(
+    const UniformLocations* capture = shading_.bind(
         action, layer == 0 ? ShadingVariant::CaptureOpaque : ShadingVariant::CaptureTransparent);
     if (capture == nullptr) break;  // Coin has said why it did not build
-    uniforms_.apply(*capture, *context.pass);
     rays.startLayer(layer, *capture);
     renderChildren_(action, inPath);
     if (layers.size() <= std::size_t(layer)) layers.emplace_back();

@@ -5,10 +5,10 @@
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/DeepShadowStatistics.h"
 #include "nodes/GroupContents.h"
+#include "nodes/GroupShading.h"
 #include "nodes/MapState.h"
 #include "nodes/PerContext.h"
 #include "nodes/RayCasters.h"
-#include "nodes/ShadingProgram.h"
 #include "raytrace/ScreenShadowTracer.h"
 
 #include <Inventor/SbMatrix.h>
@@ -34,16 +34,16 @@ namespace ivshadow {
 class DeepShadowPass;
 class RayShadowPass;
 
-// The work behind SoTransparentShadowGroup: finds the deep shadow lights, keeps the casters
-// and the maps up to date per GL context, and renders the children with the shading program.
-// SoPeelingSeparator uses it too, without shadows, for the shading of its layers.
+// The work behind SoTransparentShadowGroup: per GL context, keeps each deep shadow light's
+// map (MapMethod) or traced shadows (RayCasters, the captures) up to date with what the
+// subgraph holds (GroupContents), and renders the children with the group's shading
+// (GroupShading), which a SoPeelingSeparator below uses for its layers.
 class TransparentShadowGroupImpl {
  public:
   // Draws the owner's children (once or, for peeling, several times).
   using ChildrenRenderer = std::function<void(SoGLRenderAction*, bool inPath)>;
 
-  // `deepShadows` false: deep shadow lights are plain point lights here.
-  TransparentShadowGroupImpl(SoSeparator* owner, bool deepShadows, ChildrenRenderer renderChildren);
+  TransparentShadowGroupImpl(SoSeparator* owner, ChildrenRenderer renderChildren);
   ~TransparentShadowGroupImpl();
   TransparentShadowGroupImpl(const TransparentShadowGroupImpl&) = delete;
   TransparentShadowGroupImpl& operator=(const TransparentShadowGroupImpl&) = delete;
@@ -53,11 +53,6 @@ class TransparentShadowGroupImpl {
   bool render(SoGLRenderAction* action, bool inPath);
   void changed(SoNotList* list);
   const DeepShadowStatistics& statistics() const { return statistics_; }
-
-  // While the children render: binds `variant` of the shading program (through Coin, in the
-  // action's current state) with the group's uniforms, and returns it (null when it failed
-  // to build).
-  const UniformLocations* bindProgram(SoGLRenderAction* action, ShadingVariant variant);
 
  private:
   // What a trace of RAYS lights depends on: an equal key reuses the last trace.
@@ -89,19 +84,13 @@ class TransparentShadowGroupImpl {
     bool traceValid = false;
   };
 
-  SbMatrix localToEye(SoState* state) const;
-  int fogType(SoState* state) const;
   void buildMaps(SoGLRenderAction* action, Context& context);
   void traceRays(SoGLRenderAction* action, Context& context, bool inPath);
   SoSeparator* owner_;
-  bool deepShadows_;
   ChildrenRenderer renderChildren_;
   GroupContents contents_;
-  ShadingProgram programs_;
+  GroupShading shading_;
   PerContext<Context> contexts_;
-  // Valid while the children render.
-  ShadingUniforms uniforms_;
-  const DeepShadowPass* renderingPass_ = nullptr;
   DeepShadowStatistics statistics_;
   RayCasters rayCasters_;
   std::set<const SoDeepShadowLight*> methodLogged_;  // lights whose AUTO choice was said
