@@ -11,27 +11,19 @@
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SoPath.h>
-#include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetMatrixAction.h>
-#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/elements/SoDepthBufferElement.h>
-#include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
 #include <Inventor/elements/SoGLLazyElement.h>
-#include <Inventor/elements/SoLightElement.h>
 #include <Inventor/elements/SoModelMatrixElement.h>
 #include <Inventor/elements/SoProjectionMatrixElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/elements/SoViewingMatrixElement.h>
 #include <Inventor/elements/SoViewportRegionElement.h>
 #include <Inventor/errors/SoDebugError.h>
-#include <Inventor/misc/SoNotification.h>
-#include <Inventor/nodes/SoCamera.h>
-#include <Inventor/nodes/SoEnvironment.h>
 #include <Inventor/nodes/SoSeparator.h>
-#include <Inventor/nodes/SoShaderProgram.h>
 
 #include <algorithm>
 #include <chrono>
@@ -39,8 +31,6 @@
 
 namespace ivshadow {
 namespace {
-
-constexpr int kMaxLights = ShadingUniforms::kMaxLights;
 
 const char* methodName(int method) {
   return method == SoDeepShadowLight::RAYS ? "RAYS" : "MAP";
