@@ -1,0 +1,86 @@
+// ShadowGroupElement: the group's shading is in the traversal state while its children render,
+// and gone once the group's separator pops, whatever comes after it.
+#include "nodes/ShadowGroupElement.h"
+#include "nodes/SoDeepShadowLight.h"
+#include "nodes/SoTransparentShadowGroup.h"
+#include "tests/gl/GlContextTest.h"
+
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/nodes/SoCallback.h>
+#include <Inventor/nodes/SoCube.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <vector>
+
+namespace ivshadow::test {
+namespace {
+
+class ShadowGroupElementGLTest : public GlContextTest {};
+
+// What each probe saw, in traversal order: whether a group's shading was active.
+struct Seen {
+  std::vector<bool> active;
+  std::vector<bool> capturing;
+};
+
+SoCallback* probe(Seen& seen) {
+  auto* callback = new SoCallback;
+  callback->setCallback(
+      [](void* data, SoAction* action) {
+        if (!action->isOfType(SoGLRenderAction::getClassTypeId())) return;
+        auto* record = static_cast<Seen*>(data);
+        record->active.push_back(ShadowGroupElement::activeGroup(action->getState()) != nullptr);
+        record->capturing.push_back(ShadowGroupElement::capturing(action->getState()));
+      },
+      &seen);
+  return callback;
+}
+
+TEST_F(ShadowGroupElementGLTest, HoldsTheGroupOnlyWhileItsChildrenRender) {
+  Seen before, inside, after;
+  SoSeparator* root = new SoSeparator;
+  root->ref();
+  root->addChild(new SoOrthographicCamera);
+  root->addChild(probe(before));
+  auto* group = new SoTransparentShadowGroup;
+  auto* light = new SoDeepShadowLight;
+  light->method = SoDeepShadowLight::MAP;  // no capture pass: the children render once
+  group->addChild(light);
+  group->addChild(probe(inside));
+  group->addChild(new SoCube);
+  root->addChild(group);
+  root->addChild(probe(after));
+
+  renderer().render(root);
+  EXPECT_EQ(before.active, std::vector<bool>{false});
+  EXPECT_EQ(inside.active, std::vector<bool>{true});
+  EXPECT_EQ(after.active, std::vector<bool>{false});
+  EXPECT_EQ(inside.capturing, std::vector<bool>{false});
+  root->unref();
+}
+
+TEST_F(ShadowGroupElementGLTest, SaysCapturingWhileRaysLightsCapture) {
+  Seen inside, after;
+  SoSeparator* root = new SoSeparator;
+  root->ref();
+  root->addChild(new SoOrthographicCamera);
+  auto* group = new SoTransparentShadowGroup;
+  auto* light = new SoDeepShadowLight;
+  light->method = SoDeepShadowLight::RAYS;
+  group->addChild(light);
+  group->addChild(probe(inside));
+  group->addChild(new SoCube);
+  root->addChild(group);
+  root->addChild(probe(after));
+
+  renderer().render(root);
+  // An opaque cube: one capture (its opaque layer), then the shading pass.
+  EXPECT_EQ(inside.capturing, (std::vector<bool>{true, false}));
+  EXPECT_EQ(inside.active, (std::vector<bool>{false, true}));
+  EXPECT_EQ(after.capturing, std::vector<bool>{false});
+  root->unref();
+}
+
+}  // namespace
+}  // namespace ivshadow::test
