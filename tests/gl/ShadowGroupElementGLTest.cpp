@@ -3,6 +3,7 @@
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/SoDeepShadowLight.h"
 #include "nodes/SoTransparentShadowGroup.h"
+#include "scene/CoinRef.h"
 #include "tests/gl/GlContextTest.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -37,49 +38,39 @@ SoCallback* probe(Seen& seen) {
   return callback;
 }
 
-TEST_F(ShadowGroupElementGLTest, HoldsTheGroupOnlyWhileItsChildrenRender) {
-  Seen before, inside, after;
-  SoSeparator* root = new SoSeparator;
-  root->ref();
+// A camera, a probe, a group holding one light of `method`, a probe and a cube, a probe.
+CoinRef<SoSeparator> probedScene(int method, Seen& before, Seen& inside, Seen& after) {
+  CoinRef<SoSeparator> root(new SoSeparator);
   root->addChild(new SoOrthographicCamera);
   root->addChild(probe(before));
   auto* group = new SoTransparentShadowGroup;
   auto* light = new SoDeepShadowLight;
-  light->method = SoDeepShadowLight::MAP;  // no capture pass: the children render once
+  light->method = method;
   group->addChild(light);
   group->addChild(probe(inside));
   group->addChild(new SoCube);
   root->addChild(group);
   root->addChild(probe(after));
+  return root;
+}
 
-  renderer().render(root);
+TEST_F(ShadowGroupElementGLTest, HoldsTheGroupOnlyWhileItsChildrenRender) {
+  Seen before, inside, after;
+  // MAP: no capture pass, so the children render once.
+  renderer().render(probedScene(SoDeepShadowLight::MAP, before, inside, after).get());
   EXPECT_EQ(before.active, std::vector<bool>{false});
   EXPECT_EQ(inside.active, std::vector<bool>{true});
   EXPECT_EQ(after.active, std::vector<bool>{false});
   EXPECT_EQ(inside.capturing, std::vector<bool>{false});
-  root->unref();
 }
 
 TEST_F(ShadowGroupElementGLTest, SaysCapturingWhileRaysLightsCapture) {
-  Seen inside, after;
-  SoSeparator* root = new SoSeparator;
-  root->ref();
-  root->addChild(new SoOrthographicCamera);
-  auto* group = new SoTransparentShadowGroup;
-  auto* light = new SoDeepShadowLight;
-  light->method = SoDeepShadowLight::RAYS;
-  group->addChild(light);
-  group->addChild(probe(inside));
-  group->addChild(new SoCube);
-  root->addChild(group);
-  root->addChild(probe(after));
-
-  renderer().render(root);
+  Seen before, inside, after;
+  renderer().render(probedScene(SoDeepShadowLight::RAYS, before, inside, after).get());
   // An opaque cube: one capture (its opaque layer), then the shading pass.
   EXPECT_EQ(inside.capturing, (std::vector<bool>{true, false}));
   EXPECT_EQ(inside.active, (std::vector<bool>{false, true}));
   EXPECT_EQ(after.capturing, std::vector<bool>{false});
-  root->unref();
 }
 
 }  // namespace
