@@ -13,10 +13,10 @@
 namespace ivshadow {
 namespace {
 
-// Must match kFaceAxis/kFaceRight/kFaceUp in deep_shadow_common.glsl.
-const glm::vec3 kAxis[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-const glm::vec3 kRight[6] = {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}};
-const glm::vec3 kUp[6] = {{0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}};
+glm::vec3 faceVector(const FaceVectors& vectors, int face) {
+  const auto& v = vectors[std::size_t(face)];
+  return {v[0], v[1], v[2]};
+}
 
 // Empty layers hold this distance, so a lookup walking the layers stops at them.
 constexpr float kNoSurface = std::numeric_limits<float>::max();
@@ -25,14 +25,15 @@ constexpr float kNoSurface = std::numeric_limits<float>::max();
 // `near` to depth 1 and `far` to 0 (reversed depth with glClipControl's zero-to-one range:
 // floating-point depth then keeps its precision over near/far ratios of 1e6 and more).
 glm::mat4 faceViewProjection(int face, const glm::vec3& light, float near, float far) {
+  const glm::vec3 axis = faceVector(kFaceAxis, face), right = faceVector(kFaceRight, face),
+                  up = faceVector(kFaceUp, face);
   glm::mat4 view(1.0f);
   for (int column = 0; column < 3; ++column) {
-    view[column][0] = kRight[face][column];
-    view[column][1] = kUp[face][column];
-    view[column][2] = -kAxis[face][column];
+    view[column][0] = right[column];
+    view[column][1] = up[column];
+    view[column][2] = -axis[column];
   }
-  view[3] = glm::vec4(-glm::dot(kRight[face], light), -glm::dot(kUp[face], light),
-                      glm::dot(kAxis[face], light), 1.0f);
+  view[3] = glm::vec4(-glm::dot(right, light), -glm::dot(up, light), glm::dot(axis, light), 1.0f);
   glm::mat4 projection(0.0f);
   projection[0][0] = 1.0f;
   projection[1][1] = 1.0f;
@@ -143,7 +144,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUseProgram(program.name());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, flagsBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMapFlagsBinding, flagsBuffer);
   program.setInt("uPreviousDepth", 0);
   program.setInt("uPreviousVisibility", 1);
   program.setInt("uColourModel", static_cast<int>(request.colourModel));

@@ -20,15 +20,16 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   glGetIntegerv(GL_MAX_DRAW_BUFFERS, &drawBuffers);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &textureSize);
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
-  // The maps take the top 2 * kMaxSlots units, depth peeling the 3 below them, the traced
-  // shadows of RAYS lights 4 more, and Coin's own textures keep at least 4 at the bottom.
-  if (units < 2 * kMaxSlots + 3 + 4 + 4) {
-    whyNot = "at least " + std::to_string(2 * kMaxSlots + 3 + 4 + 4) +
+  // The units of callbacks/ShaderConstants.h, with Coin's own textures keeping at least
+  // kCoinUnitsAtLeast at the bottom.
+  if (units < kTextureUnitsNeeded) {
+    whyNot = "at least " + std::to_string(kTextureUnitsNeeded) +
              " fragment texture units are needed; this context offers " + std::to_string(units);
     return nullptr;
   }
-  if (drawBuffers < 4 || layers < 6 * 64) {
-    whyNot = "4 draw buffers and 384 array texture layers are needed";
+  if (drawBuffers < 4 || layers < 6 * kMaxMapLayers) {
+    whyNot = "4 draw buffers and " + std::to_string(6 * kMaxMapLayers) +
+             " array texture layers are needed";
     return nullptr;
   }
   std::unique_ptr<DeepShadowPass> pass(new DeepShadowPass);
@@ -39,7 +40,7 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
     return nullptr;
   }
   pass->maxTextureSize_ = textureSize;
-  pass->firstMapUnit_ = units - 2 * kMaxSlots;
+  pass->textureUnits_ = units;
   pass->flags_ = createBuffer();
   glNamedBufferData(pass->flags_.get(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
   return pass;
@@ -54,7 +55,13 @@ MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
   if (int(maps_.size()) <= slot) maps_.resize(std::size_t(slot) + 1);
   auto& map = maps_[std::size_t(slot)];
   if (!map) map = std::make_unique<DeepShadowMap>();
-  GlStateScope scope(GlStateScope::Extent::WholePass, {0, 1, 2});
+  // The build draws into its own framebuffer with its own program and reversed depth, and
+  // samples the previous layer (units 0, 1) and the casters' textures (unit 2).
+  GlStateScope scope(
+      GlStateScope::kFramebuffers | GlStateScope::kViewport | GlStateScope::kProgram |
+          GlStateScope::kVertexArray | GlStateScope::kStorageBuffers | GlStateScope::kDepth |
+          GlStateScope::kColourMask | GlStateScope::kClipControl | GlStateScope::kFragmentTests,
+      {{0, 1, 2}, {GL_TEXTURE_2D}});
   scope.disableFragmentTests();
   return map->build(request, program_, casters_, flags_.get());
 }
@@ -74,12 +81,12 @@ void DeepShadowPass::keepSlots(int count) {
 }
 
 std::unique_ptr<GlStateScope> DeepShadowPass::bindMaps(int count) const {
-  std::vector<int> units;
-  for (int slot = 0; slot < kMaxSlots; ++slot) {
-    units.push_back(depthUnit(slot));
-    units.push_back(visibilityUnit(slot));
-  }
-  auto scope = std::make_unique<GlStateScope>(GlStateScope::Extent::TextureUnits, units);
+  // Only the units of the maps bound here change, and only their array targets.
+  GlStateScope::Textures changed{{}, {GL_TEXTURE_2D_ARRAY}};
+  for (int slot = 0; slot < count && slot < int(maps_.size()); ++slot)
+    if (maps_[std::size_t(slot)])
+      changed.units.insert(changed.units.end(), {depthUnit(slot), visibilityUnit(slot)});
+  auto scope = std::make_unique<GlStateScope>(0u, changed);
   for (int slot = 0; slot < count && slot < int(maps_.size()); ++slot)
     if (maps_[std::size_t(slot)])
       maps_[std::size_t(slot)]->bind(depthUnit(slot), visibilityUnit(slot));

@@ -26,9 +26,12 @@ class DeepShadowPass {
   static std::unique_ptr<DeepShadowPass> create(std::string& whyNot);
 
   int maxTextureSize() const { return maxTextureSize_; }
+  int textureUnits() const { return textureUnits_; }
   // Units the camera pass samples slot s's maps from: depthUnit(s), visibilityUnit(s).
-  int depthUnit(int slot) const { return firstMapUnit_ + slot; }
-  int visibilityUnit(int slot) const { return firstMapUnit_ + kMaxSlots + slot; }
+  int depthUnit(int slot) const { return mapDepthUnit(textureUnits_, slot); }
+  int visibilityUnit(int slot) const { return mapVisibilityUnit(textureUnits_, slot); }
+  // Unit i (0..kRayUnits-1) of the RAYS lights' samplers (RayShadowPass).
+  int rayUnit(int i) const { return firstRayUnit(textureUnits_) + i; }
 
   void uploadCasters(const SceneTriangles& triangles);
   // Builds slot `slot`'s map, saving and restoring the GL state it changes.
@@ -46,7 +49,7 @@ class DeepShadowPass {
   DeepShadowPass() = default;
 
   int maxTextureSize_ = 0;
-  int firstMapUnit_ = 0;
+  int textureUnits_ = 0;  // GL_MAX_TEXTURE_IMAGE_UNITS
   GlProgram program_;
   GlBuffer flags_;
   CasterBuffers casters_;

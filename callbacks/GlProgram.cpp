@@ -1,6 +1,7 @@
 #include "callbacks/GlProgram.h"
 
 #include "GlslSources.h"
+#include "callbacks/ShaderConstants.h"
 
 #include <epoxy/gl.h>
 
@@ -41,8 +42,9 @@ GLuint compile(GLenum stage, const std::string& source, std::string& error) {
 
 }  // namespace
 
-std::string composeShader(const char* body, const std::string& defines) {
-  return std::string("#version 450 compatibility\n") + defines + glsl::kDeepShadowCommonGlsl + body;
+std::string composeShader(const std::string& body, const std::string& defines) {
+  return "#version 450 compatibility\n" + shaderConstantDefines() + defines +
+         glsl::kDeepShadowCommonGlsl + body;
 }
 
 GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fragmentSource,
@@ -68,12 +70,10 @@ GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fr
     error = "program does not link: " + infoLog(program, true);
     return {};
   }
+  result.uniforms_ = UniformLocations(program);
   return result;
 }
 
-int GlProgram::location(const char* uniform) const {
-  return glGetUniformLocation(program_.get(), uniform);
-}
 void GlProgram::setInt(const char* uniform, int value) const {
   glProgramUniform1i(program_.get(), location(uniform), value);
 }

@@ -1,12 +1,14 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
+#include "callbacks/UniformLocations.h"
 
 #include <string>
 
 namespace ivshadow {
 
-// A linked GLSL program of our own (not one Coin manages), with uniform setters by name.
+// A linked GLSL program of our own (not one Coin manages), with uniform setters by name whose
+// locations were read once after linking.
 class GlProgram {
  public:
   // Compiles and links in the current context; on failure returns an empty program and puts
@@ -18,17 +20,19 @@ class GlProgram {
   explicit operator bool() const { return static_cast<bool>(program_); }
   unsigned int name() const { return program_.get(); }
 
-  int location(const char* uniform) const;
+  int location(const char* uniform) const { return uniforms_[uniform]; }
   void setInt(const char* uniform, int value) const;
   void setVec3(const char* uniform, const float* value) const;
   void setMat4(const char* uniform, const float* columnMajor) const;
 
  private:
   GlProgramObject program_;
+  UniformLocations uniforms_;
 };
 
-// "#version 450 compatibility", `defines`, the shared declarations, then `body`: how every
-// program of the plugin is assembled from the embedded .glsl files.
-std::string composeShader(const char* body, const std::string& defines = {});
+// "#version 450 compatibility", the shared constants (shaderConstantDefines()), `defines`, the
+// shared declarations, then `body`: how every program of the plugin is assembled from the
+// embedded .glsl files.
+std::string composeShader(const std::string& body, const std::string& defines = {});
 
 }  // namespace ivshadow

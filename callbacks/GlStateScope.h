@@ -1,45 +1,61 @@
 #pragma once
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace ivshadow {
 
-// Saves the GL state that the plugin's own passes change in the middle of Coin's traversal
-// and puts it back on destruction, so Coin's lazy state cache stays true: framebuffer and
-// viewport, program and vertex array, depth, clip control, the per-fragment switches Coin
-// may have left on (blending, alpha test, stipple, clip planes, ...), and the textures bound
-// to the units the pass uses.
+// Saves the GL state that one of the plugin's passes changes in the middle of Coin's
+// traversal and puts it back on destruction, so Coin's lazy state cache stays true. Each
+// query is a round trip into the driver, so the scope reads only the groups the pass names
+// in `changes`, and only the texture targets it binds on the units it names.
 class GlStateScope {
  public:
-  enum class Extent {
-    TextureUnits,  // only the bindings of the given units and the active unit
-    WholePass      // everything listed above
+  // The groups of state a pass may change (combined with |).
+  enum Change : unsigned {
+    kFramebuffers = 1u << 0,  // draw and read framebuffer bindings
+    kViewport = 1u << 1,
+    kProgram = 1u << 2,  // the program in use
+    kVertexArray = 1u << 3,
+    kStorageBuffers = 1u << 4,  // generic and indexed (0, 1) shader storage bindings
+    kBlendFunction = 1u << 5,   // blend functions and equations
+    kDepth = 1u << 6,           // depth function and write mask
+    kColourMask = 1u << 7,
+    kClipControl = 1u << 8,
+    // Blending, depth test, culling and every other per-fragment or clipping switch Coin may
+    // have left on, and the polygon mode: what disableFragmentTests() changes.
+    kFragmentTests = 1u << 9,
   };
-  // `textureUnits`: the units whose bindings (2D and 2D-array) the pass will change.
-  GlStateScope(Extent extent, const std::vector<int>& textureUnits);
+  struct Textures {
+    std::vector<int> units;             // units the pass binds textures on
+    std::vector<unsigned int> targets;  // the targets it binds there (GL_TEXTURE_2D, ...)
+  };
+
+  explicit GlStateScope(unsigned int changes, const Textures& textures = {});
   ~GlStateScope();
   GlStateScope(const GlStateScope&) = delete;
   GlStateScope& operator=(const GlStateScope&) = delete;
 
   // Switches off every per-fragment and clipping test the saved state may have on, and
-  // fills polygons (Coin may have drawn lines or points for a DrawStyle).
+  // fills polygons (Coin may have drawn lines or points for a DrawStyle). Needs
+  // kFragmentTests.
   void disableFragmentTests() const;
+  // The draw framebuffer found (kFramebuffers): where the pass's result goes.
+  int drawFramebuffer() const { return drawFramebuffer_; }
 
  private:
   struct UnitBinding {
     int unit;
-    int texture2D;
-    int texture2DArray;
-    int sampler;
+    unsigned int target;
+    int texture;
   };
-  Extent extent_;
+  unsigned int changes_;
   int drawFramebuffer_ = 0;
   int readFramebuffer_ = 0;
   std::array<int, 4> viewport_{};
   int program_ = 0;
   int vertexArray_ = 0;
-  int arrayBuffer_ = 0;
   int storageBuffer_ = 0;
   std::array<int, 2> storageBufferBindings_{};
   int activeTexture_ = 0;

@@ -3,13 +3,14 @@
 #include "GlslSources.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/UniformLocations.h"
 
 #include <epoxy/gl.h>
 
 namespace ivshadow {
 namespace {
 
-// Shading program modes (shading.frag) and their texture units, above Coin's own units.
+// The peel targets' units, from firstPeelUnit() on.
 constexpr int kDepthRangeOffset = 0;
 constexpr int kFrontOffset = 1;
 constexpr int kBackLayerOffset = 2;
@@ -30,8 +31,8 @@ std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
   pass->progress_ = createBuffer();
   glNamedBufferData(pass->progress_.get(), sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
   pass->emptyVertexArray_ = createVertexArray();
-  // The peel textures sit below the deep shadow maps' units (the top 2 * kMaxGlLights).
-  pass->firstUnit_ = glInteger(GL_MAX_TEXTURE_IMAGE_UNITS) - 2 * kMaxGlLights - 3;
+  pass->textureUnits_ = glInteger(GL_MAX_TEXTURE_IMAGE_UNITS);
+  pass->firstUnit_ = firstPeelUnit(pass->textureUnits_);
   return pass;
 }
 
@@ -65,10 +66,14 @@ void PeelPass::allocate(int width, int height) {
 
 void PeelPass::begin(int x, int y, int width, int height) {
   timer_.start();
-  std::vector<int> units;
-  for (int i = 0; i < 3; ++i) units.push_back(firstUnit_ + i);
-  saved_ = std::make_unique<GlStateScope>(GlStateScope::Extent::WholePass, units);
-  targetFramebuffer_ = glInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+  // Until end(): the peel targets with MAX blending, the progress flag, the compositing
+  // program drawing with depth writes off, and the peel textures on their units.
+  saved_ = std::make_unique<GlStateScope>(
+      GlStateScope::kFramebuffers | GlStateScope::kViewport | GlStateScope::kProgram |
+          GlStateScope::kVertexArray | GlStateScope::kStorageBuffers |
+          GlStateScope::kBlendFunction | GlStateScope::kDepth | GlStateScope::kFragmentTests,
+      GlStateScope::Textures{{firstUnit_, firstUnit_ + 1, firstUnit_ + 2}, {GL_TEXTURE_2D}});
+  targetFramebuffer_ = saved_->drawFramebuffer();
   viewport_ = {x, y, width, height};
   // Window coordinates index the targets directly, so they reach the viewport's far corner.
   allocate(x + width, y + height);
@@ -78,7 +83,7 @@ void PeelPass::begin(int x, int y, int width, int height) {
   const float clearBack[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   glClearNamedFramebufferfv(backFramebuffer_.get(), GL_COLOR, 0, clearBack);
 
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, progress_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPeelProgressBinding, progress_.get());
   glEnable(GL_BLEND);
   glBlendEquation(GL_MAX);
 }
@@ -107,7 +112,10 @@ bool PeelPass::finishPass(int pass, bool dual) {
     // accumulation's alpha keeping the product of their transmittances. The draw happens in
     // the middle of Coin's passes: whatever Coin left on (culling, polygon mode, its program)
     // is put back afterwards.
-    GlStateScope scope(GlStateScope::Extent::WholePass, {firstUnit_ + kBackLayerOffset});
+    GlStateScope scope(GlStateScope::kFramebuffers | GlStateScope::kProgram |
+                           GlStateScope::kVertexArray | GlStateScope::kBlendFunction |
+                           GlStateScope::kFragmentTests,
+                       {{firstUnit_ + kBackLayerOffset}, {GL_TEXTURE_2D}});
     scope.disableFragmentTests();
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, backFramebuffer_.get());
     glEnable(GL_BLEND);
@@ -153,12 +161,9 @@ void PeelPass::end(int passes) {
   timer_.stop();
 }
 
-void PeelPass::setPeelUniforms(unsigned int program, int mode) const {
-  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), mode);
-  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelDepth"),
-                     firstUnit_ + kDepthRangeOffset);
-  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelFront"),
-                     firstUnit_ + kFrontOffset);
+void PeelPass::setPeelUniforms(const UniformLocations& program) const {
+  glProgramUniform1i(program.program(), program["uPeelDepth"], firstUnit_ + kDepthRangeOffset);
+  glProgramUniform1i(program.program(), program["uPeelFront"], firstUnit_ + kFrontOffset);
 }
 
 }  // namespace ivshadow

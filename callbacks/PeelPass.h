@@ -11,16 +11,21 @@
 namespace ivshadow {
 
 class GlStateScope;
+class UniformLocations;
 
 // The GL side of SoPeelingSeparator in one context: the peel targets (depth range, front
 // accumulation, back layer, back accumulation, each sized to the viewport), the copy of the
 // opaque depth, the compositing program and the progress flag. A frame is
 //   begin(); [startPass(i); <Coin draws the children>; finishPass(i)]...; end();
-// with the shading program's peel uniforms set through setPeelUniforms() per pass.
+// with a peel variant of the shading program bound and its units set through
+// setPeelUniforms() per pass.
 class PeelPass {
  public:
   static std::unique_ptr<PeelPass> create(std::string& whyNot);
   ~PeelPass();
+
+  // GL_MAX_TEXTURE_IMAGE_UNITS of the context (read once).
+  int textureUnits() const { return textureUnits_; }
 
   // Saves GL state, sizes the targets to cover the viewport (x, y, width, height) in window
   // coordinates, copies the depth of the opaque pass from the current framebuffer and
@@ -38,8 +43,8 @@ class PeelPass {
   // GPU time from begin() to the end of end(), waiting for it.
   double gpuMs() const { return timer_.elapsedMs(); }
 
-  // Sets the shading program's peel mode (kPeel* in shading.frag) and texture units.
-  void setPeelUniforms(unsigned int program, int mode) const;
+  // Sets the texture units of a peel variant of the shading program (peel.frag).
+  void setPeelUniforms(const UniformLocations& program) const;
 
  private:
   PeelPass() = default;
@@ -60,6 +65,7 @@ class PeelPass {
   std::unique_ptr<GlStateScope> saved_;
   int targetFramebuffer_ = 0;
   std::array<int, 4> viewport_{};
+  int textureUnits_ = 0;
   int firstUnit_ = 0;
   GlPassTimer timer_;
 };

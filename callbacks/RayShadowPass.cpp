@@ -3,6 +3,7 @@
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/PixelStoreScope.h"
+#include "callbacks/UniformLocations.h"
 
 #include <epoxy/gl.h>
 
@@ -14,22 +15,12 @@ constexpr int kPreviousUnit = 1;  // capture: the previous transparent layer (sa
 constexpr int kDepthUnit = 2;     // shading: captured depths (sampler2DArray)
 constexpr int kVisibilityUnit = 3;
 
-// shading.frag's uPeelMode values for the captures (kRayOpaque, kRayTransparent) and for
-// ordinary shading (kPeelOff).
-constexpr int kShadeMode = 0;
-constexpr int kCaptureOpaqueMode = 5;
-constexpr int kCaptureTransparentMode = 6;
-
 // Layer k's capture target: the opaque one, then the two transparent ones in turn.
 std::size_t targetOf(int layer) {
   return layer == 0 ? 0u : std::size_t(1 + (layer - 1) % 2);
 }
 
 }  // namespace
-
-int RayShadowPass::unit(int i) {
-  return glInteger(GL_MAX_TEXTURE_IMAGE_UNITS) - 2 * kMaxGlLights - 3 - 4 + i;
-}
 
 void RayShadowPass::allocate(int width, int height) {
   if (width == width_ && height == height_) return;
@@ -54,15 +45,20 @@ void RayShadowPass::allocate(int width, int height) {
 }
 
 void RayShadowPass::beginCapture(int x, int y, int width, int height) {
-  saved_ = std::make_unique<GlStateScope>(GlStateScope::Extent::WholePass,
-                                          std::vector<int>{unit(kOpaqueUnit), unit(kPreviousUnit)});
+  // Until endCapture(): the capture targets, their depth test and the previous captures on
+  // two units. Binding texture 0 there unbinds every target, so both kinds are saved.
+  saved_ = std::make_unique<GlStateScope>(
+      GlStateScope::kFramebuffers | GlStateScope::kViewport | GlStateScope::kProgram |
+          GlStateScope::kDepth | GlStateScope::kFragmentTests,
+      GlStateScope::Textures{{unit(kOpaqueUnit), unit(kPreviousUnit)},
+                             {GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY}});
   viewport_ = {x, y, width, height};
   allocate(x + width, y + height);
   // Capture writes positions, not colours: blending would mix them.
   glDisable(GL_BLEND);
 }
 
-void RayShadowPass::startLayer(int layer, unsigned int program) {
+void RayShadowPass::startLayer(int layer, const UniformLocations& program) {
   const std::size_t target = targetOf(layer);
   const GLuint fbo = framebuffers_[target].get();
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
@@ -84,10 +80,7 @@ void RayShadowPass::startLayer(int layer, unsigned int program) {
   glBindTextureUnit(GLuint(unit(kOpaqueUnit)), layer == 0 ? 0u : positions_[0].get());
   glBindTextureUnit(GLuint(unit(kPreviousUnit)),
                     layer >= 2 ? positions_[targetOf(layer - 1)].get() : 0u);
-  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"),
-                     layer == 0 ? kCaptureOpaqueMode : kCaptureTransparentMode);
-  glProgramUniform1i(program, glGetUniformLocation(program, "uRayFirstTransparent"),
-                     layer <= 1 ? 1 : 0);
+  glProgramUniform1i(program.program(), program["uRayFirstTransparent"], layer <= 1 ? 1 : 0);
 }
 
 bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
@@ -108,9 +101,8 @@ bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
   return false;
 }
 
-void RayShadowPass::endCapture(unsigned int program) {
+void RayShadowPass::endCapture() {
   saved_.reset();
-  glProgramUniform1i(program, glGetUniformLocation(program, "uPeelMode"), kShadeMode);
 }
 
 void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
@@ -156,9 +148,9 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
 }
 
 std::unique_ptr<GlStateScope> RayShadowPass::bind() const {
-  auto scope =
-      std::make_unique<GlStateScope>(GlStateScope::Extent::TextureUnits,
-                                     std::vector<int>{unit(kDepthUnit), unit(kVisibilityUnit)});
+  GlStateScope::Textures changed{{}, {GL_TEXTURE_2D_ARRAY}};
+  if (shadingDepth_) changed.units = {unit(kDepthUnit), unit(kVisibilityUnit)};
+  auto scope = std::make_unique<GlStateScope>(0u, changed);
   if (shadingDepth_) {
     glBindTextureUnit(GLuint(unit(kDepthUnit)), shadingDepth_.get());
     glBindTextureUnit(GLuint(unit(kVisibilityUnit)), shadingVisibility_.get());

@@ -10,6 +10,7 @@
 namespace ivshadow {
 
 class GlStateScope;
+class UniformLocations;
 
 // The GL side of SoDeepShadowLight's RAYS method in one context. Before the group's children
 // are shaded, Coin draws them into capture targets: first the nearest opaque surface of each
@@ -22,21 +23,21 @@ class RayShadowPass {
  public:
   static constexpr int kMaxTransparentLayers = 4;
 
-  RayShadowPass() = default;
-
-  // Texture unit i (0..3) of the ray samplers: below the peel units, above Coin's.
-  static int unit(int i);
+  // `firstUnit`: the first of the kRayUnits units of the ray samplers
+  // (DeepShadowPass::rayUnit(0)).
+  explicit RayShadowPass(int firstUnit) : firstUnit_(firstUnit) {}
 
   // Saves GL state and sizes the capture targets to the viewport's far corner (window
   // coordinates index them).
   void beginCapture(int x, int y, int width, int height);
-  // Binds layer k's target (0: opaque), clears it and sets the program's capture uniforms.
-  void startLayer(int layer, unsigned int program);
+  // Binds layer k's target (0: opaque), clears it and sets the capture uniforms of
+  // `program`, the capture variant of the shading program bound for this layer.
+  void startLayer(int layer, const UniformLocations& program);
   // Reads layer k back; returns false when it caught no traced surface (deeper layers would
   // catch nothing either).
   bool finishLayer(int layer, SurfaceLayer& out);
-  // Restores the GL state and puts `program` back in its shading mode.
-  void endCapture(unsigned int program);
+  // Restores the GL state.
+  void endCapture();
 
   // Uploads the captured depths of the first `count` layers and the visibility of `rays`
   // lights for the shading pass.
@@ -48,7 +49,9 @@ class RayShadowPass {
 
  private:
   void allocate(int width, int height);
+  int unit(int i) const { return firstUnit_ + i; }
 
+  int firstUnit_ = 0;
   int width_ = 0;
   int height_ = 0;
   // Capture targets: [0] the opaque layer, [1] and [2] alternate for transparent layers.

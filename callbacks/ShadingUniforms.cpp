@@ -1,18 +1,18 @@
 #include "callbacks/ShadingUniforms.h"
 
-#include "callbacks/DeepShadowPass.h"
-#include "callbacks/RayShadowPass.h"
+#include "callbacks/UniformLocations.h"
 
 #include <epoxy/gl.h>
 
 namespace ivshadow {
 
-void ShadingUniforms::apply(unsigned int program, const DeepShadowPass& pass) const {
-  auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
+void ShadingUniforms::apply(const UniformLocations& locations) const {
+  const GLuint program = locations.program();
+  auto at = [&locations](const char* name) { return locations[name]; };
   std::array<int, kMaxLights> depthUnits{}, visibilityUnits{};
   for (int slot = 0; slot < kMaxLights; ++slot) {
-    depthUnits[std::size_t(slot)] = pass.depthUnit(slot);
-    visibilityUnits[std::size_t(slot)] = pass.visibilityUnit(slot);
+    depthUnits[std::size_t(slot)] = mapDepthUnit(textureUnits, slot);
+    visibilityUnits[std::size_t(slot)] = mapVisibilityUnit(textureUnits, slot);
   }
   glProgramUniform1i(program, at("textureMap0"), 0);
   glProgramUniform1i(program, at("uLightCount"), lightCount);
@@ -32,10 +32,10 @@ void ShadingUniforms::apply(unsigned int program, const DeepShadowPass& pass) co
   glProgramUniform1iv(program, at("uMapRay"), kMaxLights, mapRay.data());
   glProgramUniform1i(program, at("uRayLayers"), rayLayers);
   // The ray samplers always get their own units, used or not (see the map samplers above).
-  glProgramUniform1i(program, at("uRayOpaque"), RayShadowPass::unit(0));
-  glProgramUniform1i(program, at("uRayPrevious"), RayShadowPass::unit(1));
-  glProgramUniform1i(program, at("uRayDepth"), RayShadowPass::unit(2));
-  glProgramUniform1i(program, at("uRayVisibility"), RayShadowPass::unit(3));
+  glProgramUniform1i(program, at("uRayOpaque"), firstRayUnit(textureUnits) + 0);
+  glProgramUniform1i(program, at("uRayPrevious"), firstRayUnit(textureUnits) + 1);
+  glProgramUniform1i(program, at("uRayDepth"), firstRayUnit(textureUnits) + 2);
+  glProgramUniform1i(program, at("uRayVisibility"), firstRayUnit(textureUnits) + 3);
 }
 
 void darkenLights(int first) {

@@ -6,7 +6,7 @@
 
 namespace ivshadow {
 
-class DeepShadowPass;
+class UniformLocations;
 
 // The uniforms of the camera-pass program (shading.frag) that Coin does not manage. Coin's
 // SoShaderParameter nodes cannot set them: Coin matches uniform names against
@@ -26,6 +26,9 @@ struct ShadingUniforms {
   // Per slot: the index of its RAYS light among the traced ones, -1 for a slot with a map.
   std::array<int, kMaxLights> mapRay = noRays();
   int rayLayers = 0;  // captured surface layers of the traced visibility
+  // GL_MAX_TEXTURE_IMAGE_UNITS of the context: the samplers' units follow from it
+  // (ShaderConstants.h).
+  int textureUnits = 0;
 
   static std::array<int, kMaxLights> noRays() {
     std::array<int, kMaxLights> none{};
@@ -33,8 +36,9 @@ struct ShadingUniforms {
     return none;
   }
 
-  // Sets the uniforms on `program` (the program Coin made current for this group).
-  void apply(unsigned int program, const DeepShadowPass& pass) const;
+  // Sets the uniforms on `program` (a variant of ShadingProgram that Coin made current); a
+  // variant without some of them ignores those.
+  void apply(const UniformLocations& program) const;
 };
 
 // Sets GL lights [first, ShadingUniforms::kMaxLights) to contribute nothing. The program

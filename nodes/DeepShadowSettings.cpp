@@ -1,5 +1,6 @@
 #include "nodes/DeepShadowSettings.h"
 
+#include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowLight.h"
 
 #include <Inventor/errors/SoDebugError.h>
@@ -57,7 +58,7 @@ DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize)
   DeepShadowSettings s;
   s.resolution =
       clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
-  s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, 64);
+  s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, kMaxMapLayers);
   s.nearRadius = finiteOr(light, "nearRadius", light.nearRadius.getValue(), -1.0f);
   s.farRadius = finiteOr(light, "farRadius", light.farRadius.getValue(), -1.0f);
   if (s.nearRadius > 0.0f && s.farRadius > 0.0f && s.nearRadius >= s.farRadius) {
@@ -82,6 +83,14 @@ DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize)
   }
   s.method = light.method.getValue();
   return s;
+}
+
+ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {
+  const bool coloured = shadowColor == SoDeepShadowLight::COLORED ||
+                        (shadowColor == SoDeepShadowLight::AUTO && colouredCasters);
+  if (!coloured) return ShadowColourModel::Monochrome;
+  return colorModel == SoDeepShadowLight::POWER ? ShadowColourModel::Power
+                                                : ShadowColourModel::Saturate;
 }
 
 }  // namespace ivshadow

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "scene/ShadowTypes.h"
 
 class SoDeepShadowLight;
 
@@ -23,5 +24,11 @@ struct DeepShadowSettings {
 // Reads and clamps the light's fields; each field that is out of range is reported once per
 // light through SoDebugError::postWarning, naming the node and the field.
 IVSHADOW_INTERNAL DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
+
+// How the shadow of a light with these shadowColor and colorModel fields
+// (SoDeepShadowLight::ShadowColor, ::ColorModel) filters light: COLORED and MONOCHROME as set,
+// AUTO coloured when some transparent caster is coloured; a coloured one by SATURATE or POWER.
+// The GL path and the reference both ask here, so they cannot resolve it differently.
+IVSHADOW_INTERNAL ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters);
 
 }  // namespace ivshadow

@@ -5,17 +5,25 @@
 
 namespace ivshadow {
 
+// Calls `visit(path)` with the path to every node of `type` under `root`, in traversal order;
+// with `searchingAll` false, not below switches that turn their children off.
+template <typename Visit>
+void forEachPathTo(SoNode* root, SoType type, bool searchingAll, Visit visit) {
+  SoSearchAction search;
+  search.setType(type);
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(searchingAll ? TRUE : FALSE);
+  search.apply(root);
+  const SoPathList& paths = search.getPaths();
+  for (int i = 0; i < paths.getLength(); ++i) visit(*paths[i]);
+}
+
 // Calls `visit(node)` for every node of type T under `root`, switched off or not, in
 // traversal order.
 template <typename T, typename Visit>
 void forEachNodeOfType(SoNode* root, Visit visit) {
-  SoSearchAction search;
-  search.setType(T::getClassTypeId());
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(TRUE);
-  search.apply(root);
-  const SoPathList& paths = search.getPaths();
-  for (int i = 0; i < paths.getLength(); ++i) visit(*static_cast<T*>(paths[i]->getTail()));
+  forEachPathTo(root, T::getClassTypeId(), true,
+                [&visit](SoPath& path) { visit(*static_cast<T*>(path.getTail())); });
 }
 
 }  // namespace ivshadow

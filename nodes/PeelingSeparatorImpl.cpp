@@ -4,6 +4,7 @@
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoPeelingSeparator.h"
+#include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -20,21 +21,9 @@
 #include <chrono>
 
 namespace ivshadow {
-namespace {
-
-// Shading program modes, as in shading.frag.
-constexpr int kPeelOff = 0;
-constexpr int kPeelOpaque = 1;
-constexpr int kPeelInit = 2;
-constexpr int kPeelFrontToBack = 3;
-constexpr int kPeelDual = 4;
-
-}  // namespace
 
 PeelingSeparatorImpl::PeelingSeparatorImpl(SoPeelingSeparator* owner)
-    : owner_(owner), shading_(owner, false, [this](SoGLRenderAction* action, bool inPath) {
-        peel(action, inPath);
-      }) {}
+    : owner_(owner), contents_(owner, false), shading_(contents_) {}
 
 PeelingSeparatorImpl::~PeelingSeparatorImpl() = default;
 
@@ -45,23 +34,8 @@ void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) 
     owner_->SoSeparator::GLRenderBelowPath(action);
 }
 
-void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
-  // A group capturing surfaces for its RAYS lights wants every layer drawn with its program.
-  if (TransparentShadowGroupImpl::capturing()) {
-    renderPlainly(action, inPath);
-    return;
-  }
-  // Inside a deep shadow group its program, uniforms and maps are already in place.
-  if (TransparentShadowGroupImpl::activeGroup() != nullptr) {
-    peel(action, inPath);
-    return;
-  }
-  if (!shading_.render(action, inPath)) renderPlainly(action, inPath);
-}
-
-void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
-  SoState* state = action->getState();
-  PeelPass* pass = passes_.get(SoGLCacheContextElement::get(state), [] {
+PeelPass* PeelingSeparatorImpl::passFor(SoState* state) {
+  return passes_.get(SoGLCacheContextElement::get(state), [] {
     std::string whyNot;
     auto made = PeelPass::create(whyNot);
     if (!made) {
@@ -74,20 +48,62 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
     }
     return made;
   });
-  const unsigned int program = currentProgram();
-  if (pass == nullptr || program == 0) {
+}
+
+void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
+  // A group capturing surfaces for its RAYS lights wants every layer drawn with its program.
+  SoState* state = action->getState();
+  if (ShadowGroupElement::capturing(state)) {
+    renderPlainly(action, inPath);
+    return;
+  }
+  // Inside a deep shadow group its program, uniforms and maps are already in place.
+  if (GroupShading* group = ShadowGroupElement::activeGroup(state)) {
+    peel(action, inPath, *group);
+    return;
+  }
+  PeelPass* pass = passFor(state);
+  if (pass == nullptr) {
+    renderPlainly(action, inPath);
+    return;
+  }
+  // The uniforms and the program belong to this frame; a render cache above the separator
+  // must not replay them.
+  SoCacheElement::invalidate(state);
+  contents_.update();
+  state->push();
+  if (shading_.begin(action, pass->textureUnits()) == nullptr) {
+    state->pop();
+    renderPlainly(action, inPath);
+    return;
+  }
+  shading_.apply();
+  SoShapeStyleElement::setShadowsRendering(state, TRUE);
+  peel(action, inPath, shading_);
+  shading_.end();
+  SoShapeStyleElement::setShadowsRendering(state, FALSE);
+  state->pop();
+}
+
+void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShading& shading) {
+  SoState* state = action->getState();
+  PeelPass* pass = passFor(state);
+  // No program current: a SoShadowStyle above switched shading off for these shapes.
+  if (pass == nullptr || currentProgram() == 0) {
     renderPlainly(action, inPath);
     return;
   }
   // Each pass sets its own uniforms and targets; no cache above may replay one of them.
   SoCacheElement::invalidate(state);
 
-  pass->setPeelUniforms(program, kPeelOpaque);
   state->push();
   // The opaque pass discards transparent fragments; drawn at once, none is delayed.
   overrideTransparencyType(state, SoGLRenderAction::NONE);
+  const bool opaqueBound = shading.bind(action, ShadingVariant::OpaqueOnly) != nullptr;
   renderPlainly(action, inPath);
   state->pop();
+  // Without the opaque variant (Coin has said why) the plain pass drew everything.
+  if (!opaqueBound) return;
 
   const auto start = std::chrono::steady_clock::now();
   const SbViewportRegion& region = SoViewportRegionElement::get(state);
@@ -101,17 +117,6 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
 
   pass->begin(origin[0], origin[1], size[0], size[1]);
   state->push();
-  TransparentShadowGroupImpl* group = TransparentShadowGroupImpl::activeGroup();
-  const unsigned int peelProgram = (group ? group : &shading_)->bindPeelProgram(action);
-  if (peelProgram == 0) {
-    // The peel program did not build (Coin has said why): the opaque pass stands, and the
-    // group's program must not keep discarding transparent fragments.
-    state->pop();
-    pass->end(0);
-    pass->setPeelUniforms(program, kPeelOff);
-    SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
-    return;
-  }
   // Drawn at once with blending on, which the peel passes turn into MAX blending.
   overrideTransparencyType(state, SoGLRenderAction::BLEND);
   // Against the opaque pass's depth: only what lies in front of it is peeled, and the
@@ -119,10 +124,14 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
   SoDepthBufferElement::set(state, TRUE, FALSE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
   int passes = 0;
   for (;;) {
+    const UniformLocations* peelProgram =
+        shading.bind(action, passes == 0 ? ShadingVariant::PeelInit
+                             : dual      ? ShadingVariant::PeelDual
+                                         : ShadingVariant::PeelFrontToBack);
+    // A peel variant did not build (Coin has said why): the passes done so far stand.
+    if (peelProgram == nullptr) break;
     pass->startPass(passes);
-    pass->setPeelUniforms(peelProgram, passes == 0 ? kPeelInit
-                                       : dual      ? kPeelDual
-                                                   : kPeelFrontToBack);
+    pass->setPeelUniforms(*peelProgram);
     renderPlainly(action, inPath);
     const bool deeper = pass->finishPass(passes, dual);
     ++passes;
@@ -130,7 +139,6 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath) {
   }
   state->pop();
   pass->end(passes);
-  pass->setPeelUniforms(program, kPeelOff);
   // The passes drew with blending and targets Coin did not choose; the scope restored GL,
   // and Coin must not trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);

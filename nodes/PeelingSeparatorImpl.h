@@ -1,20 +1,22 @@
 #pragma once
 
 #include "ivshadow/PeelStatistics.h"
+#include "nodes/GroupContents.h"
+#include "nodes/GroupShading.h"
 #include "nodes/PerContext.h"
-#include "nodes/TransparentShadowGroupImpl.h"
 
 class SoGLRenderAction;
 class SoNotList;
 class SoPeelingSeparator;
+class SoState;
 
 namespace ivshadow {
 
 class PeelPass;
 
 // The work behind SoPeelingSeparator: the opaque pass, the peel passes and the compositing.
-// Layers are shaded by the program current when the separator renders: a surrounding deep
-// shadow group's, or else its own (the group's program without shadows).
+// Layers are shaded by a surrounding deep shadow group's shading, with its maps, or else by
+// the separator's own (the same programs, lit by the lights in force, without shadows).
 class PeelingSeparatorImpl {
  public:
   explicit PeelingSeparatorImpl(SoPeelingSeparator* owner);
@@ -23,15 +25,18 @@ class PeelingSeparatorImpl {
   PeelingSeparatorImpl& operator=(const PeelingSeparatorImpl&) = delete;
 
   void render(SoGLRenderAction* action, bool inPath);
-  void changed(SoNotList* list) { shading_.changed(list); }
+  void changed(SoNotList* list) { contents_.changed(list); }
   const PeelStatistics& statistics() const { return statistics_; }
 
  private:
-  void peel(SoGLRenderAction* action, bool inPath);
+  // The passes of this context; null (with one warning) when it cannot peel.
+  PeelPass* passFor(SoState* state);
+  void peel(SoGLRenderAction* action, bool inPath, GroupShading& shading);
   void renderPlainly(SoGLRenderAction* action, bool inPath);
 
   SoPeelingSeparator* owner_;
-  TransparentShadowGroupImpl shading_;
+  GroupContents contents_;  // the lights and camera below it (it casts no shadows)
+  GroupShading shading_;
   PerContext<PeelPass> passes_;
   PeelStatistics statistics_;
 };

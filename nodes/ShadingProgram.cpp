@@ -2,30 +2,91 @@
 
 #include "GlslSources.h"
 #include "callbacks/GlProgram.h"
+#include "callbacks/ShadingUniforms.h"
 
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/elements/SoGLCacheContextElement.h>
 #include <Inventor/nodes/SoFragmentShader.h>
 #include <Inventor/nodes/SoShaderParameter.h>
 #include <Inventor/nodes/SoShaderProgram.h>
 #include <Inventor/nodes/SoVertexShader.h>
 
-namespace ivshadow {
+#include <string>
+#include <vector>
 
-ShadingProgram::ShadingProgram(bool peelPasses) : program_(new SoShaderProgram) {
+namespace ivshadow {
+namespace {
+
+struct VariantSource {
+  std::string fragment;
+  const char* defines;
+  // The coin_* uniforms the variant uses: Coin warns about a parameter a program lacks.
+  std::vector<const char*> coinParameters;
+};
+
+VariantSource sourceOf(ShadingVariant variant) {
+  const std::string lit = std::string(glsl::kLightingGlsl);
+  const std::vector<const char*> lighting = {"coin_light_model", "coin_two_sided_lighting",
+                                             "coin_texunit0_model"};
+  const std::vector<const char*> texture = {"coin_texunit0_model"};
+  switch (variant) {
+    case ShadingVariant::Shade:
+      return {lit + glsl::kShadingFrag, "", lighting};
+    case ShadingVariant::OpaqueOnly:
+      return {lit + glsl::kShadingFrag, "#define IVSHADOW_OPAQUE_ONLY\n", lighting};
+    case ShadingVariant::PeelInit:
+      // The first pass only records depths: no fragment is lit.
+      return {lit + glsl::kPeelFrag, "#define IVSHADOW_PEEL_INIT\n", texture};
+    case ShadingVariant::PeelFrontToBack:
+      return {lit + glsl::kPeelFrag, "", lighting};
+    case ShadingVariant::PeelDual:
+      return {lit + glsl::kPeelFrag, "#define IVSHADOW_PEEL_DUAL\n", lighting};
+    case ShadingVariant::CaptureOpaque:
+      return {glsl::kCaptureFrag, "#define IVSHADOW_CAPTURE_OPAQUE\n", texture};
+    case ShadingVariant::CaptureTransparent:
+      return {glsl::kCaptureFrag, "", texture};
+  }
+  return {};
+}
+
+}  // namespace
+
+ShadingProgram::ShadingProgram() = default;
+ShadingProgram::~ShadingProgram() = default;
+
+SoShaderProgram* ShadingProgram::node(ShadingVariant variant) {
+  CoinRef<SoShaderProgram>& program = nodes_[std::size_t(variant)];
+  if (program) return program.get();
+  const VariantSource source = sourceOf(variant);
+  program = CoinRef<SoShaderProgram>(new SoShaderProgram);
   auto* vertex = new SoVertexShader;
   vertex->sourceType = SoShaderObject::GLSL_PROGRAM;
   vertex->sourceProgram = composeShader(glsl::kShadingVert).c_str();
   auto* fragment = new SoFragmentShader;
   fragment->sourceType = SoShaderObject::GLSL_PROGRAM;
-  fragment->sourceProgram =
-      composeShader(glsl::kShadingFrag, peelPasses ? "#define IVSHADOW_PEEL_PASSES\n" : "").c_str();
+  fragment->sourceProgram = composeShader(source.fragment, source.defines).c_str();
   // Coin fills these in from its state whenever they change (SoShaderObject::coin_*).
-  for (const char* name : {"coin_light_model", "coin_two_sided_lighting", "coin_texunit0_model"}) {
+  for (const char* name : source.coinParameters) {
     auto* parameter = new SoShaderParameter1i;
     parameter->name = name;
     fragment->parameter.addNode(parameter);
   }
-  program_->shaderObject.addNode(vertex);
-  program_->shaderObject.addNode(fragment);
+  program->shaderObject.addNode(vertex);
+  program->shaderObject.addNode(fragment);
+  return program.get();
+}
+
+const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVariant variant) {
+  node(variant)->GLRender(action);
+  const unsigned int program = currentProgram();
+  if (program == 0) return nullptr;
+  auto* perContext = locations_.get(SoGLCacheContextElement::get(action->getState()), [] {
+    return std::make_unique<std::array<UniformLocations, kShadingVariants>>();
+  });
+  UniformLocations& locations = (*perContext)[std::size_t(variant)];
+  // Coin links a variant once per context; a new name means it linked it anew.
+  if (locations.program() != program) locations = UniformLocations(program);
+  return &locations;
 }
 
 }  // namespace ivshadow

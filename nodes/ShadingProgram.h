@@ -1,23 +1,51 @@
 #pragma once
 
+#include "callbacks/UniformLocations.h"
+#include "nodes/PerContext.h"
 #include "scene/CoinRef.h"
 
+#include <array>
+
+class SoGLRenderAction;
 class SoShaderProgram;
 
 namespace ivshadow {
 
-// The camera-pass program of SoTransparentShadowGroup as a Coin SoShaderProgram node, so Coin
-// compiles it per context, binds it through SoGLShaderProgramElement (which SoShadowStyle
-// switches off for shapes that are not SHADOWED) and keeps its coin_* uniforms (light model,
-// two-sided lighting, texture model) up to date.
+// The programs that shade the shapes of SoTransparentShadowGroup and SoPeelingSeparator, each
+// chosen when it is compiled (a #define per variant) rather than by a uniform at run time.
+enum class ShadingVariant : int {
+  Shade,               // shading.frag: the camera pass
+  OpaqueOnly,          // shading.frag, IVSHADOW_OPAQUE_ONLY: peeling's opaque pass
+  PeelInit,            // peel.frag, IVSHADOW_PEEL_INIT: the first peel pass
+  PeelFrontToBack,     // peel.frag: one layer per pass
+  PeelDual,            // peel.frag, IVSHADOW_PEEL_DUAL: two layers per pass
+  CaptureOpaque,       // capture.frag, IVSHADOW_CAPTURE_OPAQUE: RAYS lights' opaque capture
+  CaptureTransparent,  // capture.frag: their transparent captures
+};
+inline constexpr int kShadingVariants = 7;
+
+// The variants as Coin SoShaderProgram nodes, so Coin compiles each per context (when first
+// used), binds it through SoGLShaderProgramElement (which SoShadowStyle switches off for
+// shapes that are not SHADOWED) and keeps its coin_* uniforms (light model, two-sided
+// lighting, texture model) up to date. The locations of the other uniforms are read once per
+// program and context.
 class ShadingProgram {
  public:
-  // `peelPasses`: the variant for SoPeelingSeparator's peel passes (early depth test).
-  explicit ShadingProgram(bool peelPasses = false);
-  SoShaderProgram* node() const { return program_.get(); }
+  // Out of line: the nodes' type is complete only in the .cpp.
+  ShadingProgram();
+  ~ShadingProgram();
+  ShadingProgram(const ShadingProgram&) = delete;
+  ShadingProgram& operator=(const ShadingProgram&) = delete;
+
+  // Binds `variant` in the action's current state (the caller pushes and pops it) and returns
+  // its program and uniform locations, or null when it did not build (Coin has said why).
+  const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
 
  private:
-  CoinRef<SoShaderProgram> program_;
+  SoShaderProgram* node(ShadingVariant variant);
+
+  std::array<CoinRef<SoShaderProgram>, kShadingVariants> nodes_;
+  PerContext<std::array<UniformLocations, kShadingVariants>> locations_;
 };
 
 }  // namespace ivshadow

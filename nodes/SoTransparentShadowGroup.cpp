@@ -1,6 +1,7 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 
 #include "ivshadow/SoDeepShadowLight.h"
+#include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparentShadowGroupImpl.h"
 
 #include <Inventor/actions/SoCallbackAction.h>
@@ -12,6 +13,7 @@ SO_NODE_SOURCE(SoTransparentShadowGroup);
 void SoTransparentShadowGroup::initClass() {
   if (getClassTypeId() != SoType::badType()) return;
   SoDeepShadowLight::initClass();
+  ivshadow::ShadowGroupElement::initClass();
   // Registered without the "So" prefix, as Coin registers its own nodes: Coin writes that
   // name to files, and SoType::fromName finds "TransparentShadowGroup" from either spelling.
   PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup",
@@ -21,7 +23,7 @@ void SoTransparentShadowGroup::initClass() {
 }
 
 SoTransparentShadowGroup::SoTransparentShadowGroup()
-    : impl_(new ivshadow::TransparentShadowGroupImpl(this, true,
+    : impl_(new ivshadow::TransparentShadowGroupImpl(this,
                                                      [this](SoGLRenderAction* action, bool inPath) {
                                                        if (inPath)
                                                          inherited::GLRenderInPath(action);

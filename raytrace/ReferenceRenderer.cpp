@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/DeepShadowSettings.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
 #include "raytrace/ParallelRows.h"
@@ -542,12 +543,8 @@ class Tracer {
   }
 
   static ShadowColourModel modelOf(const SoDeepShadowLight& light, const CasterScene& casters) {
-    const int mode = light.shadowColor.getValue();
-    const bool coloured = mode == SoDeepShadowLight::COLORED ||
-                          (mode == SoDeepShadowLight::AUTO && casters.coloured());
-    if (!coloured) return ShadowColourModel::Monochrome;
-    return light.colorModel.getValue() == SoDeepShadowLight::POWER ? ShadowColourModel::Power
-                                                                   : ShadowColourModel::Saturate;
+    return shadowColourModel(light.shadowColor.getValue(), light.colorModel.getValue(),
+                             casters.coloured());
   }
 
   const Extraction& data_;

@@ -14,9 +14,9 @@ struct TextureImage;
 // The CPU twins of deep_shadow_common.glsl: how a surface colours and filters light. The ray
 // tracers use them so that only the discretisation differs from the GL path, never the model.
 
-// Opacity within half an 8-bit step of 1 counts as opaque (Coin sends 8-bit colours).
+// Opacity within half an 8-bit step of 1 counts as opaque (kOpaqueAlpha).
 inline bool isOpaque(float alpha) {
-  return alpha >= 1.0f - 0.5f / 255.0f;
+  return alpha >= kOpaqueAlpha;
 }
 
 // Whether two hits of one shape along a ray, at ray parameters a and b, are one surface met

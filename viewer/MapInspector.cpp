@@ -3,7 +3,8 @@
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
-#include "nodes/TransparentShadowGroupImpl.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/ShadowGroupElement.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/nodes/SoCallback.h>
@@ -215,8 +216,8 @@ void MapInspector::probe(void* self, SoAction* action) {
   if (!that->requested_ || !action->isOfType(SoGLRenderAction::getClassTypeId())) return;
   // The group's maps are bound only while it shades its children, not while it captures
   // surfaces for a RAYS light.
-  if (TransparentShadowGroupImpl::activeGroup() == nullptr ||
-      TransparentShadowGroupImpl::capturing())
+  SoState* state = action->getState();
+  if (ShadowGroupElement::activeGroup(state) == nullptr || ShadowGroupElement::capturing(state))
     return;
   that->requested_ = false;
   that->readOk_ = readBoundMapLayer(that->slot_, that->arrayLayer_, that->readback_, that->whyNot_);

@@ -1,14 +1,11 @@
 // Shared by the map build and the lookup, so that both agree on the cube layout and on how
 // a surface filters light. Included after the #version line.
 
-// Cube face f looks along kFaceAxis[f]; kFaceRight/kFaceUp span its image plane. The table
-// must match DeepShadowMap.cpp, which builds each face's view matrix from the same vectors.
-const vec3 kFaceAxis[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0),
-                                  vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1));
-const vec3 kFaceRight[6] = vec3[6](vec3(0, 0, -1), vec3(0, 0, 1), vec3(1, 0, 0),
-                                   vec3(1, 0, 0), vec3(1, 0, 0), vec3(-1, 0, 0));
-const vec3 kFaceUp[6] = vec3[6](vec3(0, 1, 0), vec3(0, 1, 0), vec3(0, 0, -1),
-                                vec3(0, 0, 1), vec3(0, 1, 0), vec3(0, 1, 0));
+// Cube face f looks along kFaceAxis[f]; kFaceRight/kFaceUp span its image plane (the
+// IVSHADOW_* defines come from callbacks/ShaderConstants.h).
+const vec3 kFaceAxis[6] = IVSHADOW_FACE_AXIS;
+const vec3 kFaceRight[6] = IVSHADOW_FACE_RIGHT;
+const vec3 kFaceUp[6] = IVSHADOW_FACE_UP;
 
 int cubeFace(vec3 d) {
   vec3 a = abs(d);
@@ -17,13 +14,17 @@ int cubeFace(vec3 d) {
   return d.z >= 0.0 ? 4 : 5;
 }
 
-// Coin sends colours as 8-bit values, and interpolating a constant alpha of 1 across a
-// triangle can give 0.99999994: opacity within half an 8-bit step of 1 counts as opaque.
-bool isOpaque(float alpha) { return alpha >= 1.0 - 0.5 / 255.0; }
+// Opacity within half an 8-bit step of 1 counts as opaque (kOpaqueAlpha).
+bool isOpaque(float alpha) { return alpha >= IVSHADOW_OPAQUE_ALPHA; }
 
-const int kColourMonochrome = 0;  // seeds/000 eq. 5.1
-const int kColourSaturate = 1;    // eq. 5.3
-const int kColourPower = 2;       // eq. 5.2
+// Coin may draw a shape differently from pass to pass (immediate mode, then a render cache
+// that splits its polygons differently), which moves depth by a few ulps: window depths that
+// close count as the same surface in the peel and capture passes.
+const float kSameLayer = 1e-6;
+
+const int kColourMonochrome = IVSHADOW_COLOUR_MONOCHROME;  // seeds/000 eq. 5.1
+const int kColourSaturate = IVSHADOW_COLOUR_SATURATE;      // eq. 5.3
+const int kColourPower = IVSHADOW_COLOUR_POWER;            // eq. 5.2
 
 // Fraction of light (per channel) that passes a surface of colour c.rgb and opacity c.a.
 vec3 transmittance(vec4 c, int model) {

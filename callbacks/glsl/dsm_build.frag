@@ -14,7 +14,7 @@ uniform int uColourModel;
 uniform vec3 uLightPosition;
 uniform int uFace;
 
-layout(std430, binding = 0) buffer PeelFlags {
+layout(std430, binding = IVSHADOW_MAP_FLAGS_BINDING) buffer PeelFlags {
   uint anyFragment;
   uint transparentFragment;
 };

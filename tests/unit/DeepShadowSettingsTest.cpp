@@ -58,5 +58,17 @@ TEST(DeepShadowSettings, MethodIsPassedOnUnresolved) {
   light->unref();
 }
 
+// The table of SoDeepShadowLight's documentation: shadowColor decides whether the shadow is
+// coloured (AUTO: when some transparent caster is coloured), colorModel how.
+TEST(ShadowColourModel, FollowsShadowColorThenColorModel) {
+  using L = SoDeepShadowLight;
+  EXPECT_EQ(shadowColourModel(L::MONOCHROME, L::POWER, true), ShadowColourModel::Monochrome);
+  EXPECT_EQ(shadowColourModel(L::COLORED, L::POWER, false), ShadowColourModel::Power);
+  EXPECT_EQ(shadowColourModel(L::COLORED, L::SATURATE, false), ShadowColourModel::Saturate);
+  EXPECT_EQ(shadowColourModel(L::AUTO, L::SATURATE, false), ShadowColourModel::Monochrome);
+  EXPECT_EQ(shadowColourModel(L::AUTO, L::SATURATE, true), ShadowColourModel::Saturate);
+  EXPECT_EQ(shadowColourModel(L::AUTO, L::POWER, true), ShadowColourModel::Power);
+}
+
 }  // namespace
 }  // namespace ivshadow

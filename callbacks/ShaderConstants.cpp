@@ -1,0 +1,42 @@
+#include "callbacks/ShaderConstants.h"
+
+#include "callbacks/GlLimits.h"
+
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace ivshadow {
+namespace {
+
+// "vec3[6](vec3(1, 0, 0), ...)": a GLSL array constructor of the six face vectors.
+std::string faceArray(const FaceVectors& vectors) {
+  std::ostringstream text;
+  text << "vec3[6](";
+  for (std::size_t face = 0; face < vectors.size(); ++face) {
+    const auto& v = vectors[face];
+    text << (face > 0 ? ", " : "") << "vec3(" << v[0] << ", " << v[1] << ", " << v[2] << ")";
+  }
+  text << ")";
+  return text.str();
+}
+
+}  // namespace
+
+std::string shaderConstantDefines() {
+  std::ostringstream text;
+  text << std::setprecision(std::numeric_limits<float>::max_digits10)
+       << "#define IVSHADOW_MAX_LIGHTS " << kMaxGlLights << "\n"
+       << "#define IVSHADOW_OPAQUE_ALPHA " << kOpaqueAlpha << "\n"
+       << "#define IVSHADOW_FACE_AXIS " << faceArray(kFaceAxis) << "\n"
+       << "#define IVSHADOW_FACE_RIGHT " << faceArray(kFaceRight) << "\n"
+       << "#define IVSHADOW_FACE_UP " << faceArray(kFaceUp) << "\n"
+       << "#define IVSHADOW_MAP_FLAGS_BINDING " << kMapFlagsBinding << "\n"
+       << "#define IVSHADOW_PEEL_PROGRESS_BINDING " << kPeelProgressBinding << "\n"
+       << "#define IVSHADOW_COLOUR_MONOCHROME " << int(ShadowColourModel::Monochrome) << "\n"
+       << "#define IVSHADOW_COLOUR_SATURATE " << int(ShadowColourModel::Saturate) << "\n"
+       << "#define IVSHADOW_COLOUR_POWER " << int(ShadowColourModel::Power) << "\n";
+  return text.str();
+}
+
+}  // namespace ivshadow

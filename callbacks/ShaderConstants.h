@@ -1,0 +1,67 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace ivshadow {
+
+// The values that the C++ passes and the GLSL programs must agree on, each written once here.
+// composeShader() prepends them to every shader as #defines (shaderConstantDefines()), so a
+// shader says IVSHADOW_MAX_LIGHTS where it needs the light limit and cannot drift from C++.
+
+// GL lights Coin uses (GL_LIGHT0..7), and so deep shadow map slots per group.
+inline constexpr int kMaxGlLights = 8;
+
+// Peeled layers per cube face a deep shadow map may hold (SoDeepShadowLight::maxLayers).
+inline constexpr int kMaxMapLayers = 64;
+
+// Opacity from which a surface counts as opaque: within half an 8-bit step of 1, since Coin
+// sends colours as 8-bit values and interpolating a constant alpha of 1 across a triangle can
+// give 0.99999994.
+inline constexpr float kOpaqueAlpha = 1.0f - 0.5f / 255.0f;
+
+// Cube face f looks along kFaceAxis[f]; kFaceRight[f] and kFaceUp[f] span its image plane.
+// The map build makes each face's view matrix from them, the lookup picks texels with them.
+using FaceVectors = std::array<std::array<float, 3>, 6>;
+inline constexpr FaceVectors kFaceAxis = {
+    {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+inline constexpr FaceVectors kFaceRight = {
+    {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}}};
+inline constexpr FaceVectors kFaceUp = {
+    {{0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}}};
+
+// Shader storage binding points: the map build's "any / transparent fragment" flags and the
+// peel passes' "deeper layers left" flag.
+inline constexpr int kMapFlagsBinding = 0;
+inline constexpr int kPeelProgressBinding = 1;
+
+// Texture units of the plugin's passes, counted down from the context's highest unit so that
+// Coin's own textures keep the low ones: the maps (depth and visibility per light slot) at the
+// top, the peel targets below them, the traced shadows of RAYS lights below those.
+inline constexpr int kMapUnits = 2 * kMaxGlLights;
+inline constexpr int kPeelUnits = 3;
+inline constexpr int kRayUnits = 4;
+inline constexpr int kCoinUnitsAtLeast = 4;
+inline constexpr int kTextureUnitsNeeded = kMapUnits + kPeelUnits + kRayUnits + kCoinUnitsAtLeast;
+// First unit of each block in a context with `available` fragment texture units.
+constexpr int firstMapUnit(int available) {
+  return available - kMapUnits;
+}
+constexpr int firstPeelUnit(int available) {
+  return firstMapUnit(available) - kPeelUnits;
+}
+constexpr int firstRayUnit(int available) {
+  return firstPeelUnit(available) - kRayUnits;
+}
+// The units of light slot `slot`'s map: its depths and its visibility.
+constexpr int mapDepthUnit(int available, int slot) {
+  return firstMapUnit(available) + slot;
+}
+constexpr int mapVisibilityUnit(int available, int slot) {
+  return firstMapUnit(available) + kMaxGlLights + slot;
+}
+
+// The constants above (and the colour models of ShadowColourModel) as GLSL #define lines.
+std::string shaderConstantDefines();
+
+}  // namespace ivshadow

@@ -1,0 +1,100 @@
+#include "nodes/GroupContents.h"
+
+#include "callbacks/ShaderConstants.h"
+#include "nodes/NodesOfType.h"
+#include "ivshadow/SoDeepShadowLight.h"
+
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/misc/SoNotification.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoEnvironment.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <set>
+
+namespace ivshadow {
+namespace {
+
+// A copy of the path to the last node of `type` under `root` that a traversal reaches.
+CoinRef<SoPath> lastPathTo(SoNode* root, SoType type) {
+  SoSearchAction search;
+  search.setType(type);
+  search.setInterest(SoSearchAction::LAST);
+  search.apply(root);
+  return CoinRef<SoPath>(search.getPath() ? search.getPath()->copy() : nullptr);
+}
+
+}  // namespace
+
+GroupContents::GroupContents(SoSeparator* owner, bool deepShadows)
+    : owner_(owner), deepShadows_(deepShadows) {}
+
+void GroupContents::changed(SoNotList* list) {
+  const SoNotRec* record = list->getFirstRecAtNode();
+  const SoBase* origin = record ? record->getBase() : nullptr;
+  if (origin == nullptr || origin == owner_) {
+    lightsValid_ = false;
+    castersValid_ = false;
+    ++mapsVersion_;
+    return;
+  }
+  if (!origin->isOfType(SoNode::getClassTypeId())) return;
+  const auto* node = static_cast<const SoNode*>(origin);
+  // Moving the camera or changing an ordinary light changes no shadow map; a camera inside
+  // the group moves what RAYS lights traced, which the state does not show yet when the group
+  // starts (the camera is traversed later).
+  if (node->isOfType(SoCamera::getClassTypeId())) {
+    ++viewVersion_;
+    return;
+  }
+  lightsValid_ = false;
+  if (node->isOfType(SoDeepShadowLight::getClassTypeId())) {
+    ++mapsVersion_;
+    return;
+  }
+  if (node->isOfType(SoLight::getClassTypeId())) return;
+  castersValid_ = false;
+  ++mapsVersion_;
+}
+
+void GroupContents::findLights() {
+  lights_.clear();
+  subgraphLightsOn_ = 0;
+  cameraPath_ = lastPathTo(owner_, SoCamera::getClassTypeId());
+  environmentPath_ = lastPathTo(owner_, SoEnvironment::getClassTypeId());
+
+  forEachPathTo(owner_, SoLight::getClassTypeId(), false, [this](SoPath& path) {
+    auto* light = static_cast<SoLight*>(path.getTail());
+    if (!light->on.getValue()) return;
+    ++subgraphLightsOn_;
+    if (deepShadows_ && light->isOfType(SoDeepShadowLight::getClassTypeId()) &&
+        int(lights_.size()) < kMaxGlLights) {
+      Light entry;
+      entry.path = CoinRef<SoPath>(path.copy());
+      entry.light = static_cast<SoDeepShadowLight*>(light);
+      lights_.push_back(std::move(entry));
+    }
+  });
+  lightsValid_ = true;
+}
+
+void GroupContents::update() {
+  if (!lightsValid_) findLights();
+  // Without deep shadows (a peeling separator on its own) there is nothing to cast into.
+  if (!castersValid_ && deepShadows_) {
+    casters_ = extractShadowCasters(owner_);
+    castersValid_ = true;
+    // Neither method can cast a shadow from lines or points: say so once per shape.
+    static std::set<std::string> warnedShapes;
+    for (const std::string& shape : casters_.withoutTriangles)
+      if (warnedShapes.insert(shape).second)
+        SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                  "%s is drawn with lines or points, which cast no shadow",
+                                  shape.c_str());
+    ++castersVersion_;
+  }
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,60 @@
+#pragma once
+
+#include "scene/CoinRef.h"
+#include "scene/SceneTriangles.h"
+
+#include <cstdint>
+#include <vector>
+
+class SoDeepShadowLight;
+class SoNotList;
+class SoPath;
+class SoSeparator;
+
+namespace ivshadow {
+
+// What the subgraph of a shadow group holds that its shadows depend on: the deep shadow
+// lights (one per GL light at most), how many lights are on, the last camera and environment
+// inside it, and the shadow casters. Searched again only after a notification says they may
+// have changed; the versions tell the per-context passes what to rebuild.
+class GroupContents {
+ public:
+  struct Light {
+    CoinRef<SoPath> path;  // from the group to the light
+    SoDeepShadowLight* light = nullptr;
+  };
+
+  // `deepShadows` false: deep shadow lights are plain point lights and nothing casts.
+  GroupContents(SoSeparator* owner, bool deepShadows);
+
+  void changed(SoNotList* list);
+  // Finds the lights and casters again where a change made them out of date.
+  void update();
+
+  const std::vector<Light>& lights() const { return lights_; }
+  int lightsOn() const { return subgraphLightsOn_; }
+  SoPath* cameraPath() const { return cameraPath_.get(); }
+  SoPath* environmentPath() const { return environmentPath_.get(); }
+  const SceneTriangles& casters() const { return casters_; }
+  std::uint64_t castersVersion() const { return castersVersion_; }
+  std::uint64_t mapsVersion() const { return mapsVersion_; }
+  std::uint64_t viewVersion() const { return viewVersion_; }  // a camera inside changed
+
+ private:
+  void findLights();
+
+  SoSeparator* owner_;
+  bool deepShadows_;
+  bool lightsValid_ = false;
+  std::vector<Light> lights_;
+  CoinRef<SoPath> cameraPath_;       // the last camera inside the group, if any
+  CoinRef<SoPath> environmentPath_;  // the last SoEnvironment inside the group, if any
+  int subgraphLightsOn_ = 0;
+  bool castersValid_ = false;
+  SceneTriangles casters_;
+  std::uint64_t castersVersion_ = 0;
+  std::uint64_t mapsVersion_ = 1;
+  std::uint64_t viewVersion_ = 0;
+};
+
+}  // namespace ivshadow

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "raytrace/CasterScene.h"
+
+#include <cstdint>
+#include <memory>
+#include <set>
+#include <string>
+
+class SoDeepShadowLight;
+
+namespace ivshadow {
+
+struct DeepShadowStatistics;
+
+// The RAYS method's side of one group: its casters as an Embree scene, kept current by refit
+// when only transforms changed and rebuilt otherwise, on the one Embree device of the process
+// (Embree's threads and its memory limit are the machine's, not a group's).
+class RayCasters {
+ public:
+  // Makes the scene hold version `version` of `casters`; false (with one warning per light,
+  // naming `lightName`) when Embree cannot hold them, and that light then uses its map.
+  bool ready(const SceneTriangles& casters, std::uint64_t version, const SoDeepShadowLight* light,
+             const std::string& lightName, DeepShadowStatistics& statistics);
+  // Null until ready() succeeded.
+  const CasterScene* scene() const { return scene_.get(); }
+
+ private:
+  std::unique_ptr<CasterScene> scene_;
+  std::uint64_t version_ = 0;
+  std::string error_;  // set once Embree failed: RAYS lights fall back to maps
+  std::set<const SoDeepShadowLight*> warned_;  // lights told they keep their map
+};
+
+}  // namespace ivshadow

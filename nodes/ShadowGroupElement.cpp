@@ -1,0 +1,60 @@
+#include "nodes/ShadowGroupElement.h"
+
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/misc/SoState.h>
+
+namespace ivshadow {
+
+SO_ELEMENT_SOURCE(ShadowGroupElement);
+
+void ShadowGroupElement::initClass() {
+  if (getClassTypeId() != SoType::badType()) return;
+  SO_ELEMENT_INIT_CLASS(ShadowGroupElement, inherited);
+  SO_ENABLE(SoGLRenderAction, ShadowGroupElement);
+}
+
+ShadowGroupElement::~ShadowGroupElement() = default;
+
+void ShadowGroupElement::init(SoState* state) {
+  inherited::init(state);
+  group_ = nullptr;
+  capturing_ = false;
+}
+
+void ShadowGroupElement::push(SoState* state) {
+  inherited::push(state);
+  const auto* previous = static_cast<const ShadowGroupElement*>(getNextInStack());
+  group_ = previous->group_;
+  capturing_ = previous->capturing_;
+}
+
+SbBool ShadowGroupElement::matches(const SoElement* element) const {
+  const auto* other = static_cast<const ShadowGroupElement*>(element);
+  return other->group_ == group_ && other->capturing_ == capturing_;
+}
+
+SoElement* ShadowGroupElement::copyMatchInfo() const {
+  auto* copy = static_cast<ShadowGroupElement*>(getTypeId().createInstance());
+  copy->group_ = group_;
+  copy->capturing_ = capturing_;
+  return copy;
+}
+
+void ShadowGroupElement::setActiveGroup(SoState* state, GroupShading* group) {
+  static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->group_ = group;
+}
+
+void ShadowGroupElement::setCapturing(SoState* state, bool capturing) {
+  static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->capturing_ = capturing;
+}
+
+GroupShading* ShadowGroupElement::activeGroup(SoState* state) {
+  return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->group_;
+}
+
+bool ShadowGroupElement::capturing(SoState* state) {
+  return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))
+      ->capturing_;
+}
+
+}  // namespace ivshadow

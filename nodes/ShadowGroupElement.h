@@ -1,0 +1,42 @@
+#pragma once
+
+#include <Inventor/elements/SoElement.h>
+#include <Inventor/elements/SoSubElement.h>
+
+namespace ivshadow {
+
+class GroupShading;
+
+// What the enclosing SoTransparentShadowGroup is doing, carried in the traversal state (and so
+// per action and popped with the group's separator) instead of in process-wide variables: the
+// shading of the innermost group whose children are being drawn, and whether they are being
+// drawn into the capture targets of its RAYS lights. A SoPeelingSeparator below reads it to
+// shade its layers with that group's programs and maps, or to draw plainly during a capture.
+class ShadowGroupElement : public SoElement {
+  typedef SoElement inherited;
+  SO_ELEMENT_HEADER(ShadowGroupElement);
+
+ public:
+  // Registers the element and enables it for SoGLRenderAction (once).
+  static void initClass();
+
+  void init(SoState* state) override;
+  void push(SoState* state) override;
+  SbBool matches(const SoElement* element) const override;
+  SoElement* copyMatchInfo() const override;
+
+  // Set in a state the caller has pushed.
+  static void setActiveGroup(SoState* state, GroupShading* group);
+  static void setCapturing(SoState* state, bool capturing);
+  static GroupShading* activeGroup(SoState* state);
+  static bool capturing(SoState* state);
+
+ protected:
+  ~ShadowGroupElement() override;
+
+ private:
+  GroupShading* group_ = nullptr;
+  bool capturing_ = false;
+};
+
+}  // namespace ivshadow
