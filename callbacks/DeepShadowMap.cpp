@@ -2,6 +2,7 @@
 
 #include "callbacks/CasterBuffers.h"
 #include "callbacks/GlProgram.h"
+#include "callbacks/ShaderConstants.h"
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>

@@ -6,16 +6,16 @@
 namespace ivshadow {
 
 // Release functors for the GL object kinds the passes own, and the owners built from them.
-struct GlTextureRelease {
+struct IVSHADOW_INTERNAL GlTextureRelease {
   void operator()(unsigned int name) const;
 };
-struct GlBufferRelease {
+struct IVSHADOW_INTERNAL GlBufferRelease {
   void operator()(unsigned int name) const;
 };
-struct GlVertexArrayRelease {
+struct IVSHADOW_INTERNAL GlVertexArrayRelease {
   void operator()(unsigned int name) const;
 };
-struct GlProgramRelease {
+struct IVSHADOW_INTERNAL GlProgramRelease {
   void operator()(unsigned int name) const;
 };
 struct IVSHADOW_INTERNAL GlFramebufferObjectRelease {
@@ -33,11 +33,11 @@ using GlFramebuffer = GlObject<GlFramebufferObjectRelease>;
 using GlRenderbuffer = GlObject<GlRenderbufferObjectRelease>;
 
 // Creators (DSA, GL 4.5): each returns a new owner of one object of the given kind.
-GlTexture createTexture(unsigned int target);
-GlBuffer createBuffer();
-GlVertexArray createVertexArray();
-GlFramebuffer createFramebuffer();
-GlRenderbuffer createRenderbuffer();
+IVSHADOW_INTERNAL GlTexture createTexture(unsigned int target);
+IVSHADOW_INTERNAL GlBuffer createBuffer();
+IVSHADOW_INTERNAL GlVertexArray createVertexArray();
+IVSHADOW_INTERNAL GlFramebuffer createFramebuffer();
+IVSHADOW_INTERNAL GlRenderbuffer createRenderbuffer();
 // A 2D texture of one level and nearest sampling: a render target read by texel.
 GlTexture createTarget2D(unsigned int format, int width, int height);
 

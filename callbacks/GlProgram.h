@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include "callbacks/GlHandles.h"
 #include "callbacks/UniformLocations.h"
 
@@ -9,7 +11,7 @@ namespace ivshadow {
 
 // A linked GLSL program of our own (not one Coin manages), with uniform setters by name whose
 // locations were read once after linking.
-class GlProgram {
+class IVSHADOW_INTERNAL GlProgram {
  public:
   // Compiles and links in the current context; on failure returns an empty program and puts
   // the info log in `error`.
@@ -33,6 +35,6 @@ class GlProgram {
 // "#version 450 compatibility", the shared constants (shaderConstantDefines()), `defines`, the
 // shared declarations, then `body`: how every program of the plugin is assembled from the
 // embedded .glsl files.
-std::string composeShader(const std::string& body, const std::string& defines = {});
+IVSHADOW_INTERNAL std::string composeShader(const std::string& body, const std::string& defines = {});
 
 }  // namespace ivshadow

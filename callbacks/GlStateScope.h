@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <array>
 #include <utility>
 #include <vector>
@@ -10,7 +12,7 @@ namespace ivshadow {
 // traversal and puts it back on destruction, so Coin's lazy state cache stays true. Each
 // query is a round trip into the driver, so the scope reads only the groups the pass names
 // in `changes`, and only the texture targets it binds on the units it names.
-class GlStateScope {
+class IVSHADOW_INTERNAL GlStateScope {
  public:
   // The groups of state a pass may change (combined with |).
   enum Change : unsigned {

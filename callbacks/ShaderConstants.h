@@ -1,5 +1,7 @@
 #pragma once
 
+#include "scene/ShadowTypes.h"
+
 #include <array>
 #include <string>
 
@@ -14,11 +16,6 @@ inline constexpr int kMaxGlLights = 8;
 
 // Peeled layers per cube face a deep shadow map may hold (SoDeepShadowLight::maxLayers).
 inline constexpr int kMaxMapLayers = 64;
-
-// Opacity from which a surface counts as opaque: within half an 8-bit step of 1, since Coin
-// sends colours as 8-bit values and interpolating a constant alpha of 1 across a triangle can
-// give 0.99999994.
-inline constexpr float kOpaqueAlpha = 1.0f - 0.5f / 255.0f;
 
 // Cube face f looks along kFaceAxis[f]; kFaceRight[f] and kFaceUp[f] span its image plane.
 // The map build makes each face's view matrix from them, the lookup picks texels with them.

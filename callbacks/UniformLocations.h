@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <string>
 #include <string_view>
 #include <utility>
@@ -10,7 +12,7 @@ namespace ivshadow {
 // The locations of a linked program's active uniforms, read once after it is linked, so that
 // setting a uniform by name costs a search in memory instead of glGetUniformLocation. An
 // array is found by its bare name ("uMapDepth" for "uMapDepth[0]").
-class UniformLocations {
+class IVSHADOW_INTERNAL UniformLocations {
  public:
   UniformLocations() = default;
   // Reads the active uniforms of `program` in the current context.

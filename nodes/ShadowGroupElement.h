@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <Inventor/elements/SoElement.h>
 #include <Inventor/elements/SoSubElement.h>
 
@@ -12,7 +14,7 @@ class GroupShading;
 // shading of the innermost group whose children are being drawn, and whether they are being
 // drawn into the capture targets of its RAYS lights. A SoPeelingSeparator below reads it to
 // shade its layers with that group's programs and maps, or to draw plainly during a capture.
-class ShadowGroupElement : public SoElement {
+class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   typedef SoElement inherited;
   SO_ELEMENT_HEADER(ShadowGroupElement);
 

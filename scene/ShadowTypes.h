@@ -8,9 +8,14 @@ namespace ivshadow {
 // Types that the GL passes (callbacks/) and the CPU tracers (raytrace/) both speak. They live
 // here, with no GL and no Embree, so that neither of those layers has to include the other.
 
-// How a surface filters light in a deep shadow map; the values are deep_shadow_common.glsl's
-// kColour* constants.
+// How a surface filters light in a deep shadow map; the shaders receive the values as
+// IVSHADOW_COLOUR_* (callbacks/ShaderConstants.h, shaderConstantDefines()).
 enum class ShadowColourModel : int { Monochrome = 0, Saturate = 1, Power = 2 };
+
+// Opacity from which a surface counts as opaque: within half an 8-bit step of 1, since Coin
+// sends colours as 8-bit values and interpolating a constant alpha of 1 across a triangle can
+// give 0.99999994. The shaders receive it with the other constants.
+inline constexpr float kOpaqueAlpha = 1.0f - 0.5f / 255.0f;
 
 // One captured layer of visible surfaces, read back from the GL capture pass: per pixel
 // (rows bottom-up, as GL stores them) the position in the group's coordinates and window
