@@ -7,6 +7,7 @@
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/MapMethod.h"
+#include "nodes/RayMethod.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparencyOverride.h"
 
@@ -179,15 +180,17 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   }
   shading_.apply();
   if (rayCount > 0) {
-    traceRays(action, context, inPath);
-    uniforms->rayLayers = context.rays->layers();
+    if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
+    context.rays->update(action, contents_, shading_, rayCasters_, context.maps, renderChildren_,
+                         inPath, statistics_);
+    uniforms->rayLayers = context.rays->pass().layers();
     shading_.apply();
   }
 
   {
     const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(context.maps.size()));
     const std::unique_ptr<GlStateScope> traced =
-        rayCount > 0 ? context.rays->bind() : std::unique_ptr<GlStateScope>();
+        rayCount > 0 ? context.rays->pass().bind() : std::unique_ptr<GlStateScope>();
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     // A peeling separator below shades its layers with this group's program and maps.
     ShadowGroupElement::setActiveGroup(state, &shading_);
@@ -203,96 +206,6 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     state->pop();
   }
   return true;
-}
-
-void TransparentShadowGroupImpl::traceRays(SoGLRenderAction* action, Context& context,
-                                           bool inPath) {
-  SoState* state = action->getState();
-  const SbViewportRegion& region = SoViewportRegionElement::get(state);
-  const SbVec2s origin = region.getViewportOriginPixels();
-  const SbVec2s size = region.getViewportSizePixels();
-  TraceKey key;
-  key.mapsVersion = contents_.mapsVersion();
-  key.viewVersion = contents_.viewVersion();
-  key.viewport = {origin[0], origin[1], size[0], size[1]};
-  const SbMatrix* matrices[3] = {&SoViewingMatrixElement::get(state),
-                                 &SoProjectionMatrixElement::get(state),
-                                 &SoModelMatrixElement::get(state)};
-  for (int m = 0; m < 3; ++m)
-    for (int i = 0; i < 16; ++i)
-      key.matrices[std::size_t(m * 16 + i)] = (*matrices[m])[i / 4][i % 4];
-  // Nothing that the traced shadows depend on changed: the last trace still holds.
-  if (context.traceValid && key == context.traced) return;
-  const auto start = std::chrono::steady_clock::now();
-  if (!context.rays) context.rays = std::make_unique<RayShadowPass>(context.pass->rayUnit(0));
-  RayShadowPass& rays = *context.rays;
-
-  std::vector<SurfaceLayer>& layers = context.surfaces;
-  std::size_t layerCount = 0;
-  state->push();
-  // Transparent shapes drawn at once and unblended, where the capture program sees them.
-  overrideTransparencyType(state, SoGLRenderAction::NONE);
-  SoDepthBufferElement::set(state, TRUE, TRUE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
-  // A peeling separator below draws its children plainly, with the capture program.
-  ShadowGroupElement::setCapturing(state, true);
-  // A render cache recorded here would hold the capture's state and uniforms and replay them
-  // in the shading pass (Mesa then fails the display list): the captures record none.
-  const int renderCaches = SoSeparator::getNumRenderCaches();
-  SoSeparator::setNumRenderCaches(0);
-  const bool timed = passTiming();
-  if (timed) context.captureTimer.start();
-  rays.beginCapture(origin[0], origin[1], size[0], size[1]);
-  // Without a transparent caster there is rarely a transparent surface to capture: one pass
-  // then does (a transparent shape that only receives takes the opaque surface's shadow).
-  const int lastLayer =
-      contents_.casters().hasTransparent ? RayShadowPass::kMaxTransparentLayers : 0;
-  for (int layer = 0; layer <= lastLayer; ++layer) {
-    const UniformLocations* capture = shading_.bind(
-        action, layer == 0 ? ShadingVariant::CaptureOpaque : ShadingVariant::CaptureTransparent);
-    if (capture == nullptr) break;  // Coin has said why it did not build
-    rays.startLayer(layer, *capture);
-    renderChildren_(action, inPath);
-    if (layers.size() <= std::size_t(layer)) layers.emplace_back();
-    const bool any = rays.finishLayer(layer, layers[std::size_t(layer)]);
-    if (layer > 0 && !any) break;  // no transparent surface left in front of the opaque one
-    ++layerCount;
-  }
-  rays.endCapture();
-  if (timed) {
-    context.captureTimer.stop();
-    statistics_.gpuCaptureMs = context.captureTimer.elapsedMs();
-  }
-  SoSeparator::setNumRenderCaches(renderCaches);
-  state->pop();
-  // The captures drew into targets Coin did not choose; GL is restored, and Coin must not
-  // trust what it believes it last sent.
-  SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
-
-  const auto captured = std::chrono::steady_clock::now();
-  std::vector<RayLight> lights;
-  for (const MapState& map : context.maps) {
-    if (!map.rays) continue;
-    RayLight light;
-    for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
-    light.model = map.model;
-    lights.push_back(light);
-  }
-  const std::size_t traced =
-      rayCasters_.scene()
-          ? traceScreenShadows(*rayCasters_.scene(), layers, layerCount, lights, context.visibility)
-          : 0;
-  const auto tracedAt = std::chrono::steady_clock::now();
-  rays.upload(layers, int(layerCount), context.visibility,
-              context.visibility.empty() ? 0 : int(lights.size()));
-  context.traced = key;
-  context.traceValid = true;
-  statistics_.raysTraced = traced;
-  statistics_.rayLayers = int(layerCount);
-  statistics_.rayCaptureMs = std::chrono::duration<double, std::milli>(captured - start).count();
-  statistics_.rayTraceMs = std::chrono::duration<double, std::milli>(tracedAt - captured).count();
-  statistics_.raysMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  ++statistics_.rayFrames;
 }
 
 }  // namespace ivshadow

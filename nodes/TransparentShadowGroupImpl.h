@@ -5,13 +5,11 @@
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/Export.h"
 #include "nodes/DeepShadowSettings.h"
-#include "ivshadow/DeepShadowStatistics.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
 #include "nodes/MapState.h"
 #include "nodes/PerContext.h"
 #include "nodes/RayCasters.h"
-#include "raytrace/ScreenShadowTracer.h"
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbVec3f.h>
@@ -34,7 +32,7 @@ class SoSeparator;
 namespace ivshadow {
 
 class DeepShadowPass;
-class RayShadowPass;
+class RayMethod;
 
 // The work behind SoTransparentShadowGroup: per GL context, keeps each deep shadow light's
 // map (MapMethod) or traced shadows (RayCasters, the captures) up to date with what the
@@ -57,17 +55,6 @@ class TransparentShadowGroupImpl {
   const DeepShadowStatistics& statistics() const { return statistics_; }
 
  private:
-  // What a trace of RAYS lights depends on: an equal key reuses the last trace.
-  struct TraceKey {
-    std::uint64_t mapsVersion = 0;
-    std::uint64_t viewVersion = 0;
-    std::array<int, 4> viewport{};
-    std::array<float, 48> matrices{};  // viewing, projection, model
-    bool operator==(const TraceKey& o) const {
-      return mapsVersion == o.mapsVersion && viewVersion == o.viewVersion &&
-             viewport == o.viewport && matrices == o.matrices;
-    }
-  };
   struct Context {
     std::unique_ptr<DeepShadowPass> pass;
     std::uint64_t castersVersion = 0;
@@ -75,19 +62,12 @@ class TransparentShadowGroupImpl {
     std::vector<MapState> maps;  // per light slot: what this context's maps hold
     bool softwareRenderer = false;
     std::string renderer;
-    std::unique_ptr<RayShadowPass> rays;
+    std::unique_ptr<RayMethod> rays;
     GlPassTimer buildTimer;
     GlPassTimer shadingTimer;
-    GlPassTimer captureTimer;
-    // The last trace's captures and visibility, kept so that their memory is reused.
-    std::vector<SurfaceLayer> surfaces;
-    std::vector<std::uint16_t> visibility;
-    TraceKey traced;
-    bool traceValid = false;
   };
 
   void buildMaps(SoGLRenderAction* action, Context& context);
-  void traceRays(SoGLRenderAction* action, Context& context, bool inPath);
   SoSeparator* owner_;
   ChildrenRenderer renderChildren_;
   GroupContents contents_;

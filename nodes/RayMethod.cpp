@@ -1,0 +1,122 @@
+#include "nodes/RayMethod.h"
+
+#include "callbacks/GlStateScope.h"
+#include "callbacks/RayShadowPass.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "nodes/GroupContents.h"
+#include "nodes/GroupShading.h"
+#include "nodes/MapState.h"
+#include "nodes/RayCasters.h"
+#include "nodes/ShadowGroupElement.h"
+#include "nodes/TransparencyOverride.h"
+#include "raytrace/ScreenShadowTracer.h"
+
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/elements/SoDepthBufferElement.h>
+#include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoModelMatrixElement.h>
+#include <Inventor/elements/SoProjectionMatrixElement.h>
+#include <Inventor/elements/SoViewingMatrixElement.h>
+#include <Inventor/elements/SoViewportRegionElement.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <chrono>
+
+namespace ivshadow {
+
+RayMethod::RayMethod(int textureUnit) : pass_(std::make_unique<RayShadowPass>(textureUnit)) {}
+
+RayMethod::~RayMethod() = default;
+
+void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
+                       GroupShading& shading, const RayCasters& casters,
+                       const std::vector<MapState>& maps, const ChildrenRenderer& renderChildren,
+                       bool inPath, DeepShadowStatistics& statistics) {
+  SoState* state = action->getState();
+  const SbViewportRegion& region = SoViewportRegionElement::get(state);
+  const SbVec2s origin = region.getViewportOriginPixels();
+  const SbVec2s size = region.getViewportSizePixels();
+  TraceKey key;
+  key.mapsVersion = contents.mapsVersion();
+  key.viewVersion = contents.viewVersion();
+  key.viewport = {origin[0], origin[1], size[0], size[1]};
+  const SbMatrix* matrices[3] = {&SoViewingMatrixElement::get(state),
+                                 &SoProjectionMatrixElement::get(state),
+                                 &SoModelMatrixElement::get(state)};
+  for (int m = 0; m < 3; ++m)
+    for (int i = 0; i < 16; ++i)
+      key.matrices[std::size_t(m * 16 + i)] = (*matrices[m])[i / 4][i % 4];
+  // Nothing that the traced shadows depend on changed: the last trace still holds.
+  if (traceValid_ && key == traced_) return;
+  const auto start = std::chrono::steady_clock::now();
+  RayShadowPass& rays = *pass_;
+
+  std::vector<SurfaceLayer>& layers = surfaces_;
+  std::size_t layerCount = 0;
+  state->push();
+  // Transparent shapes drawn at once and unblended, where the capture program sees them.
+  overrideTransparencyType(state, SoGLRenderAction::NONE);
+  SoDepthBufferElement::set(state, TRUE, TRUE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
+  // A peeling separator below draws its children plainly, with the capture program.
+  ShadowGroupElement::setCapturing(state, true);
+  // A render cache recorded here would hold the capture's state and uniforms and replay them
+  // in the shading pass (Mesa then fails the display list): the captures record none.
+  const int renderCaches = SoSeparator::getNumRenderCaches();
+  SoSeparator::setNumRenderCaches(0);
+  const bool timed = passTiming();
+  if (timed) captureTimer_.start();
+  rays.beginCapture(origin[0], origin[1], size[0], size[1]);
+  // Without a transparent caster there is rarely a transparent surface to capture: one pass
+  // then does (a transparent shape that only receives takes the opaque surface's shadow).
+  const int lastLayer =
+      contents.casters().hasTransparent ? RayShadowPass::kMaxTransparentLayers : 0;
+  for (int layer = 0; layer <= lastLayer; ++layer) {
+    const UniformLocations* capture = shading.bind(
+        action, layer == 0 ? ShadingVariant::CaptureOpaque : ShadingVariant::CaptureTransparent);
+    if (capture == nullptr) break;  // Coin has said why it did not build
+    rays.startLayer(layer, *capture);
+    renderChildren(action, inPath);
+    if (layers.size() <= std::size_t(layer)) layers.emplace_back();
+    const bool any = rays.finishLayer(layer, layers[std::size_t(layer)]);
+    if (layer > 0 && !any) break;  // no transparent surface left in front of the opaque one
+    ++layerCount;
+  }
+  rays.endCapture();
+  if (timed) {
+    captureTimer_.stop();
+    statistics.gpuCaptureMs = captureTimer_.elapsedMs();
+  }
+  SoSeparator::setNumRenderCaches(renderCaches);
+  state->pop();
+  // The captures drew into targets Coin did not choose; GL is restored, and Coin must not
+  // trust what it believes it last sent.
+  SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
+
+  const auto captured = std::chrono::steady_clock::now();
+  std::vector<RayLight> lights;
+  for (const MapState& map : maps) {
+    if (!map.rays) continue;
+    RayLight light;
+    for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
+    light.model = map.model;
+    lights.push_back(light);
+  }
+  const std::size_t traced =
+      casters.scene()
+          ? traceScreenShadows(*casters.scene(), layers, layerCount, lights, visibility_)
+          : 0;
+  const auto tracedAt = std::chrono::steady_clock::now();
+  rays.upload(layers, int(layerCount), visibility_,
+              visibility_.empty() ? 0 : int(lights.size()));
+  traced_ = key;
+  traceValid_ = true;
+  statistics.raysTraced = traced;
+  statistics.rayLayers = int(layerCount);
+  statistics.rayCaptureMs = std::chrono::duration<double, std::milli>(captured - start).count();
+  statistics.rayTraceMs = std::chrono::duration<double, std::milli>(tracedAt - captured).count();
+  statistics.raysMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ++statistics.rayFrames;
+}
+
+}  // namespace ivshadow
