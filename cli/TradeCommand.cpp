@@ -1,6 +1,7 @@
 #include "cli/TradeCommand.h"
 
 #include "callbacks/GlCapabilities.h"
+#include "callbacks/ShaderConstants.h"
 #include "cli/ExitStatus.h"
 #include "cli/OpenRenderer.h"
 #include "cli/ProgressBar.h"
@@ -98,8 +99,9 @@ int runTrade(const TradeOptions& options) {
     for (int r : options.resolutions)
       if (r < 1) throw InputError("--resolution " + std::to_string(r) + ": error: expected >= 1");
     for (int l : options.layers)
-      if (l < 1 || l > 64)
-        throw InputError("--layers " + std::to_string(l) + ": error: expected 1 .. 64");
+      if (l < 1 || l > kMaxMapLayers)
+        throw InputError("--layers " + std::to_string(l) + ": error: expected 1 .. " +
+                         std::to_string(kMaxMapLayers));
     checkList(options.precisions, {"half", "float"}, "--precision");
     checkList(options.filters, {"none", "pcf"}, "--filter");
     checkList(options.methods, {"map", "rays"}, "--method");
