@@ -8,7 +8,7 @@ namespace ivshadow {
 struct ViewerOptions {
   std::string scene;       // may be empty: start with nothing loaded
   std::string screenshot;  // non-empty: save the second rendered frame here and quit
-  std::string size = "800x600";
+  std::string size;  // WIDTHxHEIGHT of the 3D area; empty: the last window's, else 800x600
   bool addLight = false;                 // wrap the scene in a deep shadow group first
   std::vector<std::string> assignments;  // NAME.field=VALUE, applied through the panel
   std::string saveScene;                 // non-empty: write the scene here and quit

@@ -12,10 +12,12 @@
 #include <functional>
 
 class QAction;
+class QCloseEvent;
 class QDragEnterEvent;
 class QDropEvent;
 class QLabel;
 class QMimeData;
+class QShowEvent;
 class SoNode;
 class SoSeparator;
 
@@ -56,7 +58,15 @@ class ViewerWindow : public QMainWindow {
   void settleDrawable();
   // Non-interactive (scripted) windows report errors on stderr and show no light dragger.
   void setInteractive(bool interactive);
+  // Lays the window out around a 3D area of width x height: interactive windows are then
+  // fitted to the screen (the 3D area shrinks, the panel keeps its width), scripted ones keep
+  // exactly that area for their screenshots.
   void setViewerSize(int width, int height);
+  // Interactive windows: the geometry, docks and folded panel sections of the last window
+  // closed (Qt's settings), fitted to the screen. False when there is nothing to restore.
+  bool restoreLayout();
+  // Shrinks and moves the window so that it and its frame lie on the screen it is on.
+  void fitToScreen();
   // Shows or hides the dragger on the selected deep shadow light (View ▸ Light Dragger).
   void setLightDraggerShown(bool shown);
 
@@ -70,6 +80,8 @@ class ViewerWindow : public QMainWindow {
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
+  void showEvent(QShowEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
 
  private:
   void buildMenus();
