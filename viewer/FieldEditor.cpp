@@ -12,8 +12,8 @@
 #include <QDoubleSpinBox>
 #include <QFontMetrics>
 #include <QHBoxLayout>
-#include <QSizePolicy>
 #include <QSignalBlocker>
+#include <QSizePolicy>
 #include <QSpinBox>
 #include <QStringList>
 
@@ -102,8 +102,7 @@ QDoubleSpinBox* FieldEditor::makeDoubleSpinBox() {
   // Sized for a value of a few digits rather than for the widest value in range (location
   // reaches 1e5), so that three of them side by side do not widen the panel.
   box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-  box->setMinimumWidth(box->fontMetrics().horizontalAdvance("-000.000") +
-                       kSpinBoxButtonsWidth);
+  box->setMinimumWidth(box->fontMetrics().horizontalAdvance("-000.000") + kSpinBoxButtonsWidth);
   connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
           [this] { writeField(); });
   return box;

@@ -1,6 +1,7 @@
 #include "viewer/ShadowCastingLights.h"
 
 #include "nodes/SoDeepShadowLight.h"
+#include "scene/CoinRef.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPath.h>
@@ -44,8 +45,7 @@ SoDeepShadowLight* castingCopy(const SoLight& light, const SbVec3f& location) {
 // Where a directional light's stand-in goes, in the coordinates of the light's own place in
 // the graph (the path's transformation), so that it can stand next to the light.
 SbVec3f directionalStandIn(const SoDirectionalLight& light, const SoPath* path,
-                           const SbVec3f& center, float radius,
-                           const SbViewportRegion& viewport) {
+                           const SbVec3f& center, float radius, const SbViewportRegion& viewport) {
   SoGetMatrixAction matrices(viewport);
   matrices.apply(const_cast<SoPath*>(path));
   SbVec3f direction;
@@ -53,18 +53,20 @@ SbVec3f directionalStandIn(const SoDirectionalLight& light, const SoPath* path,
   if (direction.length() == 0.0f) direction.setValue(0.0f, 0.0f, -1.0f);
   direction.normalize();
   SbVec3f local;
-  matrices.getInverse().multVecMatrix(center - direction * (kDirectionalDistance * radius),
-                                      local);
+  matrices.getInverse().multVecMatrix(center - direction * (kDirectionalDistance * radius), local);
   return local;
 }
 
 }  // namespace
 
-std::vector<SoDeepShadowLight*> castShadowsFromSceneLights(SoSeparator* root,
-                                                           const SbVec3f& center, float radius,
+std::vector<SoDeepShadowLight*> castShadowsFromSceneLights(SoSeparator* root, const SbVec3f& center,
+                                                           float radius,
                                                            const SbViewportRegion& viewport) {
   root->ref();
   const SoPathList paths = allLightPaths(root);
+  // Held, since replacing a light in the graph would otherwise delete it while it is still
+  // looked at below.
+  std::map<SoLight*, CoinRef<SoLight>> held;
   std::map<SoLight*, SoDeepShadowLight*> made;
   std::vector<SoDeepShadowLight*> order;
   int unnamed = 0;
@@ -96,6 +98,7 @@ std::vector<SoDeepShadowLight*> castShadowsFromSceneLights(SoSeparator* root,
       // unknown.
       continue;
     }
+    held.emplace(light, CoinRef<SoLight>(light));
     made.emplace(light, cast);
     order.push_back(cast);
   }

@@ -118,6 +118,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   const bool scripted = options.scripted();
   window.setInteractive(!scripted);
   if (options.lightDragger) window.setLightDraggerShown(true);
+  if (options.noLightDragger) window.setLightDraggerShown(false);
 
   if (!options.scene.empty()) {
     const std::string error = window.openScene(QString::fromStdString(options.scene));

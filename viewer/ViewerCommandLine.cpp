@@ -28,6 +28,8 @@ void addViewerOptions(CLI::App& app, ViewerOptions& options) {
                  "With --screenshot: also save the whole window, panel included, to this PNG");
   app.add_flag("--light-dragger", options.lightDragger,
                "With --screenshot: show the light dragger, which scripted runs leave out");
+  app.add_flag("--no-light-dragger", options.noLightDragger,
+               "Start without the light dragger (View > Light Dragger shows it)");
   app.add_option("--inspect", options.inspect,
                  "LIGHT:FACE:LAYER[:visibility], e.g. Lamp:-z:1: open the map inspector on that "
                  "layer (depth unless :visibility); with --screenshot, print what it shows");

@@ -17,6 +17,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -29,9 +30,8 @@
 #include <QMimeData>
 #include <QScreen>
 #include <QSettings>
-#include <QShowEvent>
-#include <QCloseEvent>
 #include <QShortcut>
+#include <QShowEvent>
 #include <QStatusBar>
 #include <QTimer>
 #include <QUrl>
@@ -154,6 +154,10 @@ void ViewerWindow::setViewerSize(int width, int height) {
     layout()->activate();
     resize(sizeHint());
     centralWidget()->setMinimumSize(kSmallestView);
+    // The layout gave the window the minimum size of the moment; anew, it lets the window
+    // shrink to fit.
+    layout()->invalidate();
+    layout()->activate();
     fitToScreen();
   } else {
     // Screenshots are exactly width x height: no decorations, fixed 3D area.
@@ -171,6 +175,8 @@ bool ViewerWindow::restoreLayout() {
   if (geometry.isEmpty() || !restoreGeometry(geometry)) return false;
   restoreState(settings.value(kStateKey).toByteArray());
   centralWidget()->setMinimumSize(kSmallestView);
+  layout()->invalidate();
+  layout()->activate();
   fitToScreen();
   return true;
 }
@@ -189,10 +195,9 @@ void ViewerWindow::fitToScreen() {
   // Moved so that the frame lies on the screen, should the window reach past an edge (a
   // top-level window's position is that of its frame).
   const QRect outer = isVisible() ? frameGeometry() : QRect(pos(), size().grownBy(frame));
-  const QPoint shift(std::max(available.left() - outer.left(),
-                              std::min(0, available.right() - outer.right())),
-                     std::max(available.top() - outer.top(),
-                              std::min(0, available.bottom() - outer.bottom())));
+  const QPoint shift(
+      std::max(available.left() - outer.left(), std::min(0, available.right() - outer.right())),
+      std::max(available.top() - outer.top(), std::min(0, available.bottom() - outer.bottom())));
   if (!shift.isNull()) move(pos() + shift);
 }
 

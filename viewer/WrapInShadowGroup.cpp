@@ -28,7 +28,8 @@ SoDeepShadowLight* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
   group->setName("ShadowGroup");
   // The scene's own lights cast the shadows when it has any: a light added beside them would
   // light the scene twice over.
-  const std::vector<SoDeepShadowLight*> own = castShadowsFromSceneLights(root, center, radius, viewport);
+  const std::vector<SoDeepShadowLight*> own =
+      castShadowsFromSceneLights(root, center, radius, viewport);
   SoDeepShadowLight* light = own.empty() ? nullptr : own.front();
   if (light == nullptr) {
     SbVec3f up(0.0f, 1.0f, 0.0f), back(0.0f, 0.0f, 1.0f), right(1.0f, 0.0f, 0.0f);
