@@ -18,21 +18,26 @@ action=${1:?usage: xserver.sh start|stop DIR}
 dir=${2:?usage: xserver.sh start|stop DIR}
 screens=("${IVSHADOW_TEST_SCREEN:-1280x1024x24}" 1280x1024x24 1024x768x24 1920x1080x24)
 
-stop_pid() {
-  local pidfile=$1
-  [ -f "$pidfile" ] || return 0
-  local pid
-  pid=$(cat "$pidfile")
-  kill "$pid" 2>/dev/null || true
-  for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-  kill -9 "$pid" 2>/dev/null || true
-  rm -f "$pidfile"
+# Ends the processes whose pid files are named, all at once (each takes a second or two).
+stop_pids() {
+  local pids=() pidfile pid
+  for pidfile in "$@"; do
+    [ -f "$pidfile" ] || continue
+    pids+=("$(cat "$pidfile")")
+    rm -f "$pidfile"
+  done
+  [ ${#pids[@]} -eq 0 ] && return 0
+  kill "${pids[@]}" 2>/dev/null || true
+  for pid in "${pids[@]}"; do
+    for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+    kill -9 "$pid" 2>/dev/null || true
+  done
 }
 
 stop() {
   # The window managers first: a server that goes first leaves them failing on a lost display.
-  for pidfile in "$dir"/openbox.*.pid; do stop_pid "$pidfile"; done
-  stop_pid "$dir/xvfb.pid"
+  stop_pids "$dir"/openbox.*.pid
+  stop_pids "$dir/xvfb.pid"
   rm -f "$dir/display"
 }
 
