@@ -1,6 +1,6 @@
 #pragma once
 
-#include <Inventor/SbLinear.h>
+#include <Inventor/SbVec3f.h>
 
 #include <vector>
 
@@ -17,10 +17,10 @@ namespace ivshadow {
 // - every SpotLight and DirectionalLight that is on gets a DeepShadowLight standing in for
 //   it, inserted just after it (under the same transformation), and is switched off: a
 //   spot light's stand-in sits at its location and shines every way (a cube map has no
-//   cone); a directional light's sits 3 `radius` from `center` (the scene's bounding sphere),
-//   against the light's direction (far enough for nearly parallel light, near enough that the scene
-//   covers a good part of the map's faces). Stand-ins are named after the light with
-//   "Shadow" appended.
+//   cone); a directional light's sits 3 `radius` from `center` (the scene's bounding
+//   sphere), against the light's direction (far enough for nearly parallel light, near
+//   enough that the scene covers a good part of the map's faces). Stand-ins are named after
+//   the light with "Shadow" appended.
 // Unnamed lights get the names ShadowLight, ShadowLight2, ... Returns the deep shadow lights
 // made, in scene order; none for a scene without such lights.
 std::vector<SoDeepShadowLight*> castShadowsFromSceneLights(SoSeparator* root, const SbVec3f& center,

@@ -153,12 +153,7 @@ void ViewerWindow::setViewerSize(int width, int height) {
     centralWidget()->setMinimumSize(width, height);
     layout()->activate();
     resize(sizeHint());
-    centralWidget()->setMinimumSize(kSmallestView);
-    // The layout gave the window the minimum size of the moment; anew, it lets the window
-    // shrink to fit.
-    layout()->invalidate();
-    layout()->activate();
-    fitToScreen();
+    shrinkableToFit();
   } else {
     // Screenshots are exactly width x height: no decorations, fixed 3D area.
     viewer_->setDecoration(FALSE);
@@ -174,11 +169,17 @@ bool ViewerWindow::restoreLayout() {
   const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
   if (geometry.isEmpty() || !restoreGeometry(geometry)) return false;
   restoreState(settings.value(kStateKey).toByteArray());
+  shrinkableToFit();
+  return true;
+}
+
+void ViewerWindow::shrinkableToFit() {
   centralWidget()->setMinimumSize(kSmallestView);
+  // The layout gave the window the minimum size of the moment; activated anew, it lets the
+  // window shrink to fit.
   layout()->invalidate();
   layout()->activate();
   fitToScreen();
-  return true;
 }
 
 void ViewerWindow::fitToScreen() {

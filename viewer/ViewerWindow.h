@@ -85,6 +85,8 @@ class ViewerWindow : public QMainWindow {
 
  private:
   void buildMenus();
+  // Lets the 3D area shrink to kSmallestView and fits the window to the screen.
+  void shrinkableToFit();
   void chooseAndOpen();
   void chooseAndSaveScreenshot();
   void chooseAndSaveScene();
