@@ -160,6 +160,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   }
   // Laid out once the panel holds the scene's nodes, which set its width. An interactive
   // window without --size opens as the last one was closed.
+  if (!scripted) window.restoreFoldedSections();
   if (scripted || !options.size.empty() || !window.restoreLayout()) {
     window.setViewerSize(size.width, size.height);
   }

@@ -163,9 +163,12 @@ void ViewerWindow::setViewerSize(int width, int height) {
   }
 }
 
+void ViewerWindow::restoreFoldedSections() {
+  panel_->setCollapsedSections(QSettings("ivshadow", "viewer").value(kCollapsedKey).toStringList());
+}
+
 bool ViewerWindow::restoreLayout() {
   const QSettings settings("ivshadow", "viewer");
-  panel_->setCollapsedSections(settings.value(kCollapsedKey).toStringList());
   const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
   if (geometry.isEmpty() || !restoreGeometry(geometry)) return false;
   restoreState(settings.value(kStateKey).toByteArray());

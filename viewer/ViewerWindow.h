@@ -62,9 +62,12 @@ class ViewerWindow : public QMainWindow {
   // fitted to the screen (the 3D area shrinks, the panel keeps its width), scripted ones keep
   // exactly that area for their screenshots.
   void setViewerSize(int width, int height);
-  // Interactive windows: the geometry, docks and folded panel sections of the last window
-  // closed (Qt's settings), fitted to the screen. False when there is nothing to restore.
+  // Interactive windows: the geometry and docks of the last window closed (Qt's settings),
+  // fitted to the screen. False when there is nothing to restore.
   bool restoreLayout();
+  // Interactive windows: folds the panel's sections that were folded when the last window
+  // closed.
+  void restoreFoldedSections();
   // Shrinks and moves the window so that it and its frame lie on the screen it is on.
   void fitToScreen();
   // Shows or hides the dragger on the selected deep shadow light (View ▸ Light Dragger).
