@@ -40,15 +40,18 @@ InteractiveViewer::~InteractiveViewer() {
   waitForProcess(pid_);
 }
 
+std::string InteractiveViewer::findWindow() const {
+  const ProcessResult search =
+      run({"xdotool", "search", "--onlyvisible", "--name", title_}, {"DISPLAY=" + display_});
+  const std::vector<std::string> found = lines(search.out);
+  return found.empty() ? std::string() : found.front();
+}
+
 bool InteractiveViewer::waitForWindow(const std::string& title) {
+  title_ = title;
   for (int i = 0; i < kPolls && pid_ > 0; ++i) {
-    const ProcessResult search =
-        run({"xdotool", "search", "--onlyvisible", "--name", title}, {"DISPLAY=" + display_});
-    const std::vector<std::string> found = lines(search.out);
-    if (!found.empty()) {
-      window_ = found.front();
-      return true;
-    }
+    window_ = findWindow();
+    if (!window_.empty()) return true;
     int status = 0;
     if (waitpid(pid_, &status, WNOHANG) == pid_) {
       pid_ = -1;
@@ -66,6 +69,12 @@ WindowTree InteractiveViewer::settledTree() {
   int unchanged = 0;
   for (int i = 0; i < kPolls; ++i) {
     std::this_thread::sleep_for(kPoll);
+    // Looked up each time: under load the first window found by its title was once gone a
+    // moment later (xwininfo could not read it), another with the same title in its place.
+    const std::string id = findWindow();
+    if (id.empty()) continue;
+    if (id != window_) unchanged = 0;
+    window_ = id;
     WindowTree tree = windowTree(display_, window_);
     // Laid out for the window's present size: the widgets reach its right and bottom edges
     // (the status bar, the panel), and none lies outside. The window manager changes the

@@ -39,9 +39,13 @@ class InteractiveViewer {
   std::string output() const;
 
  private:
+  // The visible window titled title_ ("" when there is none).
+  std::string findWindow() const;
+
   std::string display_;
   std::string out_;
   std::string err_;
+  std::string title_;
   std::string window_;
   int pid_ = -1;
 };

@@ -54,6 +54,10 @@ void expectViewShowsTheHeadlessRender(InteractiveViewer& viewer, const ScreenRec
   }
   test::expectMostlyEqual(view, candidates[best], 2, 0.995,
                           "the 3D area on screen against ivshadow render");
+  // The whole screen, for a failure's reader: what was around (or over) the area.
+  if (test::shareWithin(view, candidates[best], 2) < 0.995) {
+    writePng(dir + "/screen.png", test::grabScreen(viewer.display()));
+  }
 }
 
 // Opens the viewer as a user does on a screen of screenWidth x screenHeight, with the 3D area
