@@ -34,7 +34,8 @@ class InteractiveViewer {
   static ScreenRect viewArea(const WindowTree& tree);
   // Asks the window manager to resize the window's inside to width x height.
   void resize(int width, int height);
-  // Quits as a user does (Ctrl+Q in the window) and returns the exit status.
+  // Closes the window as a user does (the window manager's close) and returns the viewer's
+  // exit status.
   int quit();
   std::string output() const;
 
