@@ -10,8 +10,10 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QSignalBlocker>
+#include <QSizePolicy>
 #include <QSpinBox>
 #include <QStringList>
 
@@ -19,6 +21,9 @@
 
 namespace ivshadow {
 namespace {
+
+// Room for a spin box's arrows and frame beside its text.
+constexpr int kSpinBoxButtonsWidth = 28;
 
 bool isOfType(const SoField* field, SoType type) {
   return field->getTypeId().isDerivedFrom(type);
@@ -94,6 +99,10 @@ QDoubleSpinBox* FieldEditor::makeDoubleSpinBox() {
   box->setSingleStep(range_.step);
   box->setDecimals(range_.decimals);
   box->setKeyboardTracking(false);
+  // Sized for a value of a few digits rather than for the widest value in range (location
+  // reaches 1e5), so that three of them side by side do not widen the panel.
+  box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+  box->setMinimumWidth(box->fontMetrics().horizontalAdvance("-000.000") + kSpinBoxButtonsWidth);
   connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
           [this] { writeField(); });
   return box;

@@ -6,6 +6,7 @@
 #include "nodes/NodesOfType.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
+#include "viewer/CollapsibleSection.h"
 #include "viewer/FieldEditor.h"
 
 #include <Inventor/nodes/SoSeparator.h>
@@ -13,9 +14,13 @@
 #include <QComboBox>
 #include <QFontDatabase>
 #include <QFormLayout>
+#include <QFrame>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
+#include <QSizePolicy>
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
@@ -24,44 +29,56 @@
 namespace ivshadow {
 namespace {
 
+// The panel's sections, in the order they appear; a node's page shows those it has fields
+// in. "Rays" explains that the traced method has no settings of its own.
+const char* const kLight = "Light";
+const char* const kMethod = "Shadow method";
+const char* const kMap = "Map";
+const char* const kRays = "Rays";
+const char* const kPeeling = "Peeling";
+const char* const kFigures = "Figures";
+
 struct FieldSpec {
+  const char* section;
   const char* name;
   FieldRange range;
 };
 
 // The fields the panel edits, per node type, with the ranges the nodes accept (wider values
-// would only be clamped by the node with a warning, see nodes/DeepShadowSettings.cpp).
+// would only be clamped by the node with a warning, see nodes/DeepShadowSettings.cpp),
+// grouped as SoDeepShadowLight.h describes them: what applies to both methods under the
+// method, what only the map uses under Map.
 const std::vector<FieldSpec>& lightFields() {
   static const std::vector<FieldSpec> fields = {
-      {"on", {}},
-      {"intensity", {0.0, 1.0, 0.05, 2}},
-      {"color", {0.0, 1.0, 0.05, 2}},
-      {"location", {-1e5, 1e5, 0.1, 3}},
-      {"method", {}},
-      {"resolution", {1, 16384, 64, 0}},
-      {"maxLayers", {1, 64, 1, 0}},
-      {"shadowColor", {}},
-      {"colorModel", {}},
-      {"precision", {}},
-      {"filter", {}},
-      {"filterSize", {1, 9, 2, 0}},
-      {"bias", {0.0, 100.0, 0.25, 2}},
-      {"nearRadius", {-1.0, 1e6, 0.1, 3}},
-      {"farRadius", {-1.0, 1e6, 0.1, 3}},
+      {kLight, "on", {}},
+      {kLight, "intensity", {0.0, 1.0, 0.05, 2}},
+      {kLight, "color", {0.0, 1.0, 0.05, 2}},
+      {kLight, "location", {-1e5, 1e5, 0.1, 3}},
+      {kMethod, "method", {}},
+      {kMethod, "shadowColor", {}},
+      {kMethod, "colorModel", {}},
+      {kMethod, "nearRadius", {-1.0, 1e6, 0.1, 3}},
+      {kMethod, "farRadius", {-1.0, 1e6, 0.1, 3}},
+      {kMap, "resolution", {1, 16384, 64, 0}},
+      {kMap, "maxLayers", {1, 64, 1, 0}},
+      {kMap, "precision", {}},
+      {kMap, "filter", {}},
+      {kMap, "filterSize", {1, 9, 2, 0}},
+      {kMap, "bias", {0.0, 100.0, 0.25, 2}},
   };
   return fields;
 }
 
 const std::vector<FieldSpec>& groupFields() {
-  static const std::vector<FieldSpec> fields = {{"isActive", {}}};
+  static const std::vector<FieldSpec> fields = {{kMethod, "isActive", {}}};
   return fields;
 }
 
 const std::vector<FieldSpec>& peelingFields() {
   static const std::vector<FieldSpec> fields = {
-      {"method", {}},
-      {"maxPasses", {0, SoPeelingSeparator::kMaxPasses, 1, 0}},
-      {"earlyTermination", {}},
+      {kPeeling, "method", {}},
+      {kPeeling, "maxPasses", {0, SoPeelingSeparator::kMaxPasses, 1, 0}},
+      {kPeeling, "earlyTermination", {}},
   };
   return fields;
 }
@@ -70,6 +87,17 @@ const std::vector<FieldSpec>& fieldsOf(const SoNode* node) {
   if (node->isOfType(SoDeepShadowLight::getClassTypeId())) return lightFields();
   if (node->isOfType(SoPeelingSeparator::getClassTypeId())) return peelingFields();
   return groupFields();
+}
+
+// A label that wraps to the panel's width instead of setting it (Qt sizes a wrapping label
+// for some 80 characters).
+QLabel* wrappingLabel(const QString& text, QWidget* parent) {
+  auto* label = new QLabel(text, parent);
+  label->setWordWrap(true);
+  QSizePolicy policy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  policy.setHeightForWidth(true);
+  label->setSizePolicy(policy);
+  return label;
 }
 
 std::string joined(const std::set<std::string>& names) {
@@ -86,33 +114,46 @@ ShadowPanel::ShadowPanel(QWidget* parent) : QDockWidget("Deep shadows", parent) 
   auto* layout = new QVBoxLayout(content);
   nodes_ = new QComboBox(content);
   nodes_->setToolTip("The deep shadow node whose fields are edited below");
+  // Long node names are shortened rather than widening the panel.
+  nodes_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  nodes_->setMinimumContentsLength(16);
   layout->addWidget(nodes_);
   forms_ = new QStackedWidget(content);
   layout->addWidget(forms_);
 
   emptyPage_ = new QWidget(forms_);
   auto* emptyLayout = new QVBoxLayout(emptyPage_);
-  auto* explanation = new QLabel(
-      "This scene has no deep shadow nodes. Adding a light puts the scene in a "
-      "TransparentShadowGroup with a DeepShadowLight above it.",
+  emptyLayout->setContentsMargins(0, 0, 0, 0);
+  auto* explanation = wrappingLabel(
+      "This scene has no deep shadow nodes. Adding shadows puts the scene in a "
+      "TransparentShadowGroup and makes its lights cast (point lights become "
+      "DeepShadowLights; spot and directional lights get one standing in for them); a scene "
+      "without lights gets one DeepShadowLight.",
       emptyPage_);
-  explanation->setWordWrap(true);
   emptyLayout->addWidget(explanation);
   auto* add = new QPushButton("Add deep shadow light", emptyPage_);
   emptyLayout->addWidget(add);
-  emptyLayout->addStretch();
   connect(add, &QPushButton::clicked, this, [this] {
     if (addLight_) addLight_();
   });
   forms_->addWidget(emptyPage_);
 
-  figures_ = new QLabel(content);
+  CollapsibleSection* figures = addSection(kFigures, content);
+  layout->addWidget(figures);
+  figures_ = wrappingLabel({}, figures);
   figures_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
   figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   figures_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
-  layout->addWidget(figures_);
+  figures->form()->addRow(figures_);
   layout->addStretch();
-  setWidget(content);
+
+  // Scrolls rather than growing taller than the window; as wide as its widest row.
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidget(content);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+  scroll->setFrameShape(QFrame::NoFrame);
+  setWidget(scroll);
 
   connect(nodes_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int index) {
     // Page 0 is the "no deep shadow node" page; entry i is page i + 1.
@@ -120,6 +161,57 @@ ShadowPanel::ShadowPanel(QWidget* parent) : QDockWidget("Deep shadows", parent) 
     if (selected_) selected_(selectedNode());
   });
   setScene(nullptr, {});
+}
+
+int ShadowPanel::contentWidth() const {
+  // The scroll area offers only its content's size hint, in which the spin boxes that may
+  // shrink count for nothing; their minimum counts here, and the scroll bar beside them.
+  const auto* scroll = static_cast<const QScrollArea*>(widget());
+  QWidget* content = scroll->widget();
+  // Pages just added reach the content's layout only with the next event loop pass; asked
+  // now, it would still answer for the pages it had (Qt caches each widget's sizes).
+  forms_->updateGeometry();
+  content->layout()->invalidate();
+  return content->sizeHint().expandedTo(content->minimumSizeHint()).width() +
+         scroll->verticalScrollBar()->sizeHint().width();
+}
+
+CollapsibleSection* ShadowPanel::addSection(const QString& title, QWidget* parent) {
+  auto* section = new CollapsibleSection(title, parent);
+  section->setExpanded(!collapsed_.contains(title));
+  section->onToggled([this, title](bool expanded) {
+    if (expanded) {
+      collapsed_.removeAll(title);
+    } else if (!collapsed_.contains(title)) {
+      collapsed_.append(title);
+    }
+    // The same section on the other nodes' pages folds with it.
+    for (CollapsibleSection* other : sections()) {
+      if (other->title() == title) other->setExpanded(expanded);
+    }
+  });
+  return section;
+}
+
+std::vector<CollapsibleSection*> ShadowPanel::sections() const {
+  // The classes have no Q_OBJECT (no moc), so findChildren<CollapsibleSection*> would match
+  // every widget; the C++ type decides.
+  std::vector<CollapsibleSection*> found;
+  for (QWidget* child : findChildren<QWidget*>()) {
+    if (auto* section = dynamic_cast<CollapsibleSection*>(child)) found.push_back(section);
+  }
+  return found;
+}
+
+QStringList ShadowPanel::collapsedSections() const {
+  return collapsed_;
+}
+
+void ShadowPanel::setCollapsedSections(const QStringList& titles) {
+  collapsed_ = titles;
+  for (CollapsibleSection* section : sections()) {
+    section->setExpanded(!collapsed_.contains(section->title()));
+  }
 }
 
 ShadowPanel::~ShadowPanel() {
@@ -173,6 +265,9 @@ void ShadowPanel::setScene(SoSeparator* root, const std::string& sceneName) {
   nodes_->setCurrentIndex(entries_.empty() ? -1 : first);
   forms_->setCurrentIndex(entries_.empty() ? 0 : first + 1);
   if (selected_) selected_(selectedNode());
+  // As wide as the widest page, so that switching nodes does not change the panel's width and
+  // no row is cut off; the content scrolls vertically only.
+  widget()->setMinimumWidth(contentWidth());
 }
 
 void ShadowPanel::addEntry(SoNode* node, const QString& label) {
@@ -180,14 +275,32 @@ void ShadowPanel::addEntry(SoNode* node, const QString& label) {
   entry.node = CoinRef<SoNode>(node);
   entry.name = node->getName().getString();
   auto* page = new QWidget(forms_);
-  auto* form = new QFormLayout(page);
+  auto* layout = new QVBoxLayout(page);
+  layout->setContentsMargins(0, 0, 0, 0);
+  std::map<std::string, CollapsibleSection*> sections;
   for (const FieldSpec& spec : fieldsOf(node)) {
     SoField* field = node->getField(SbName(spec.name));
     if (field == nullptr || !FieldEditor::supports(field)) continue;
-    auto* editor = new FieldEditor(field, spec.range, page);
-    form->addRow(spec.name, editor);
+    CollapsibleSection*& section = sections[spec.section];
+    if (section == nullptr) {
+      section = addSection(spec.section, page);
+      layout->addWidget(section);
+    }
+    auto* editor = new FieldEditor(field, spec.range, section);
+    section->form()->addRow(spec.name, editor);
     entry.editors[spec.name] = editor;
   }
+  if (node->isOfType(SoDeepShadowLight::getClassTypeId())) {
+    // After the map's section: traced shadows take the light's and the method's fields only.
+    CollapsibleSection* rays = addSection(kRays, page);
+    auto* note = wrappingLabel(
+        "method RAYS traces one shadow ray per pixel on the CPU (Embree): exact, no map, so "
+        "the Map fields do not apply. AUTO picks it on software rasterisers.",
+        rays);
+    rays->form()->addRow(note);
+    layout->addWidget(rays);
+  }
+  layout->addStretch();
   forms_->addWidget(page);
   nodes_->addItem(label);
   entries_.push_back(std::move(entry));

@@ -3,6 +3,7 @@
 #include "scene/CoinRef.h"
 
 #include <QDockWidget>
+#include <QStringList>
 
 #include <functional>
 #include <map>
@@ -17,14 +18,16 @@ class SoSeparator;
 
 namespace ivshadow {
 
+class CollapsibleSection;
 class FieldEditor;
 struct FieldAssignment;
 
 // The dock panel of the deep shadow nodes in the scene: pick one SoDeepShadowLight,
-// SoTransparentShadowGroup or SoPeelingSeparator from the list and edit its fields
-// (resolution, layers, colour mode and model, precision, filter, bias, peel method and cap,
-// on/off, ...); every change applies to the scene at once. A scene without any offers one
-// button that adds a shadow group with a deep shadow light. Below, the live figures.
+// SoTransparentShadowGroup or SoPeelingSeparator from the list and edit its fields, grouped
+// in sections that fold away (Light, Shadow method, Map, Rays, Peeling); every change applies
+// to the scene at once. A scene without any offers one button that adds shadows. Below, the
+// live figures (section Figures). The content scrolls when the window is too short, and the
+// dock is as wide as its content.
 class ShadowPanel : public QDockWidget {
  public:
   explicit ShadowPanel(QWidget* parent);
@@ -47,6 +50,13 @@ class ShadowPanel : public QDockWidget {
 
   void setFigures(const QString& text);
 
+  // Titles of the sections the user folded, kept for every node's page and between runs.
+  QStringList collapsedSections() const;
+  void setCollapsedSections(const QStringList& titles);
+
+  // The width at which every row shows whole, a vertical scroll bar included.
+  int contentWidth() const;
+
  private:
   struct Entry {
     CoinRef<SoNode> node;
@@ -56,11 +66,14 @@ class ShadowPanel : public QDockWidget {
 
   void clear();
   void addEntry(SoNode* node, const QString& label);
+  CollapsibleSection* addSection(const QString& title, QWidget* parent);
+  std::vector<CollapsibleSection*> sections() const;
 
   QComboBox* nodes_ = nullptr;
   QStackedWidget* forms_ = nullptr;
   QWidget* emptyPage_ = nullptr;
   QLabel* figures_ = nullptr;
+  QStringList collapsed_;
   std::vector<Entry> entries_;
   std::string sceneName_;
   std::function<void()> addLight_;

@@ -26,6 +26,8 @@
 namespace ivshadow {
 namespace {
 
+const char* const kDefaultSize = "800x600";
+
 struct InspectRequest {
   QString light;
   int face = -1;
@@ -91,7 +93,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   ImageSize size;
   std::vector<FieldAssignment> assignments;
   try {
-    size = ImageSize::parse(options.size, "--size");
+    size = ImageSize::parse(options.size.empty() ? kDefaultSize : options.size, "--size");
     assignments = checkScriptedOptions(options);
   } catch (const InputError& error) {
     std::cerr << error.what() << '\n';
@@ -116,7 +118,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   const bool scripted = options.scripted();
   window.setInteractive(!scripted);
   if (options.lightDragger) window.setLightDraggerShown(true);
-  window.setViewerSize(size.width, size.height);
+  if (options.noLightDragger) window.setLightDraggerShown(false);
 
   if (!options.scene.empty()) {
     const std::string error = window.openScene(QString::fromStdString(options.scene));
@@ -155,6 +157,12 @@ int runViewer(const ViewerOptions& options, const char* programName) {
     inspector.setShowVisibility(request.visibility);
     inspector.selectLight(request.light);
     inspector.show();
+  }
+  // Laid out once the panel holds the scene's nodes, which set its width. An interactive
+  // window without --size opens as the last one was closed.
+  if (!scripted) window.restoreFoldedSections();
+  if (scripted || !options.size.empty() || !window.restoreLayout()) {
+    window.setViewerSize(size.width, size.height);
   }
   window.show();
   window.settleDrawable();

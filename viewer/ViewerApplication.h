@@ -8,15 +8,16 @@ namespace ivshadow {
 struct ViewerOptions {
   std::string scene;       // may be empty: start with nothing loaded
   std::string screenshot;  // non-empty: save the second rendered frame here and quit
-  std::string size = "800x600";
-  bool addLight = false;                 // wrap the scene in a deep shadow group first
+  std::string size;        // WIDTHxHEIGHT of the 3D area; empty: the last window's, else 800x600
+  bool addLight = false;   // wrap the scene in a deep shadow group first
   std::vector<std::string> assignments;  // NAME.field=VALUE, applied through the panel
   std::string saveScene;                 // non-empty: write the scene here and quit
   std::string figures;                   // non-empty: the screenshot frame's figures (JSON)
-  std::string windowShot;     // non-empty: with --screenshot, the whole window, panel included
-  bool lightDragger = false;  // scripted runs: show the light dragger all the same
-  std::string inspect;        // LIGHT:FACE:LAYER[:visibility], shown in the map inspector
-  std::string inspectOut;     // non-empty: with --inspect, the inspector's picture (PNG)
+  std::string windowShot;       // non-empty: with --screenshot, the whole window, panel included
+  bool lightDragger = false;    // scripted runs: show the light dragger all the same
+  bool noLightDragger = false;  // interactive runs: start with the light dragger off
+  std::string inspect;          // LIGHT:FACE:LAYER[:visibility], shown in the map inspector
+  std::string inspectOut;       // non-empty: with --inspect, the inspector's picture (PNG)
 
   // Scripted runs do their work and quit; errors go to stderr rather than dialogs.
   bool scripted() const { return !screenshot.empty() || !saveScene.empty(); }

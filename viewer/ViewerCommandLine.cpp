@@ -8,7 +8,9 @@ void addViewerOptions(CLI::App& app, ViewerOptions& options) {
   app.add_option("scene", options.scene, "Open Inventor scene file (.iv)");
   app.add_option("--screenshot", options.screenshot,
                  "Save the second frame drawn to this PNG and quit");
-  app.add_option("--size", options.size, "Viewer area WIDTHxHEIGHT")->capture_default_str();
+  app.add_option("--size", options.size,
+                 "3D area WIDTHxHEIGHT (default: as the window was last closed, else 800x600; "
+                 "an interactive window is then fitted to the screen)");
   app.add_flag("--add-light", options.addLight,
                "Put a scene without deep shadow nodes into a shadow group with a deep shadow "
                "light, as the panel's button does");
@@ -26,6 +28,8 @@ void addViewerOptions(CLI::App& app, ViewerOptions& options) {
                  "With --screenshot: also save the whole window, panel included, to this PNG");
   app.add_flag("--light-dragger", options.lightDragger,
                "With --screenshot: show the light dragger, which scripted runs leave out");
+  app.add_flag("--no-light-dragger", options.noLightDragger,
+               "Start without the light dragger (View > Light Dragger shows it)");
   app.add_option("--inspect", options.inspect,
                  "LIGHT:FACE:LAYER[:visibility], e.g. Lamp:-z:1: open the map inspector on that "
                  "layer (depth unless :visibility); with --screenshot, print what it shows");

@@ -17,26 +17,46 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGLWidget>
 #include <QLabel>
+#include <QLayout>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
+#include <QSettings>
 #include <QShortcut>
+#include <QShowEvent>
 #include <QStatusBar>
 #include <QTimer>
 #include <QUrl>
 
+#include <algorithm>
 #include <iostream>
 
 namespace ivshadow {
+namespace {
+
+// Qt settings (~/.config/ivshadow/viewer.conf) of the window's layout.
+const char* const kGeometryKey = "window/geometry";
+const char* const kStateKey = "window/state";
+const char* const kCollapsedKey = "window/collapsedSections";
+// The 3D area never shrinks below this, however small the window is made.
+const QSize kSmallestView(160, 120);
+// A title bar and borders of the usual size, assumed before the window manager tells.
+const QMargins kFrameAllowance(4, 28, 4, 4);
+
+}  // namespace
 
 ViewerWindow::ViewerWindow() {
   setWindowTitle("ivshadow viewer");
+  // saveState() names the docks by their object names.
+  setObjectName("ViewerWindow");
   frameLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(frameLabel_);
   // Editors save by writing several times or by replacing the file; a short delay lets the
@@ -126,11 +146,14 @@ void ViewerWindow::setLightDraggerShown(bool shown) {
 
 void ViewerWindow::setViewerSize(int width, int height) {
   if (interactive_) {
-    // The examiner's thumbwheels and buttons come on top of the 3D area; the window stays
-    // resizable.
-    viewer_->setSize(SbVec2s(static_cast<short>(width), static_cast<short>(height)));
-    centralWidget()->resize(width, height);
-    resize(sizeHint().expandedTo(QSize(width, height)));
+    // The window is laid out around a 3D area of the size asked for (the examiner's
+    // thumbwheels and buttons take their share of it); the panel beside it is as wide as
+    // its content. Then the window is made to fit the screen, and the 3D area shrinks with
+    // it; the minimum only holds while the window takes its size.
+    centralWidget()->setMinimumSize(width, height);
+    layout()->activate();
+    resize(sizeHint());
+    shrinkableToFit();
   } else {
     // Screenshots are exactly width x height: no decorations, fixed 3D area.
     viewer_->setDecoration(FALSE);
@@ -138,6 +161,67 @@ void ViewerWindow::setViewerSize(int width, int height) {
     viewer_->setSize(SbVec2s(static_cast<short>(width), static_cast<short>(height)));
     adjustSize();
   }
+}
+
+void ViewerWindow::restoreFoldedSections() {
+  panel_->setCollapsedSections(QSettings("ivshadow", "viewer").value(kCollapsedKey).toStringList());
+}
+
+bool ViewerWindow::restoreLayout() {
+  const QSettings settings("ivshadow", "viewer");
+  const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
+  if (geometry.isEmpty() || !restoreGeometry(geometry)) return false;
+  restoreState(settings.value(kStateKey).toByteArray());
+  shrinkableToFit();
+  return true;
+}
+
+void ViewerWindow::shrinkableToFit() {
+  centralWidget()->setMinimumSize(kSmallestView);
+  // The layout gave the window the minimum size of the moment; activated anew, it lets the
+  // window shrink to fit.
+  layout()->invalidate();
+  layout()->activate();
+  fitToScreen();
+}
+
+void ViewerWindow::fitToScreen() {
+  const QRect available = screen()->availableGeometry();
+  // The window manager's frame is known once the window is shown; before that, room is left
+  // for a title bar and borders of the usual size.
+  const QMargins frame = isVisible() ? QMargins(geometry().left() - frameGeometry().left(),
+                                                geometry().top() - frameGeometry().top(),
+                                                frameGeometry().right() - geometry().right(),
+                                                frameGeometry().bottom() - geometry().bottom())
+                                     : kFrameAllowance;
+  const QSize room = available.size().shrunkBy(frame);
+  if (width() > room.width() || height() > room.height()) resize(size().boundedTo(room));
+  // Moved so that the frame lies on the screen, should the window reach past an edge (a
+  // top-level window's position is that of its frame).
+  const QRect outer = isVisible() ? frameGeometry() : QRect(pos(), size().grownBy(frame));
+  const QPoint shift(
+      std::max(available.left() - outer.left(), std::min(0, available.right() - outer.right())),
+      std::max(available.top() - outer.top(), std::min(0, available.bottom() - outer.bottom())));
+  if (!shift.isNull()) move(pos() + shift);
+}
+
+void ViewerWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  if (!interactive_) return;
+  // The window manager adds its frame after the window is mapped; once it has, the frame is
+  // known and the window is made to fit again.
+  QTimer::singleShot(250, this, [this] { fitToScreen(); });
+}
+
+void ViewerWindow::closeEvent(QCloseEvent* event) {
+  if (interactive_) {
+    // Scripted runs leave the settings alone: their windows are of the size asked for.
+    QSettings settings("ivshadow", "viewer");
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    settings.setValue(kCollapsedKey, panel_->collapsedSections());
+  }
+  QMainWindow::closeEvent(event);
 }
 
 std::string ViewerWindow::openScene(const QString& path) {

@@ -12,10 +12,12 @@
 #include <functional>
 
 class QAction;
+class QCloseEvent;
 class QDragEnterEvent;
 class QDropEvent;
 class QLabel;
 class QMimeData;
+class QShowEvent;
 class SoNode;
 class SoSeparator;
 
@@ -56,7 +58,18 @@ class ViewerWindow : public QMainWindow {
   void settleDrawable();
   // Non-interactive (scripted) windows report errors on stderr and show no light dragger.
   void setInteractive(bool interactive);
+  // Lays the window out around a 3D area of width x height: interactive windows are then
+  // fitted to the screen (the 3D area shrinks, the panel keeps its width), scripted ones keep
+  // exactly that area for their screenshots.
   void setViewerSize(int width, int height);
+  // Interactive windows: the geometry and docks of the last window closed (Qt's settings),
+  // fitted to the screen. False when there is nothing to restore.
+  bool restoreLayout();
+  // Interactive windows: folds the panel's sections that were folded when the last window
+  // closed.
+  void restoreFoldedSections();
+  // Shrinks and moves the window so that it and its frame lie on the screen it is on.
+  void fitToScreen();
   // Shows or hides the dragger on the selected deep shadow light (View ▸ Light Dragger).
   void setLightDraggerShown(bool shown);
 
@@ -70,9 +83,13 @@ class ViewerWindow : public QMainWindow {
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
+  void showEvent(QShowEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
 
  private:
   void buildMenus();
+  // Lets the 3D area shrink to kSmallestView and fits the window to the screen.
+  void shrinkableToFit();
   void chooseAndOpen();
   void chooseAndSaveScreenshot();
   void chooseAndSaveScene();

@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "viewer/ShadowCastingLights.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
@@ -23,25 +24,32 @@ SoDeepShadowLight* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
     center = box.getCenter();
     radius = std::max(1e-3f, 0.5f * (box.getMax() - box.getMin()).length());
   }
-  SbVec3f up(0.0f, 1.0f, 0.0f), back(0.0f, 0.0f, 1.0f), right(1.0f, 0.0f, 0.0f);
-  if (camera != nullptr) {
-    const SbRotation orientation = camera->orientation.getValue();
-    orientation.multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
-    orientation.multVec(SbVec3f(0.0f, 0.0f, 1.0f), back);
-    orientation.multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
-  }
-  // Above, a little towards the viewer and to the side, like a lamp over a desk: the shadows
-  // fall on what lies below and behind the objects instead of straight away from the eye,
-  // where the viewer could not see them. Outside the bounding sphere, so inside no object.
-  SbVec3f direction = up + 0.5f * back + 0.3f * right;
-  direction.normalize();
-
   auto* group = new SoTransparentShadowGroup;
   group->setName("ShadowGroup");
-  auto* light = new SoDeepShadowLight;
-  light->setName("ShadowLight");
-  light->location.setValue(center + direction * (1.5f * radius));
-  group->addChild(light);
+  // The scene's own lights cast the shadows when it has any: a light added beside them would
+  // light the scene twice over.
+  const std::vector<SoDeepShadowLight*> own =
+      castShadowsFromSceneLights(root, center, radius, viewport);
+  SoDeepShadowLight* light = own.empty() ? nullptr : own.front();
+  if (light == nullptr) {
+    SbVec3f up(0.0f, 1.0f, 0.0f), back(0.0f, 0.0f, 1.0f), right(1.0f, 0.0f, 0.0f);
+    if (camera != nullptr) {
+      const SbRotation orientation = camera->orientation.getValue();
+      orientation.multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
+      orientation.multVec(SbVec3f(0.0f, 0.0f, 1.0f), back);
+      orientation.multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
+    }
+    // Above, a little towards the viewer and to the side, like a lamp over a desk: the
+    // shadows fall on what lies below and behind the objects instead of straight away from
+    // the eye, where the viewer could not see them. Outside the bounding sphere, so inside no
+    // object.
+    SbVec3f direction = up + 0.5f * back + 0.3f * right;
+    direction.normalize();
+    light = new SoDeepShadowLight;
+    light->setName("ShadowLight");
+    light->location.setValue(center + direction * (1.5f * radius));
+    group->addChild(light);
+  }
 
   int insertAt = -1;
   for (int i = 0; i < root->getNumChildren();) {

@@ -12,14 +12,8 @@
 namespace ivshadow {
 namespace {
 
+using test::readText;
 using test::runOnTestDisplay;
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 nlohmann::json readJson(const std::string& path) {
   return nlohmann::json::parse(readText(path));
@@ -169,10 +163,10 @@ TEST(ViewerPanel, SavedSceneHoldsThePanelsValues) {
 TEST(ViewerPanel, AddLightWrapsASceneWithoutDeepShadowsInAGroupWithALight) {
   const std::string dir = test::outputDir();
   const test::ProcessResult result =
-      runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--add-light", "--set",
-                    "ShadowLight.resolution=128", "--set", "ShadowLight.method=MAP", "--save-scene",
-                    dir + "/wrapped.iv", "--screenshot", dir + "/viewer.png", "--figures",
-                    dir + "/figures.json", "--size", "320x240"});
+      runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--add-light",
+                        "--set", "ShadowLight.resolution=128", "--set", "ShadowLight.method=MAP",
+                        "--save-scene", dir + "/wrapped.iv", "--screenshot", dir + "/viewer.png",
+                        "--figures", dir + "/figures.json", "--size", "320x240"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const std::string text = readText(dir + "/wrapped.iv");
   EXPECT_NE(text.find("DEF ShadowGroup TransparentShadowGroup"), std::string::npos) << text;
@@ -230,7 +224,7 @@ TEST(ViewerPanel, UnwritableSceneOutputExitsTwoBeforeAnyOutput) {
   const std::string dir = test::outputDir();
   const test::ProcessResult result =
       runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--screenshot",
-                    dir + "/shot.png", "--save-scene", dir + "/missing/dir/saved.iv"});
+                        dir + "/shot.png", "--save-scene", dir + "/missing/dir/saved.iv"});
   EXPECT_EQ(result.exitCode, 2) << result.err;
   EXPECT_NE(result.err.find("missing/dir/saved.iv"), std::string::npos) << result.err;
   EXPECT_FALSE(test::fileExists(dir + "/shot.png"));
@@ -243,7 +237,7 @@ TEST(ViewerPanel, RecentFilesListTheScenesOpenedNewestFirst) {
   for (const std::string& scene : {first, second, first}) {
     const test::ProcessResult result =
         runOnTestDisplay({test::viewerExe(), scene, "--save-scene",
-                      dir + "/" + std::filesystem::path(scene).filename().string()});
+                          dir + "/" + std::filesystem::path(scene).filename().string()});
     ASSERT_EQ(result.exitCode, 0) << result.err;
   }
   // QSettings' file (XDG_CONFIG_HOME/ivshadow/viewer.conf): opened and saved files, newest

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 
 namespace ivshadow::test {
 
@@ -22,7 +23,7 @@ std::string testDisplay() {
 }
 
 ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
-                           const std::vector<std::string>& environment) {
+                               const std::vector<std::string>& environment) {
   const std::string display = testDisplay();
   if (display.empty()) {
     ADD_FAILURE() << "no test X server: run the viewer tests through ctest (fixture xserver, "
@@ -33,6 +34,11 @@ ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
                                   "XDG_CONFIG_HOME=" + outputDir() + "/config"};
   env.insert(env.end(), environment.begin(), environment.end());
   return run(arguments, env);
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
 }
 
 double shareWithin(const Image& a, const Image& b, int tolerance) {

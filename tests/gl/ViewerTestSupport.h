@@ -16,7 +16,7 @@ std::string testDisplay();
 // llvmpipe there); the command's own exit status comes back unchanged. XDG_CONFIG_HOME points
 // into the test's output directory, so the viewer's settings never touch the user's.
 ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
-                           const std::vector<std::string>& environment = {});
+                               const std::vector<std::string>& environment = {});
 
 // Runs the viewer with `arguments`, which make it save a screenshot to `shot`, and returns the
 // screenshot. When fewer than `share` of its pixels lie within 2 steps of `expected`, the
@@ -26,6 +26,9 @@ ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
 // comparison all the same. `result` receives the (last) run's exit status and output.
 Image viewerScreenshot(const std::vector<std::string>& arguments, const std::string& shot,
                        const Image& expected, double share, ProcessResult& result);
+
+// The whole content of a file ("" when it cannot be read).
+std::string readText(const std::string& path);
 
 // Share of pixels whose colour channels all lie within `tolerance` of the other image's.
 double shareWithin(const Image& a, const Image& b, int tolerance);

@@ -57,11 +57,9 @@ std::string outputDir() {
   return dir.string();
 }
 
-ProcessResult run(const std::vector<std::string>& arguments,
-                  const std::vector<std::string>& environment) {
-  const std::string base =
-      std::filesystem::temp_directory_path() / ("ivshadow-test-" + std::to_string(::getpid()));
-  const std::string outPath = base + ".out", errPath = base + ".err";
+int startProcess(const std::vector<std::string>& arguments,
+                 const std::vector<std::string>& environment, const std::string& outPath,
+                 const std::string& errPath) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
@@ -84,15 +82,26 @@ ProcessResult run(const std::vector<std::string>& arguments,
   std::vector<char*> envp;
   for (const std::string& e : envStrings) envp.push_back(const_cast<char*>(e.c_str()));
   envp.push_back(nullptr);
-
-  ProcessResult result;
   pid_t pid = 0;
-  if (posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  }
+  const bool started =
+      posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0;
   posix_spawn_file_actions_destroy(&actions);
+  return started ? pid : -1;
+}
+
+int waitForProcess(int pid) {
+  int status = 0;
+  if (pid <= 0 || waitpid(pid, &status, 0) != pid) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+ProcessResult run(const std::vector<std::string>& arguments,
+                  const std::vector<std::string>& environment) {
+  const std::string base =
+      std::filesystem::temp_directory_path() / ("ivshadow-test-" + std::to_string(::getpid()));
+  const std::string outPath = base + ".out", errPath = base + ".err";
+  ProcessResult result;
+  result.exitCode = waitForProcess(startProcess(arguments, environment, outPath, errPath));
   result.out = readAll(outPath);
   result.err = readAll(errPath);
   std::filesystem::remove(outPath);

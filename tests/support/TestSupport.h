@@ -27,6 +27,13 @@ struct ProcessResult {
 ProcessResult run(const std::vector<std::string>& arguments,
                   const std::vector<std::string>& environment = {});
 
+// Starts `arguments` without waiting, stdout and stderr to the files named; returns its pid,
+// or -1 when it could not be started. waitForProcess returns its exit status as run() does.
+int startProcess(const std::vector<std::string>& arguments,
+                 const std::vector<std::string>& environment, const std::string& outPath,
+                 const std::string& errPath);
+int waitForProcess(int pid);
+
 bool fileExists(const std::string& path);
 
 // The message of the InputError `body` throws, or empty when it throws none (any other

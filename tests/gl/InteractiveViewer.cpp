@@ -1,0 +1,132 @@
+#include "tests/gl/InteractiveViewer.h"
+
+#include "tests/gl/ViewerTestSupport.h"
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <csignal>
+#include <thread>
+
+namespace ivshadow::test {
+namespace {
+
+// How long to wait for the window and its layout before giving up, in polls of kPoll: far
+// beyond what a loaded machine needs (a few seconds), short of CTest's timeout.
+constexpr int kPolls = 240;
+constexpr std::chrono::milliseconds kPoll(250);
+
+}  // namespace
+
+InteractiveViewer::InteractiveViewer(int screen, const std::vector<std::string>& arguments,
+                                     const std::string& configDir)
+    : display_(testDisplay() + "." + std::to_string(screen)),
+      out_(outputDir() + "/viewer.out"),
+      err_(outputDir() + "/viewer.err") {
+  if (testDisplay().empty()) {
+    ADD_FAILURE() << "no test X server: run the viewer tests through ctest (fixture xserver)";
+    return;
+  }
+  std::vector<std::string> command = {viewerExe()};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  pid_ = startProcess(command, {"DISPLAY=" + display_, "XDG_CONFIG_HOME=" + configDir}, out_, err_);
+  if (pid_ < 0) ADD_FAILURE() << "could not start " << viewerExe();
+}
+
+InteractiveViewer::~InteractiveViewer() {
+  if (pid_ <= 0) return;
+  ::kill(pid_, SIGTERM);
+  waitForProcess(pid_);
+}
+
+std::string InteractiveViewer::findWindow() const {
+  const ProcessResult search =
+      run({"xdotool", "search", "--onlyvisible", "--name", title_}, {"DISPLAY=" + display_});
+  const std::vector<std::string> found = lines(search.out);
+  return found.empty() ? std::string() : found.front();
+}
+
+bool InteractiveViewer::waitForWindow(const std::string& title) {
+  title_ = title;
+  for (int i = 0; i < kPolls && pid_ > 0; ++i) {
+    window_ = findWindow();
+    if (!window_.empty()) return true;
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) {
+      pid_ = -1;
+      ADD_FAILURE() << "the viewer exited before its window showed: " << output();
+      return false;
+    }
+    std::this_thread::sleep_for(kPoll);
+  }
+  ADD_FAILURE() << "no window '" << title << "' on " << display_ << ": " << output();
+  return false;
+}
+
+WindowTree InteractiveViewer::settledTree() {
+  WindowTree previous = windowTree(display_, window_);
+  int unchanged = 0;
+  for (int i = 0; i < kPolls; ++i) {
+    std::this_thread::sleep_for(kPoll);
+    // Looked up each time: under load the first window found by its title was once gone a
+    // moment later (xwininfo could not read it), another with the same title in its place.
+    const std::string id = findWindow();
+    if (id.empty()) continue;
+    if (id != window_) unchanged = 0;
+    window_ = id;
+    WindowTree tree = windowTree(display_, window_);
+    // Laid out for the window's present size: the widgets reach its right and bottom edges
+    // (the status bar, the panel), and none lies outside. The window manager changes the
+    // window first, the viewer follows when its event loop gets to it, between frames.
+    bool right = false, bottom = false, inside = true;
+    for (const ScreenRect& child : tree.all) {
+      right = right || child.x + child.width == tree.window.x + tree.window.width;
+      bottom = bottom || child.y + child.height == tree.window.y + tree.window.height;
+      inside = inside && tree.window.contains(child);
+    }
+    const bool same = tree.window == previous.window && tree.all == previous.all;
+    unchanged = same && right && bottom && inside ? unchanged + 1 : 0;
+    // Unchanged over three polls, framed: the window manager and the viewer are done.
+    if (unchanged >= 3 && frameExtents(display_, window_)[2] > 0) return tree;
+    previous = tree;
+  }
+  ADD_FAILURE() << "the window's geometry did not settle";
+  return previous;
+}
+
+ScreenRect InteractiveViewer::viewArea(const WindowTree& tree) {
+  ScreenRect largest;
+  for (const ScreenRect& leaf : tree.leaves) {
+    if (leaf.width * leaf.height > largest.width * largest.height) largest = leaf;
+  }
+  return largest;
+}
+
+void InteractiveViewer::resize(int width, int height) {
+  run({"xdotool", "windowsize", "--sync", window_, std::to_string(width), std::to_string(height)},
+      {"DISPLAY=" + display_});
+}
+
+int InteractiveViewer::quit() {
+  // Closed through the window manager (_NET_CLOSE_WINDOW, which sends the window
+  // WM_DELETE_WINDOW), as by its close button. Not by a key: X has one keyboard focus for all
+  // screens, and a scripted viewer of another test opening meanwhile took it, and the key.
+  run({"wmctrl", "-i", "-c", window_}, {"DISPLAY=" + display_});
+  for (int i = 0; i < kPolls; ++i) {
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) {
+      pid_ = -1;
+      return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+    std::this_thread::sleep_for(kPoll);
+  }
+  ADD_FAILURE() << "the viewer did not quit when its window was closed";
+  return -1;
+}
+
+std::string InteractiveViewer::output() const {
+  return readText(out_) + readText(err_);
+}
+
+}  // namespace ivshadow::test

@@ -1,0 +1,149 @@
+#include "image/PngFile.h"
+#include "tests/gl/ViewerTestSupport.h"
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+namespace ivshadow {
+namespace {
+
+using test::readText;
+using test::runOnTestDisplay;
+
+int occurrences(const std::string& text, const std::string& word) {
+  int count = 0;
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+    ++count;
+  return count;
+}
+
+// Pixels whose channels are all at least 250: white, where a light saturates the floor.
+int saturated(const Image& image) {
+  int count = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      count += std::min({p[0], p[1], p[2]}) >= 250 ? 1 : 0;
+    }
+  return count;
+}
+
+struct AddedShadows {
+  test::ProcessResult run;
+  std::string saved;
+  Image picture;
+};
+
+// The viewer's "Add deep shadow light" on a bundled scene: the saved result and the picture.
+AddedShadows addShadows(const std::string& sceneName) {
+  const std::string dir = test::outputDir();
+  AddedShadows added;
+  added.run = runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/" + sceneName,
+                                "--add-light", "--save-scene", dir + "/added.iv", "--screenshot",
+                                dir + "/viewer.png", "--size", "320x240"});
+  added.saved = readText(dir + "/added.iv");
+  if (added.run.exitCode == 0) added.picture = readPng(dir + "/viewer.png");
+  return added;
+}
+
+TEST(ViewerAddShadows, TheLampOfGlassOverFloorCastsTheGlasssRedShadowInsteadOfASecondLight) {
+  const AddedShadows added = addShadows("glass_over_floor.iv");
+  ASSERT_EQ(added.run.exitCode, 0) << added.run.err;
+  // The scene's point light became the deep shadow light, under its own name: one light, as
+  // in the file, not the file's and a new one.
+  EXPECT_EQ(occurrences(added.saved, "DeepShadowLight"), 1) << added.saved;
+  EXPECT_NE(added.saved.find("DEF Lamp DeepShadowLight"), std::string::npos) << added.saved;
+  EXPECT_EQ(added.saved.find("PointLight"), std::string::npos) << added.saved;
+
+  // Independent of the viewer's code: the file edited by hand as a user would, its lamp
+  // made a DeepShadowLight and everything after the camera put in a shadow group, rendered
+  // headlessly. DELAYED_BLEND is what the viewer's deep shadow scenes match (ViewerSmoke).
+  const std::string dir = test::outputDir();
+  std::string text = readText(test::scenesDir() + "/glass_over_floor.iv");
+  const std::string lamp = "DEF Lamp PointLight {";
+  ASSERT_NE(text.find(lamp), std::string::npos);
+  text.replace(text.find(lamp), lamp.size(),
+               "TransparentShadowGroup {\n  DEF Lamp DeepShadowLight {");
+  text.replace(text.rfind('}'), 1, "}\n}");
+  std::ofstream(dir + "/by_hand.iv") << text;
+  const test::ProcessResult render =
+      test::run({test::ivshadowExe(), "render", dir + "/by_hand.iv", "-o", dir + "/by_hand.png",
+                 "--size", "320x240", "--transparency", "DELAYED_BLEND"});
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  // Same tolerance as the other viewer-against-render comparisons of deep shadow scenes.
+  test::expectMostlyEqual(added.picture, readPng(dir + "/by_hand.png"), 2, 0.999,
+                          "viewer after Add shadows against the hand-made equivalent");
+
+  // The camera looks at the floor's centre, straight below the lamp (distance 2, Lambert
+  // factor 1) and in the glass's shadow: light through alpha 0.5 red glass is, by seeds/000
+  // eq. 5.3 (colorModel SATURATE), (1 - a) clamp(1 - a + c) = 0.5 red, 0.25 green and blue
+  // of white: (128, 64, 64). 4 steps: 8-bit rounding and Coin's per-vertex lighting, whose
+  // neighbouring vertices 0.125 away see the lamp at cos 0.998.
+  const std::uint8_t* centre = added.picture.pixel(160, 120);
+  EXPECT_NEAR(centre[0], 128, 4);
+  EXPECT_NEAR(centre[1], 64, 4);
+  EXPECT_NEAR(centre[2], 64, 4);
+  // Nothing is over-lit: the floor is brightest just outside the shadow (radius 1 below a
+  // lamp 2 high, Lambert factor 2 / sqrt(5) = 0.89, 228). Two lights saturated it to white.
+  EXPECT_EQ(saturated(added.picture), 0) << "white pixels: the floor is lit twice";
+}
+
+TEST(ViewerAddShadows, ASceneWithoutLightsGetsOneWhoseShadowIsSeen) {
+  // glass_over_floor.iv without its lamp (no_camera.iv, the bundled scene without lights, has
+  // nothing for a shadow to fall on; ViewerPanel.AddLight... covers it).
+  const std::string dir = test::outputDir();
+  std::string text = readText(test::scenesDir() + "/glass_over_floor.iv");
+  const std::size_t lamp = text.find("DEF Lamp PointLight {");
+  ASSERT_NE(lamp, std::string::npos);
+  text.erase(lamp, text.find('}', lamp) + 1 - lamp);
+  std::ofstream(dir + "/unlit.iv") << text;
+  const test::ProcessResult viewer = runOnTestDisplay(
+      {test::viewerExe(), dir + "/unlit.iv", "--add-light", "--save-scene", dir + "/added.iv",
+       "--screenshot", dir + "/viewer.png", "--size", "320x240"});
+  ASSERT_EQ(viewer.exitCode, 0) << viewer.err;
+  const std::string saved = readText(dir + "/added.iv");
+  EXPECT_EQ(occurrences(saved, "DeepShadowLight"), 1) << saved;
+  EXPECT_NE(saved.find("DEF ShadowLight DeepShadowLight"), std::string::npos) << saved;
+
+  // Against the saved scene rendered with the group inactive (the same light, no shadows):
+  // the glass's shadow on the floor is where the picture is darker and red rather than
+  // white: by seeds/000 eq. 5.3 the alpha 0.5 red glass lets through 50 % of red and 25 % of
+  // green and blue. Counted: pixels whose green and blue drop by more than 20 steps while red
+  // keeps more than 35 % and exceeds green by 20 (a coloured shadow, not rounding); at least
+  // 1 % of the picture (the shadow covers some 4 %).
+  const test::ProcessResult render = test::run(
+      {test::ivshadowExe(), "render", dir + "/added.iv", "-o", dir + "/unshadowed.png", "--size",
+       "320x240", "--transparency", "DELAYED_BLEND", "--set", "ShadowGroup.isActive=FALSE"});
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  const Image unshadowed = readPng(dir + "/unshadowed.png");
+  const Image picture = readPng(dir + "/viewer.png");
+  int tinted = 0;
+  for (int y = 0; y < picture.height(); ++y)
+    for (int x = 0; x < picture.width(); ++x) {
+      const std::uint8_t* lit = unshadowed.pixel(x, y);
+      const std::uint8_t* shown = picture.pixel(x, y);
+      tinted += lit[1] - shown[1] > 20 && lit[2] - shown[2] > 20 && shown[0] > 0.35 * lit[0] &&
+                        shown[0] > shown[1] + 20
+                    ? 1
+                    : 0;
+    }
+  EXPECT_GT(tinted, 320 * 240 / 100) << "no red shadow to be seen";
+}
+
+TEST(ViewerAddShadows, SpotAndDirectionalLightsGetStandInsAndGoOff) {
+  const AddedShadows added = addShadows("shading_features.iv");
+  ASSERT_EQ(added.run.exitCode, 0) << added.run.err;
+  // One deep shadow light per light of the scene: the point light replaced, one standing in
+  // for each of the others, which are kept, switched off, so that nothing is lit twice.
+  EXPECT_EQ(occurrences(added.saved, "DeepShadowLight"), 3) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "PointLight"), 0) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "SpotLight"), 1) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "DirectionalLight"), 1) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "on FALSE"), 2) << added.saved;
+}
+
+}  // namespace
+}  // namespace ivshadow
