@@ -1,9 +1,9 @@
 #include "viewer/MapInspector.h"
 
+#include "callbacks/ShaderConstants.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
-#include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/ShadowGroupElement.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -65,7 +65,7 @@ MapInspector::MapInspector(QWidget* parent) : QDockWidget("Deep shadow map", par
   faces_ = new QComboBox(content);
   for (const char* face : kFaceNames) faces_->addItem(face);
   layer_ = new QSpinBox(content);
-  layer_->setRange(1, 64);
+  layer_->setRange(1, kMaxMapLayers);
   mode_ = new QComboBox(content);
   mode_->addItems({"depth", "visibility"});
   form->addRow("light", lights_);

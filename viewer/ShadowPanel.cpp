@@ -1,5 +1,6 @@
 #include "viewer/ShadowPanel.h"
 
+#include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
@@ -60,7 +61,7 @@ const std::vector<FieldSpec>& lightFields() {
       {kMethod, "nearRadius", {-1.0, 1e6, 0.1, 3}},
       {kMethod, "farRadius", {-1.0, 1e6, 0.1, 3}},
       {kMap, "resolution", {1, 16384, 64, 0}},
-      {kMap, "maxLayers", {1, 64, 1, 0}},
+      {kMap, "maxLayers", {1, kMaxMapLayers, 1, 0}},
       {kMap, "precision", {}},
       {kMap, "filter", {}},
       {kMap, "filterSize", {1, 9, 2, 0}},

@@ -1,5 +1,6 @@
 #include "viewer/ViewerApplication.h"
 
+#include "callbacks/ShaderConstants.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "ivshadow/DeepShadowStatistics.h"
@@ -49,10 +50,11 @@ InspectRequest parseInspect(const std::string& text) {
     request.visibility = parts.size() == 4 && parts[3] == "visibility";
   }
   if (!ok || request.light.isEmpty() || request.face < 0 || request.layer < 1 ||
-      request.layer > 64) {
+      request.layer > kMaxMapLayers) {
     throw InputError("--inspect '" + text +
                      "': error: expected LIGHT:FACE:LAYER[:visibility|:depth] with FACE one of +x "
-                     "-x +y -y +z -z and LAYER from 1 to 64, e.g. Lamp:-z:1");
+                     "-x +y -y +z -z and LAYER from 1 to " + std::to_string(kMaxMapLayers) +
+                         ", e.g. Lamp:-z:1");
   }
   return request;
 }
