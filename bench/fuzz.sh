@@ -54,7 +54,7 @@ for harness in "${harnesses[@]}"; do
   seed "$harness" "$corpus"
   mkdir -p "$findings"
   log=$build/$harness.log
-  "$build/fuzz/$harness" "$corpus" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=20 \
+  "$build/bin/$harness" "$corpus" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=20 \
     -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || true
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   found=$(find "$findings" -type f | wc -l)

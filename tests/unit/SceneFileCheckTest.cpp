@@ -118,6 +118,18 @@ TEST(SceneFileCheck, FilesIncludingThemselvesDirectlyOrThroughOthersAreRefused) 
   EXPECT_EQ(checkError(twice), "") << "including one file twice is no cycle";
 }
 
+// Found by SceneReaderFuzzer: a File naming a directory made the check read a directory.
+TEST(SceneFileCheck, AFileNodeNamingADirectoryIsLeftToCoinsMessage) {
+  init();
+  const std::string path = write("directory.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \".\" }\n}\n");
+  EXPECT_EQ(checkError(path), "");
+  try {
+    loadScene(path);
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(path + ":", 0), 0u) << error.what();
+  }
+}
+
 TEST(SceneFileCheck, BinaryFilesAreLeftToCoin) {
   const std::string binary = write("binary.iv", "#Inventor V2.1 binary\n" + std::string(3000, '{'));
   EXPECT_EQ(checkError(binary), "");
