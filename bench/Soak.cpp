@@ -75,13 +75,20 @@ int main(int argc, char** argv) {
   int width = 160, height = 120;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const bool more = i + 1 < args.size();
-    if (args[i] == "--frames" && more) frames = std::stol(args[++i]);
-    else if (args[i] == "--contexts" && more) contexts = std::stol(args[++i]);
-    else if (args[i] == "--set" && more) assignments.push_back(args[++i]);
-    else if (args[i] == "--move" && more) move = args[++i];
-    else if (args[i] == "--size" && more) std::sscanf(args[++i].c_str(), "%dx%d", &width, &height);
-    else if (scenePath.empty() && args[i][0] != '-') scenePath = args[i];
-    else return usage();
+    if (args[i] == "--frames" && more)
+      frames = std::stol(args[++i]);
+    else if (args[i] == "--contexts" && more)
+      contexts = std::stol(args[++i]);
+    else if (args[i] == "--set" && more)
+      assignments.push_back(args[++i]);
+    else if (args[i] == "--move" && more)
+      move = args[++i];
+    else if (args[i] == "--size" && more)
+      std::sscanf(args[++i].c_str(), "%dx%d", &width, &height);
+    else if (scenePath.empty() && args[i][0] != '-')
+      scenePath = args[i];
+    else
+      return usage();
   }
   init();
   std::vector<std::pair<long, long>> samples;
@@ -108,7 +115,8 @@ int main(int argc, char** argv) {
     FieldAssignment::parse(text).apply(scene.root.get(), scenePath);
   const ViewSetup view =
       ViewSetup::prepare(scene.root.get(), SbViewportRegion(short(width), short(height)));
-  auto* light = move.empty() ? nullptr : dynamic_cast<SoDeepShadowLight*>(SoNode::getByName(move.c_str()));
+  auto* light =
+      move.empty() ? nullptr : dynamic_cast<SoDeepShadowLight*>(SoNode::getByName(move.c_str()));
   if (!move.empty() && light == nullptr) {
     std::cerr << "no DeepShadowLight named " << move << '\n';
     return 2;

@@ -2,8 +2,8 @@
 // against the three nodes, followed by the light's settings resolution that every frame
 // runs on whatever the fields hold.
 #include "fuzz/FuzzInput.h"
-#include "nodes/DeepShadowSettings.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "nodes/DeepShadowSettings.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 

@@ -19,8 +19,7 @@ void quiet(const SoError*, void*) {}
 }  // namespace
 
 std::string writeInput(const std::uint8_t* data, std::size_t size, const char* suffix) {
-  const std::string path =
-      "/dev/shm/ivshadow-fuzz-" + std::to_string(::getpid()) + suffix;
+  const std::string path = "/dev/shm/ivshadow-fuzz-" + std::to_string(::getpid()) + suffix;
   std::ofstream(path, std::ios::binary | std::ios::trunc)
       .write(reinterpret_cast<const char*>(data), std::streamsize(size));
   return path;

@@ -10,8 +10,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const bool png = data[0] & 1;
-  const std::string path =
-      ivshadow::fuzz::writeInput(data + 1, size - 1, png ? ".png" : ".pfm");
+  const std::string path = ivshadow::fuzz::writeInput(data + 1, size - 1, png ? ".png" : ".pfm");
   try {
     if (png) {
       ivshadow::readPng(path);

@@ -45,8 +45,10 @@ cc_glglue_offscreen_data create(unsigned int, unsigned int) {
   offscreen->context = EglHeadlessContext::create(error);
   restore(display, context, draw, read);
   if (!offscreen->context) {
-    SoDebugError::postWarning("ivshadow", "no offscreen GL context for Coin (NURBS shapes "
-                                          "give no triangles): %s", error.c_str());
+    SoDebugError::postWarning("ivshadow",
+                              "no offscreen GL context for Coin (NURBS shapes "
+                              "give no triangles): %s",
+                              error.c_str());
     return nullptr;
   }
   return offscreen.release();

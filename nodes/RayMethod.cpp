@@ -101,13 +101,11 @@ void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
     light.model = map.model;
     lights.push_back(light);
   }
-  const std::size_t traced =
-      casters.scene()
-          ? traceScreenShadows(*casters.scene(), layers, layerCount, lights, visibility_)
-          : 0;
+  const std::size_t traced = casters.scene() ? traceScreenShadows(*casters.scene(), layers,
+                                                                  layerCount, lights, visibility_)
+                                             : 0;
   const auto tracedAt = std::chrono::steady_clock::now();
-  rays.upload(layers, int(layerCount), visibility_,
-              visibility_.empty() ? 0 : int(lights.size()));
+  rays.upload(layers, int(layerCount), visibility_, visibility_.empty() ? 0 : int(lights.size()));
   traced_ = key;
   traceValid_ = true;
   statistics.raysTraced = traced;

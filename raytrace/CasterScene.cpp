@@ -55,7 +55,8 @@ void shadowFilter(const RTCFilterFunctionNArguments* args) {
 // reference into world space) after the extraction measured them.
 void measureBounds(SceneTriangles& casters) {
   casters.bounds.makeEmpty();
-  for (const TriangleVertex& vertex : casters.vertices) casters.bounds.extendBy(SbVec3f(vertex.position));
+  for (const TriangleVertex& vertex : casters.vertices)
+    casters.bounds.extendBy(SbVec3f(vertex.position));
 }
 
 }  // namespace
@@ -131,10 +132,10 @@ glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& nor
   const double length = glm::length(toLight);
   if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(1.0f);
   const float magnitude = std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)});
-  const float extent = casters_.bounds.isEmpty()
-                           ? float(length)
-                           : std::min(float(length), (casters_.bounds.getMax() -
-                                                      casters_.bounds.getMin()).length());
+  const float extent =
+      casters_.bounds.isEmpty()
+          ? float(length)
+          : std::min(float(length), (casters_.bounds.getMax() - casters_.bounds.getMin()).length());
   const float offset = 1e-5f * std::max(magnitude, extent);
   const float side = glm::dot(normal, to - from) >= 0.0f ? 1.0f : -1.0f;
   const float normalLength = glm::length(normal);

@@ -3,9 +3,9 @@
 #include "scene/CoinMessageCapture.h"
 #include "scene/InputError.h"
 
+#include <Inventor/SoInput.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
-#include <Inventor/SoInput.h>
 #include <Inventor/fields/SoField.h>
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/lists/SoPathList.h>
@@ -107,9 +107,9 @@ void FieldAssignment::apply(SoNode* root, const std::string& sceneName) const {
     const bool leftOver = parsed && input.read(rest);
     if (!parsed || leftOver || !fieldPtr->set(value.c_str())) {
       fieldPtr->set(previous.getString());
-      const std::string detail = leftOver ? "'" + std::string(rest.getString()) +
-                                                "' follows the value"
-                                          : capture.firstError().text;
+      const std::string detail = leftOver
+                                     ? "'" + std::string(rest.getString()) + "' follows the value"
+                                     : capture.firstError().text;
       throw InputError(where + "cannot parse '" + value + "' as " +
                        fieldPtr->getTypeId().getName().getString() + " for " + node + "." + field +
                        (detail.empty() ? "" : " (" + detail + ")"));

@@ -2,6 +2,7 @@
 
 #include "scene/SceneTriangles.h"
 
+#include <Inventor/SoPath.h>
 #include <Inventor/elements/SoCoordinateElement.h>
 #include <Inventor/elements/SoLazyElement.h>
 #include <Inventor/elements/SoMaterialBindingElement.h>
@@ -10,7 +11,6 @@
 #include <Inventor/elements/SoTextureCoordinateElement.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/fields/SoMFInt32.h>
-#include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedShape.h>
 #include <Inventor/nodes/SoNonIndexedShape.h>
@@ -96,8 +96,7 @@ std::string nonIndexedDefect(const SoNonIndexedShape* shape, const Counts& count
 
 // An index array checked against what it indexes: -1 ends a face, line or strip; anything
 // else must lie in 0..count-1.
-std::string indexDefect(const SoMFInt32& indices, const char* name, long count,
-                        const char* what) {
+std::string indexDefect(const SoMFInt32& indices, const char* name, long count, const char* what) {
   for (int i = 0; i < indices.getNum(); ++i) {
     const long index = indices[i];
     if (index == -1) continue;
@@ -123,8 +122,7 @@ std::string indexedDefect(SoCallbackAction* action, const SoIndexedShape* shape,
   SoState* state = action->getState();
   // The other arrays are only read under an indexed binding, and only when the shape gives
   // them values (otherwise Coin uses coordIndex, or generates normals itself).
-  const bool explicitMaterials =
-      shape->materialIndex.getNum() > 0 && shape->materialIndex[0] != -1;
+  const bool explicitMaterials = shape->materialIndex.getNum() > 0 && shape->materialIndex[0] != -1;
   if (boundIndexed(SoMaterialBindingElement::get(state)) && explicitMaterials)
     if (std::string defect =
             indexDefect(shape->materialIndex, "materialIndex", counts.materials, "materials");
@@ -158,8 +156,7 @@ std::string shapeDefect(SoCallbackAction* action, const SoShape* shape) {
   return {};
 }
 
-SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action,
-                                              const SoNode* node) {
+SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action, const SoNode* node) {
   const std::string defect = shapeDefect(action, static_cast<const SoShape*>(node));
   if (defect.empty()) return SoCallbackAction::CONTINUE;
   // Casters are extracted again whenever the scene changes, and by every renderer in the
@@ -168,12 +165,12 @@ SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action,
   static std::set<const SoNode*> warned;
   std::lock_guard<std::mutex> lock(mutex);
   if (warned.insert(node).second)
-    SoDebugError::postWarning("ivshadow", "%s: %s; the shape casts no shadow and the reference "
-                                          "does not draw it",
+    SoDebugError::postWarning("ivshadow",
+                              "%s: %s; the shape casts no shadow and the reference "
+                              "does not draw it",
                               describeNode(node).c_str(), defect.c_str());
   return SoCallbackAction::PRUNE;
 }
-
 
 std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file) {
   struct Found {

@@ -25,13 +25,15 @@ IVSHADOW_INTERNAL std::string shapeDefect(SoCallbackAction* action, const SoShap
 // triangle of it is generated, after one warning per shape and process naming it and the
 // defect ("FaceSet 'Wall': numVertices asks for 7 vertices from index 0; the coordinates hold
 // 3"), and continues with every other shape.
-IVSHADOW_INTERNAL SoCallbackAction::Response skipDefectiveShape(void* data, SoCallbackAction* action,
-                                              const SoNode* node);
+IVSHADOW_INTERNAL SoCallbackAction::Response skipDefectiveShape(void* data,
+                                                                SoCallbackAction* action,
+                                                                const SoNode* node);
 
 // Removes from `root` every shape with a defect, in each place where it has one, so that no
 // renderer, Coin's included, reads past its data (Coin's GL rendering checks some of these
 // counts and not others: a TriangleStripSet asking for 100,000 vertices of three hangs it).
 // Returns one line per removed shape for `file`: "FILE: warning: FaceSet 'Wall': ...; left out".
-IVSHADOW_INTERNAL std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file);
+IVSHADOW_INTERNAL std::vector<std::string> removeDefectiveShapes(SoNode* root,
+                                                                 const std::string& file);
 
 }  // namespace ivshadow

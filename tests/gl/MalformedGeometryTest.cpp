@@ -25,10 +25,10 @@ TEST(MalformedGeometry, DefectiveShapesInAGroupAreLeftOutOfRenderAndReference) {
   const std::string dir = test::outputDir();
   {
     std::ofstream(dir + "/clean.iv") << sceneWith("");
-    std::ofstream(dir + "/defective.iv")
-        << sceneWith("    Coordinate3 { point [ 0 0 0.5, 0.5 0 0.5, 0 0.5 0.5 ] }\n"
-                     "    FaceSet { numVertices 7 }\n    TriangleStripSet { numVertices 100000 }\n"
-                     "    IndexedFaceSet { coordIndex [ 0, 1, 40, -1 ] }");
+    std::ofstream(dir + "/defective.iv") << sceneWith(
+        "    Coordinate3 { point [ 0 0 0.5, 0.5 0 0.5, 0 0.5 0.5 ] }\n"
+        "    FaceSet { numVertices 7 }\n    TriangleStripSet { numVertices 100000 }\n"
+        "    IndexedFaceSet { coordIndex [ 0, 1, 40, -1 ] }");
   }
   for (const std::string command : {"render", "reference"}) {
     SCOPED_TRACE(command);

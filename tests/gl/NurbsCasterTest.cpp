@@ -52,8 +52,8 @@ TEST(NurbsCaster, RenderShowsTheAnalyticShadowOfANurbsPatchWithEachMethod) {
     SCOPED_TRACE(method);
     const std::string out = test::outputDir() + "/" + method + ".png";
     const test::ProcessResult result =
-        test::run({test::ivshadowExe(), "render", test::scenesDir() + "/nurbs_caster.iv", "-o",
-                   out, "--size", "400x400", "--set", "Lamp.method=" + method});
+        test::run({test::ivshadowExe(), "render", test::scenesDir() + "/nurbs_caster.iv", "-o", out,
+                   "--size", "400x400", "--set", "Lamp.method=" + method});
     ASSERT_EQ(result.exitCode, 0) << result.err;
     const std::string failure =
         test::compareWithExpectation(readPng(out), nurbsCasterPicture, kTolerance);

@@ -60,8 +60,9 @@ TEST(AtomicFile, TheInputIsNeverAnOutputWhateverTheSpelling) {
       AtomicFile::checkNotInput(output, dir + "/scene.iv", "the image");
       ADD_FAILURE() << output << " was accepted as an output";
     } catch (const InputError& error) {
-      EXPECT_EQ(std::string(error.what()),
-                output + ": error: cannot write the image over the input file " + dir + "/scene.iv");
+      EXPECT_EQ(
+          std::string(error.what()),
+          output + ": error: cannot write the image over the input file " + dir + "/scene.iv");
     }
   }
   AtomicFile::checkNotInput(dir + "/other.png", dir + "/scene.iv", "the image");

@@ -35,14 +35,14 @@ TEST(CasterScene, LightsFarBeyondFloatLightingRangeStillCastExactShadows) {
   const glm::vec3 floorPoint(0.5f, 0.5f, 0.0f), up(0.0f, 0.0f, 1.0f);
   for (const float height : {10.0f, 1e20f, 1e30f, 3e38f}) {
     SCOPED_TRACE(height);
-    const glm::vec3 through =
-        scene->transmittance(floorPoint, up, glm::vec3(0.5f, 0.5f, height), ShadowColourModel::Monochrome);
+    const glm::vec3 through = scene->transmittance(floorPoint, up, glm::vec3(0.5f, 0.5f, height),
+                                                   ShadowColourModel::Monochrome);
     // Float: exact to the rounding of one multiplication.
     EXPECT_NEAR(through.r, 0.5f, 1e-6f);
     EXPECT_NEAR(through.g, 0.5f, 1e-6f);
     // Off to the side, the ray misses the pane: all the light arrives.
-    const glm::vec3 beside =
-        scene->transmittance(floorPoint, up, glm::vec3(height, 0.5f, 1.0f), ShadowColourModel::Monochrome);
+    const glm::vec3 beside = scene->transmittance(floorPoint, up, glm::vec3(height, 0.5f, 1.0f),
+                                                  ShadowColourModel::Monochrome);
     EXPECT_EQ(beside, glm::vec3(1.0f));
   }
 }

@@ -62,8 +62,9 @@ TEST(SceneFileCheck, HundredThousandNestedSeparatorsAreRefusedBeforeCoinReadsThe
 TEST(SceneFileCheck, NestingCountsAcrossIncludedFiles) {
   write("inner.iv", nested(kMaxSceneNesting - 3));  // 998 braces of its own
   const std::string outer =
-      write("outer.iv", "#Inventor V2.1 ascii\nSeparator {\n  Separator {\n    File { name "
-                        "\"inner.iv\" }\n  }\n}\n");
+      write("outer.iv",
+            "#Inventor V2.1 ascii\nSeparator {\n  Separator {\n    File { name "
+            "\"inner.iv\" }\n  }\n}\n");
   // Two separators and the File's brace above the included file's 998: one too many.
   const std::string error = checkError(outer);
   EXPECT_EQ(error.rfind(test::outputDir() + "/inner.iv:", 0), 0u) << error;
@@ -71,15 +72,16 @@ TEST(SceneFileCheck, NestingCountsAcrossIncludedFiles) {
 }
 
 TEST(SceneFileCheck, LongNamesAreRefusedAtTheirLineAndStringsAreNotNames) {
-  const std::string at = write("name_at_limit.iv", "#Inventor V2.1 ascii\nDEF " +
-                                                       std::string(kMaxSceneTokenLength, 'A') +
-                                                       " Separator { }\n");
+  const std::string at =
+      write("name_at_limit.iv", "#Inventor V2.1 ascii\nDEF " +
+                                    std::string(kMaxSceneTokenLength, 'A') + " Separator { }\n");
   EXPECT_EQ(checkError(at), "");
-  const std::string longer = write("long_name.iv", "#Inventor V2.1 ascii\n\nDEF " +
-                                                       std::string(1000000, 'A') +
-                                                       " Separator { }\n");
-  EXPECT_EQ(checkError(longer), longer + ":3: error: a name or value of 1000000 characters (at "
-                                         "most 1000 are read)");
+  const std::string longer =
+      write("long_name.iv",
+            "#Inventor V2.1 ascii\n\nDEF " + std::string(1000000, 'A') + " Separator { }\n");
+  EXPECT_EQ(checkError(longer), longer +
+                                    ":3: error: a name or value of 1000000 characters (at "
+                                    "most 1000 are read)");
   // A long quoted string (an Info's text, a file name) is a value Coin reads without trouble.
   const std::string info = write("long_string.iv", "#Inventor V2.1 ascii\nInfo { string \"" +
                                                        std::string(50000, 'x') + "\" }\n");
@@ -90,8 +92,9 @@ TEST(SceneFileCheck, UseOfAnOpenDefinitionIsACycleAndOtherUsesAreNot) {
   const std::string cycle = write("cycle.iv",
                                   "#Inventor V2.1 ascii\nDEF A Separator {\n  Separator {\n"
                                   "    USE A\n  }\n}\n");
-  EXPECT_EQ(checkError(cycle), cycle + ":4: error: USE A inside the node DEF A itself (a node "
-                                       "that contains itself cannot be traversed)");
+  EXPECT_EQ(checkError(cycle), cycle +
+                                   ":4: error: USE A inside the node DEF A itself (a node "
+                                   "that contains itself cannot be traversed)");
   // Ordinary instancing: A is closed when it is used, and the inner DEF A (a new definition
   // that hides the open one) is closed before its USE.
   const std::string shared = write("shared.iv",
@@ -107,8 +110,10 @@ TEST(SceneFileCheck, UseOfAnOpenDefinitionIsACycleAndOtherUsesAreNot) {
 }
 
 TEST(SceneFileCheck, FilesIncludingThemselvesDirectlyOrThroughOthersAreRefused) {
-  const std::string a = write("a.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"b.iv\" }\n}\n");
-  const std::string b = write("b.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a.iv\" }\n}\n");
+  const std::string a =
+      write("a.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"b.iv\" }\n}\n");
+  const std::string b =
+      write("b.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a.iv\" }\n}\n");
   EXPECT_EQ(checkError(a), b + ":4: error: File a.iv includes a file that includes it (the scene "
                                "would never end)");
   const std::string twice = write("twice.iv",
@@ -121,7 +126,8 @@ TEST(SceneFileCheck, FilesIncludingThemselvesDirectlyOrThroughOthersAreRefused) 
 // Found by SceneReaderFuzzer: a File naming a directory made the check read a directory.
 TEST(SceneFileCheck, AFileNodeNamingADirectoryIsLeftToCoinsMessage) {
   init();
-  const std::string path = write("directory.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \".\" }\n}\n");
+  const std::string path =
+      write("directory.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \".\" }\n}\n");
   EXPECT_EQ(checkError(path), "");
   try {
     loadScene(path);

@@ -18,8 +18,8 @@ namespace {
 
 struct Case {
   const char* name;
-  const char* shapes;   // after three coordinates (0 0 0, 1 0 0, 0 1 0)
-  const char* defect;   // the expected warning's text after "FILE: warning: "
+  const char* shapes;  // after three coordinates (0 0 0, 1 0 0, 0 1 0)
+  const char* defect;  // the expected warning's text after "FILE: warning: "
 };
 
 // Each shape reads past its data; Coin's generatePrimitives would read (or, for the strip,
@@ -77,8 +77,7 @@ TEST_P(DefectiveShape, IsLeftOutWithOneWarningNamingItAndTheDefect) {
                       << c.shapes << "\n  DEF Good FaceSet { numVertices 3 }\n}\n";
   const LoadedScene scene = loadScene(path);
   ASSERT_EQ(scene.warnings.size(), 1u);
-  EXPECT_EQ(scene.warnings[0],
-            path + ": warning: " + c.defect + "; the shape is left out");
+  EXPECT_EQ(scene.warnings[0], path + ": warning: " + c.defect + "; the shape is left out");
   // Only the valid triangle is left, to be drawn and to cast.
   EXPECT_EQ(countShapes(scene.root.get()), 1);
   EXPECT_EQ(extractShadowCasters(scene.root.get()).triangleCount(), 1u);
@@ -91,11 +90,14 @@ TEST(ShapeValidation, ValidShapesUsingEveryCountAndIndexAreKept) {
   init();
   const std::string path = test::outputDir() + "/valid.iv";
   std::ofstream(path)
-      << "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] }\n"
+      << "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] "
+         "}\n"
          "  FaceSet { numVertices [ 3, -1 ] startIndex 1 }\n"
-         "  TriangleStripSet { numVertices 4 }\n  QuadMesh { verticesPerRow 2 verticesPerColumn 2 }\n"
+         "  TriangleStripSet { numVertices 4 }\n  QuadMesh { verticesPerRow 2 verticesPerColumn 2 "
+         "}\n"
          "  PointSet { numPoints -1 }\n  LineSet { numVertices [ 2, 2 ] }\n"
-         "  MaterialBinding { value PER_VERTEX_INDEXED }\n  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
+         "  MaterialBinding { value PER_VERTEX_INDEXED }\n  Material { diffuseColor [ 1 0 0, 0 1 0 "
+         "] }\n"
          "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 1, 3, 2, -1 ] materialIndex [ 0, 1, 1, -1, "
          "1, 1, 0, -1 ] }\n}\n";
   const LoadedScene scene = loadScene(path);
