@@ -9,6 +9,8 @@
 #include <Inventor/C/glue/gl.h>
 #include <Inventor/errors/SoDebugError.h>
 
+#include <dlfcn.h>
+
 #include <memory>
 #include <mutex>
 #include <string>
@@ -16,34 +18,94 @@
 namespace ivshadow {
 namespace {
 
+// GLX, reached only when the process already has it (the viewer draws through SoQt's GLX
+// widget): a headless process must not load libGL's GLX for this. Null when absent.
+struct GlxEntryPoints {
+  using GetPointer = void* (*)();
+  using GetDrawable = unsigned long (*)();
+  using MakeCurrent = int (*)(void*, unsigned long, unsigned long, void*);
+  GetPointer currentContext = nullptr, currentDisplay = nullptr;
+  GetDrawable currentDraw = nullptr, currentRead = nullptr;
+  MakeCurrent makeCurrent = nullptr;
+
+  static const GlxEntryPoints& get() {
+    static const GlxEntryPoints entries = [] {
+      GlxEntryPoints e;
+      if (dlsym(RTLD_DEFAULT, "glXMakeContextCurrent") == nullptr) return e;
+      e.currentContext = reinterpret_cast<GetPointer>(dlsym(RTLD_DEFAULT, "glXGetCurrentContext"));
+      e.currentDisplay = reinterpret_cast<GetPointer>(dlsym(RTLD_DEFAULT, "glXGetCurrentDisplay"));
+      e.currentDraw = reinterpret_cast<GetDrawable>(dlsym(RTLD_DEFAULT, "glXGetCurrentDrawable"));
+      e.currentRead =
+          reinterpret_cast<GetDrawable>(dlsym(RTLD_DEFAULT, "glXGetCurrentReadDrawable"));
+      e.makeCurrent = reinterpret_cast<MakeCurrent>(dlsym(RTLD_DEFAULT, "glXMakeContextCurrent"));
+      return e;
+    }();
+    return entries;
+  }
+  bool present() const {
+    return currentContext && currentDisplay && currentDraw && currentRead && makeCurrent;
+  }
+};
+
+// The context current on the calling thread, through EGL or GLX, to be made current again.
+struct CurrentContext {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+  EGLSurface draw = EGL_NO_SURFACE;
+  EGLSurface read = EGL_NO_SURFACE;
+  void* glxDisplay = nullptr;
+  void* glxContext = nullptr;
+  unsigned long glxDraw = 0, glxRead = 0;
+
+  static CurrentContext now() {
+    CurrentContext c;
+    c.display = eglGetCurrentDisplay();
+    c.context = eglGetCurrentContext();
+    c.draw = eglGetCurrentSurface(EGL_DRAW);
+    c.read = eglGetCurrentSurface(EGL_READ);
+    const GlxEntryPoints& glx = GlxEntryPoints::get();
+    if (glx.present() && glx.currentContext() != nullptr) {
+      c.glxContext = glx.currentContext();
+      c.glxDisplay = glx.currentDisplay();
+      c.glxDraw = glx.currentDraw();
+      c.glxRead = glx.currentRead();
+    }
+    return c;
+  }
+
+  // libglvnd lets a thread have one current context across EGL and GLX: a GLX context must
+  // be released before an EGL one is made current.
+  void releaseGlx() const {
+    if (glxContext != nullptr) GlxEntryPoints::get().makeCurrent(glxDisplay, 0, 0, nullptr);
+  }
+
+  void reinstate() const {
+    if (context == EGL_NO_CONTEXT || glxContext != nullptr) {
+      if (EGLDisplay current = eglGetCurrentDisplay(); current != EGL_NO_DISPLAY)
+        eglMakeCurrent(current, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      if (glxContext != nullptr)
+        GlxEntryPoints::get().makeCurrent(glxDisplay, glxDraw, glxRead, glxContext);
+      return;
+    }
+    eglMakeCurrent(display, draw, read, context);
+  }
+};
+
 struct OffscreenContext {
   std::unique_ptr<EglHeadlessContext> context;
   // What was current on the thread before make_current, put back by reinstate_previous.
-  EGLDisplay previousDisplay = EGL_NO_DISPLAY;
-  EGLContext previousContext = EGL_NO_CONTEXT;
-  EGLSurface previousDraw = EGL_NO_SURFACE;
-  EGLSurface previousRead = EGL_NO_SURFACE;
+  CurrentContext previous;
 };
-
-void restore(EGLDisplay display, EGLContext context, EGLSurface draw, EGLSurface read) {
-  if (context == EGL_NO_CONTEXT) {
-    if (EGLDisplay current = eglGetCurrentDisplay(); current != EGL_NO_DISPLAY)
-      eglMakeCurrent(current, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    return;
-  }
-  eglMakeCurrent(display, draw, read, context);
-}
 
 cc_glglue_offscreen_data create(unsigned int, unsigned int) {
   // The size does not matter: the tessellator draws nothing, it only needs a current context.
   // Creating one makes it current, so the caller's context is put back straight away.
-  const EGLDisplay display = eglGetCurrentDisplay();
-  const EGLContext context = eglGetCurrentContext();
-  const EGLSurface draw = eglGetCurrentSurface(EGL_DRAW), read = eglGetCurrentSurface(EGL_READ);
+  const CurrentContext caller = CurrentContext::now();
   std::string error;
   auto offscreen = std::make_unique<OffscreenContext>();
+  caller.releaseGlx();
   offscreen->context = EglHeadlessContext::create(error);
-  restore(display, context, draw, read);
+  caller.reinstate();
   if (!offscreen->context) {
     SoDebugError::postWarning("ivshadow",
                               "no offscreen GL context for Coin (NURBS shapes "
@@ -56,30 +118,25 @@ cc_glglue_offscreen_data create(unsigned int, unsigned int) {
 
 SbBool makeCurrent(cc_glglue_offscreen_data data) {
   auto* offscreen = static_cast<OffscreenContext*>(data);
-  offscreen->previousDisplay = eglGetCurrentDisplay();
-  offscreen->previousContext = eglGetCurrentContext();
-  offscreen->previousDraw = eglGetCurrentSurface(EGL_DRAW);
-  offscreen->previousRead = eglGetCurrentSurface(EGL_READ);
+  offscreen->previous = CurrentContext::now();
+  offscreen->previous.releaseGlx();
   return offscreen->context->makeCurrent() ? TRUE : FALSE;
 }
 
 void reinstatePrevious(cc_glglue_offscreen_data data) {
-  auto* offscreen = static_cast<OffscreenContext*>(data);
-  restore(offscreen->previousDisplay, offscreen->previousContext, offscreen->previousDraw,
-          offscreen->previousRead);
+  static_cast<OffscreenContext*>(data)->previous.reinstate();
 }
 
 void destruct(cc_glglue_offscreen_data data) {
   // Coin destroys a shape's context with the shape, typically while a renderer's own context
   // is current; the EGL wrapper releases whatever is current when it dies, so the caller's
   // context is made current again afterwards.
-  const EGLDisplay display = eglGetCurrentDisplay();
-  const EGLContext context = eglGetCurrentContext();
-  const EGLSurface draw = eglGetCurrentSurface(EGL_DRAW), read = eglGetCurrentSurface(EGL_READ);
+  const CurrentContext caller = CurrentContext::now();
   auto* offscreen = static_cast<OffscreenContext*>(data);
   const bool wasCurrent = offscreen->context && offscreen->context->isCurrent();
+  caller.releaseGlx();
   delete offscreen;
-  if (!wasCurrent) restore(display, context, draw, read);
+  if (!wasCurrent) caller.reinstate();
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
+#include <Inventor/elements/SoGLLazyElement.h>
 #include <Inventor/nodes/SoFragmentShader.h>
 #include <Inventor/nodes/SoShaderParameter.h>
 #include <Inventor/nodes/SoShaderProgram.h>
@@ -80,6 +81,14 @@ const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVa
   node(variant)->GLRender(action);
   const unsigned int program = currentProgram();
   if (program == 0) return nullptr;
+  // Coin fills in coin_light_model and coin_two_sided_lighting when the program is bound (from
+  // the state here, above the group's shape hints) and afterwards only when the GL state it
+  // last sent changes. A frame (or Coin's delayed pass) that begins with two-sided lighting
+  // already on in GL therefore left the program's uniform at 0 for every shape below, and
+  // back faces went unlit. Forgetting what was sent makes Coin send both again, and update
+  // this program's uniforms with them, at the next shape.
+  SoGLLazyElement::getInstance(action->getState())
+      ->reset(action->getState(), SoLazyElement::LIGHT_MODEL_MASK | SoLazyElement::TWOSIDE_MASK);
   auto* perContext = locations_.get(SoGLCacheContextElement::get(action->getState()), [] {
     return std::make_unique<std::array<UniformLocations, kShadingVariants>>();
   });

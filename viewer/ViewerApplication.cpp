@@ -1,6 +1,7 @@
 #include "viewer/ViewerApplication.h"
 
 #include "callbacks/ShaderConstants.h"
+#include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "ivshadow/DeepShadowStatistics.h"
@@ -12,6 +13,7 @@
 #include "viewer/ViewerWindow.h"
 
 #include <Inventor/Qt/SoQt.h>
+#include <Inventor/nodes/SoSeparator.h>
 
 #include <QApplication>
 #include <QImage>
@@ -53,8 +55,8 @@ InspectRequest parseInspect(const std::string& text) {
       request.layer > kMaxMapLayers) {
     throw InputError("--inspect '" + text +
                      "': error: expected LIGHT:FACE:LAYER[:visibility|:depth] with FACE one of +x "
-                     "-x +y -y +z -z and LAYER from 1 to " + std::to_string(kMaxMapLayers) +
-                         ", e.g. Lamp:-z:1");
+                     "-x +y -y +z -z and LAYER from 1 to " +
+                     std::to_string(kMaxMapLayers) + ", e.g. Lamp:-z:1");
   }
   return request;
 }
@@ -114,6 +116,15 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   ViewerWindow window;
   SoQt::init(&window);
   init();
+  // NURBS shapes give the casters' SoCallbackAction triangles only through an offscreen GL
+  // context, which Coin's GLX code cannot make under Mesa's software GLX.
+  installCoinOffscreenContexts();
+  // Coin's render caches draw a scene's delayed transparent shapes wrongly lit by a point
+  // light once a cache has been built (from about the third unchanged frame): the viewer's
+  // frames then differed from the first frame, which `ivshadow render` draws, by up to 40
+  // steps on every transparent shape (docs/KNOWN_ISSUES.md). Without caches every frame is
+  // drawn as the first; Coin keeps its vertex buffers, so large shapes stay on the GPU.
+  SoSeparator::setNumRenderCaches(0);
   // The live figures show each pass's GPU time.
   setPassTiming(true);
   window.createViewer();

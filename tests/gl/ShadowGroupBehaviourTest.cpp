@@ -11,6 +11,7 @@
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/SoPath.h>
+#include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoOrthographicCamera.h>
@@ -71,6 +72,50 @@ TEST(ShadowGroup, WithoutDeepShadowLightsItLooksLikeCoin) {
   }
   EXPECT_GE(share, 0.99) << "images in " << outputDir();
   EXPECT_LE(worst, 8) << "images in " << outputDir();
+}
+
+// A half-transparent square seen from behind (its vertices run clockwise seen from the camera
+// and the light), under shape hints that turn two-sided lighting on: its back face is lit as a
+// front face would be. Expected, from LitPlane's geometry (the square spans the 2 x 2 plane):
+// alpha 0.5 over the black background gives half of Lambert's 255 / sqrt(1 + r^2) at distance
+// r from the light's foot. In every frame and under both of Coin's blending types: the second
+// frame, and every frame under DELAYED_BLEND, once lit the back face by nothing (the shading
+// program's coin_two_sided_lighting stayed 0 when GL already had two-sided lighting on).
+TEST(ShadowGroup, TwoSidedLightingHoldsInEveryFrameAndTransparencyType) {
+  init();
+  const std::string text =
+      "#Inventor V2.1 ascii\nSeparator {\n"
+      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+      "  TransparentShadowGroup {\n"
+      "    DeepShadowLight { location 0 0 1 }\n"
+      "    ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType UNKNOWN_SHAPE_TYPE }\n"
+      "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0"
+      " transparency 0.5 }\n"
+      "    Coordinate3 { point [ -1 -1 0, -1 1 0, 1 1 0, 1 -1 0 ] }\n"
+      "    FaceSet { numVertices 4 }\n"
+      "  }\n}\n";
+  SoSeparator* root = readIv(text);
+  const LitPlane lambert;
+  const auto halfLit = [&lambert](int x, int y) {
+    Expectation e = lambert(x, y);
+    for (double& channel : e.rgb) channel *= 0.5;
+    return e;
+  };
+  for (const auto type : {SoGLRenderAction::BLEND, SoGLRenderAction::DELAYED_BLEND}) {
+    std::string error;
+    auto renderer = OffscreenRenderer::create(LitPlane::kSize, LitPlane::kSize, error);
+    ASSERT_TRUE(renderer) << error;
+    renderer->action().setTransparencyType(type);
+    for (int frame = 1; frame <= 3; ++frame) {
+      renderer->render(root);
+      // The group lights per pixel: Lambert's value to within 8-bit rounding of the shade
+      // and of the blend, one step.
+      const std::string failure = compareWithExpectation(renderer->read(), halfLit, 1.0);
+      EXPECT_TRUE(failure.empty())
+          << "transparency type " << int(type) << ", frame " << frame << ": " << failure;
+    }
+  }
+  root->unref();
 }
 
 TEST(ShadowGroup, DeepShadowLightOutsideAGroupIsAPointLight) {

@@ -60,7 +60,7 @@ TEST(ViewerAddShadows, TheLampOfGlassOverFloorCastsTheGlasssRedShadowInsteadOfAS
 
   // Independent of the viewer's code: the file edited by hand as a user would, its lamp
   // made a DeepShadowLight and everything after the camera put in a shadow group, rendered
-  // headlessly. DELAYED_BLEND is what the viewer's deep shadow scenes match (ViewerSmoke).
+  // headlessly with the viewer's transparency type.
   const std::string dir = test::outputDir();
   std::string text = readText(test::scenesDir() + "/glass_over_floor.iv");
   const std::string lamp = "DEF Lamp PointLight {";
@@ -71,7 +71,7 @@ TEST(ViewerAddShadows, TheLampOfGlassOverFloorCastsTheGlasssRedShadowInsteadOfAS
   std::ofstream(dir + "/by_hand.iv") << text;
   const test::ProcessResult render =
       test::run({test::ivshadowExe(), "render", dir + "/by_hand.iv", "-o", dir + "/by_hand.png",
-                 "--size", "320x240", "--transparency", "DELAYED_BLEND"});
+                 "--size", "320x240", "--transparency", test::kViewerTransparency});
   ASSERT_EQ(render.exitCode, 0) << render.err;
   // Same tolerance as the other viewer-against-render comparisons of deep shadow scenes.
   test::expectMostlyEqual(added.picture, readPng(dir + "/by_hand.png"), 2, 0.999,
@@ -114,9 +114,10 @@ TEST(ViewerAddShadows, ASceneWithoutLightsGetsOneWhoseShadowIsSeen) {
   // green and blue. Counted: pixels whose green and blue drop by more than 20 steps while red
   // keeps more than 35 % and exceeds green by 20 (a coloured shadow, not rounding); at least
   // 1 % of the picture (the shadow covers some 4 %).
-  const test::ProcessResult render = test::run(
-      {test::ivshadowExe(), "render", dir + "/added.iv", "-o", dir + "/unshadowed.png", "--size",
-       "320x240", "--transparency", "DELAYED_BLEND", "--set", "ShadowGroup.isActive=FALSE"});
+  const test::ProcessResult render =
+      test::run({test::ivshadowExe(), "render", dir + "/added.iv", "-o", dir + "/unshadowed.png",
+                 "--size", "320x240", "--transparency", test::kViewerTransparency, "--set",
+                 "ShadowGroup.isActive=FALSE"});
   ASSERT_EQ(render.exitCode, 0) << render.err;
   const Image unshadowed = readPng(dir + "/unshadowed.png");
   const Image picture = readPng(dir + "/viewer.png");

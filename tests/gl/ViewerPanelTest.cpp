@@ -44,8 +44,8 @@ struct PanelRun {
 constexpr double kSameShare = 0.999;
 constexpr double kChangedShare = 0.90;
 
-PanelRun runPanel(const std::string& sceneName, const std::vector<std::string>& assignments,
-                  const std::string& transparency) {
+PanelRun runPanel(const std::string& sceneName, const std::vector<std::string>& assignments) {
+  const std::string transparency = test::kViewerTransparency;
   const std::string dir = test::outputDir();
   const std::string scene = test::scenesDir() + "/" + sceneName;
   std::vector<std::string> viewer = {
@@ -69,7 +69,7 @@ PanelRun runPanel(const std::string& sceneName, const std::vector<std::string>& 
   PanelRun run;
   run.headless = readPng(dir + "/headless.png");
   test::ProcessResult shown;
-  run.viewer = test::viewerScreenshot(viewer, dir + "/viewer.png", run.headless, kSameShare, shown);
+  run.viewer = test::viewerScreenshot(viewer, dir + "/viewer.png", shown);
   EXPECT_EQ(shown.exitCode, 0) << shown.out << shown.err;
   run.headlessUnchanged = readPng(dir + "/headless_unchanged.png");
   run.figures = readJson(dir + "/figures.json");
@@ -97,8 +97,7 @@ TEST(ViewerPanel, LightFieldsSetThroughThePanelRenderAsHeadlessWithTheSameFields
       runPanel("coloured_shadows.iv",
                {"Lamp.method=MAP", "Lamp.resolution=256", "Lamp.maxLayers=2",
                 "Lamp.colorModel=POWER", "Lamp.shadowColor=MONOCHROME", "Lamp.precision=HALF",
-                "Lamp.filter=PCF", "Lamp.filterSize=5", "Lamp.bias=3"},
-               "DELAYED_BLEND");
+                "Lamp.filter=PCF", "Lamp.filterSize=5", "Lamp.bias=3"});
   test::expectMostlyEqual(run.viewer, run.headless, 2, kSameShare, "viewer against headless");
   EXPECT_LT(test::shareWithin(run.viewer, run.headlessUnchanged, 2), kChangedShare)
       << "the settings made no visible difference";
@@ -110,7 +109,7 @@ TEST(ViewerPanel, LightFieldsSetThroughThePanelRenderAsHeadlessWithTheSameFields
 }
 
 TEST(ViewerPanel, SwitchingTheGroupOffThroughThePanelRendersAsHeadless) {
-  const PanelRun run = runPanel("coloured_shadows.iv", {"Scene.isActive=FALSE"}, "DELAYED_BLEND");
+  const PanelRun run = runPanel("coloured_shadows.iv", {"Scene.isActive=FALSE"});
   test::expectMostlyEqual(run.viewer, run.headless, 2, kSameShare, "viewer against headless");
   EXPECT_LT(test::shareWithin(run.viewer, run.headlessUnchanged, 2), kChangedShare);
   // An inactive group builds no map.
@@ -118,10 +117,9 @@ TEST(ViewerPanel, SwitchingTheGroupOffThroughThePanelRendersAsHeadless) {
 }
 
 TEST(ViewerPanel, PeelingAndLightLocationSetThroughThePanelRenderAsHeadless) {
-  const PanelRun run = runPanel("peeled_glasses.iv",
-                                {"Lamp.method=MAP", "Glasses.method=FRONT_TO_BACK",
-                                 "Glasses.maxPasses=2", "Lamp.location=-1 1 3"},
-                                "DELAYED_BLEND");
+  const PanelRun run =
+      runPanel("peeled_glasses.iv", {"Lamp.method=MAP", "Glasses.method=FRONT_TO_BACK",
+                                     "Glasses.maxPasses=2", "Lamp.location=-1 1 3"});
   test::expectMostlyEqual(run.viewer, run.headless, 2, kSameShare, "viewer against headless");
   EXPECT_LT(test::shareWithin(run.viewer, run.headlessUnchanged, 2), kChangedShare);
   expectSameMaps(run);
@@ -175,10 +173,11 @@ TEST(ViewerPanel, AddLightWrapsASceneWithoutDeepShadowsInAGroupWithALight) {
 
   // The viewer shows what a headless render of the saved file shows: the new light, not the
   // headlight (same tolerance as the panel tests).
-  ASSERT_EQ(test::run({test::ivshadowExe(), "render", dir + "/wrapped.iv", "-o",
-                       dir + "/headless.png", "--size", "320x240", "--transparency", "BLEND"})
-                .exitCode,
-            0);
+  ASSERT_EQ(
+      test::run({test::ivshadowExe(), "render", dir + "/wrapped.iv", "-o", dir + "/headless.png",
+                 "--size", "320x240", "--transparency", test::kViewerTransparency})
+          .exitCode,
+      0);
   const Image viewer = readPng(dir + "/viewer.png");
   test::expectMostlyEqual(viewer, readPng(dir + "/headless.png"), 2, kSameShare,
                           "viewer against headless render of the saved scene");

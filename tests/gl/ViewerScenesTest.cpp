@@ -10,12 +10,10 @@ namespace ivshadow {
 namespace {
 
 // Every scene of the library opens in the viewer and shows what `ivshadow render` shows.
-// The viewer is compared with BLEND, which SoQt's viewer matches exactly for plain Coin
-// transparency (measured: coloured_glasses.iv identical). Measured worst cases: 2.6 % of
-// the pixels off by more than 2 steps in coloured_shadows.iv (transparent surfaces inside
-// the shadow group come out as under DELAYED_BLEND) and 2.4 % in foliage.iv (the examiner's
-// automatic near/far planes keep the far edge of the floor that the file's camera clips);
-// 96 % leaves a little room above those and still fails a scene that does not load or draw.
+// Measured: 13 of the 15 scenes identical, stress_1m and peeled_glasses within 1 step; 99.9 %
+// within 2 steps leaves room for a few edge pixels. foliage.iv differs in 2.4 % of its pixels:
+// the examiner's automatic near and far planes keep the far edge of the floor that the file's
+// camera clips; 97 % for it.
 TEST(ViewerScenes, EveryBundledSceneLoadsAndMatchesTheHeadlessRender) {
   const std::string dir = test::outputDir();
   int scenes = 0;
@@ -27,16 +25,16 @@ TEST(ViewerScenes, EveryBundledSceneLoadsAndMatchesTheHeadlessRender) {
     const std::string headless = dir + "/" + name + "_headless.png";
     const test::ProcessResult render =
         test::run({test::ivshadowExe(), "render", entry.path().string(), "-o", headless, "--size",
-                   "160x120", "--transparency", "BLEND"});
+                   "160x120", "--transparency", test::kViewerTransparency});
     ASSERT_EQ(render.exitCode, 0) << name << ": " << render.err;
     const Image expected = readPng(headless);
     test::ProcessResult viewer;
     const Image image = test::viewerScreenshot(
         {test::viewerExe(), "--screenshot", shot, "--size", "160x120", entry.path().string()}, shot,
-        expected, 0.96, viewer);
+        viewer);
     ASSERT_EQ(viewer.exitCode, 0) << name << ": " << viewer.err;
     EXPECT_GT(test::shareLit(image), 0.1) << name << ": the screenshot is (nearly) blank";
-    test::expectMostlyEqual(image, expected, 2, 0.96, name);
+    test::expectMostlyEqual(image, expected, 2, name == "foliage" ? 0.97 : 0.999, name);
   }
   EXPECT_GE(scenes, 14);
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 namespace ivshadow {
 namespace {
 
@@ -12,21 +14,18 @@ using test::shareWithin;
 
 // The viewer's screenshot (its own back buffer, read before the swap) against `ivshadow
 // render` of the same file and size: the same Coin, the same nodes, drawn through GLX in the
-// viewer and through EGL headlessly. DELAYED_BLEND is what the viewer's deep shadow scenes
-// match (measured; plain Coin transparency in the viewer matches BLEND, see
-// ViewerScenesTest.cpp); both scenes here are compared that way.
-void expectViewerMatchesHeadless(const std::string& sceneName, double share) {
+// viewer and through EGL headlessly, with the viewer's transparency type.
+void expectViewerMatchesHeadless(const std::string& scene, double share) {
   const std::string dir = test::outputDir();
   const std::string shot = dir + "/viewer.png", headless = dir + "/headless.png";
   const test::ProcessResult render =
-      test::run({test::ivshadowExe(), "render", test::scenesDir() + "/" + sceneName, "-o", headless,
-                 "--size", "320x240", "--transparency", "DELAYED_BLEND"});
+      test::run({test::ivshadowExe(), "render", scene, "-o", headless, "--size", "320x240",
+                 "--transparency", test::kViewerTransparency});
   ASSERT_EQ(render.exitCode, 0) << render.err;
   const Image b = readPng(headless);
   test::ProcessResult viewer;
-  const Image a = test::viewerScreenshot({test::viewerExe(), "--screenshot", shot, "--size",
-                                          "320x240", test::scenesDir() + "/" + sceneName},
-                                         shot, b, share, viewer);
+  const Image a = test::viewerScreenshot(
+      {test::viewerExe(), "--screenshot", shot, "--size", "320x240", scene}, shot, viewer);
   ASSERT_EQ(viewer.exitCode, 0) << viewer.out << viewer.err;
   EXPECT_NE(viewer.out.find("wrote " + shot), std::string::npos) << viewer.out;
   ASSERT_EQ(a.width(), 320);
@@ -42,13 +41,50 @@ void expectViewerMatchesHeadless(const std::string& sceneName, double share) {
 
 TEST(ViewerSmoke, ScreenshotOfAnOpaqueSceneEqualsTheHeadlessRender) {
   // Same rasteriser, same state: every pixel agrees to within rounding.
-  expectViewerMatchesHeadless("no_camera.iv", 0.999);
+  expectViewerMatchesHeadless(test::scenesDir() + "/no_camera.iv", 0.999);
 }
 
 TEST(ViewerSmoke, ScreenshotShowsTheDeepShadowsOfTheHeadlessRender) {
   // The deep shadow group works in the viewer's GLX context as in EGL. Measured: 2 of 76,800
   // pixels differ (where transparent surfaces meet); 99.9 % leaves room for a few more.
-  expectViewerMatchesHeadless("coloured_shadows.iv", 0.999);
+  expectViewerMatchesHeadless(test::scenesDir() + "/coloured_shadows.iv", 0.999);
+}
+
+TEST(ViewerSmoke, PlainCoinGlassUnderAPointLightLooksAsInItsFirstFrame) {
+  // No node of ours: Coin's own point light over transparent panes in front of a wall. The
+  // screenshot is a frame after several unchanged ones; with Coin's render caches on, those
+  // frames lit the panes differently from the first (3.8 % of the pixels up to 40 steps off,
+  // docs/KNOWN_ISSUES.md), and `ivshadow render` draws a first frame. Measured with the
+  // caches off: 2 of 76,800 pixels differ (where panes meet); 99.9 % leaves room for a few.
+  const std::string scene = test::outputDir() + "/plain_glass.iv";
+  std::ofstream(scene) << R"(#Inventor V2.1 ascii
+Separator {
+  PerspectiveCamera {
+    position 0 -7.5 5.2 orientation 1 0 0 0.93 heightAngle 0.7 nearDistance 1 farDistance 30
+  }
+  PointLight { location 0.4 -0.6 4.2 intensity 0.95 }
+  Separator {
+    Material { diffuseColor 0.85 0.87 0.9 }
+    Coordinate3 { point [ -4 3 0, 4 3 0, 4 3 4, -4 3 4 ] }
+    FaceSet { numVertices 4 }
+  }
+  Separator {
+    Transform { translation -0.3 0.2 1.9 rotation 1 0 0 0.35 }
+    Coordinate3 { point [ -0.55 -0.7 0, 0.55 -0.7 0, 0.55 0.7 0, -0.55 0.7 0 ] }
+    Separator {
+      Material { diffuseColor 0.95 0.1 0.1 specularColor 0.6 0.6 0.6 shininess 0.8 transparency 0.5 }
+      Translation { translation -0.9 0.3 0 }
+      FaceSet { numVertices 4 }
+    }
+    Separator {
+      Material { diffuseColor 0.1 0.9 0.2 specularColor 0.6 0.6 0.6 shininess 0.8 transparency 0.5 }
+      Translation { translation 0.1 -0.35 0.25 }
+      FaceSet { numVertices 4 }
+    }
+  }
+}
+)";
+  expectViewerMatchesHeadless(scene, 0.999);
 }
 
 TEST(ViewerSmoke, BadSceneInScreenshotModeExitsTwoWithoutScreenshot) {

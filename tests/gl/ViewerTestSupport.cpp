@@ -81,18 +81,10 @@ void expectMostlyEqual(const Image& actual, const Image& expected, int tolerance
 }
 
 Image viewerScreenshot(const std::vector<std::string>& arguments, const std::string& shot,
-                       const Image& expected, double share, ProcessResult& result) {
-  Image image;
-  for (int attempt = 0; attempt < kScreenshotAttempts; ++attempt) {
-    if (attempt > 0) std::cerr << shot << " is off the headless render; taking it again\n";
-    result = runOnTestDisplay(arguments);
-    if (result.exitCode != 0 || !fileExists(shot)) return Image();
-    image = readPng(shot);
-    if (image.width() != expected.width() || image.height() != expected.height() ||
-        shareWithin(image, expected, 2) >= share)
-      return image;
-  }
-  return image;
+                       ProcessResult& result) {
+  result = runOnTestDisplay(arguments);
+  if (result.exitCode != 0 || !fileExists(shot)) return Image();
+  return readPng(shot);
 }
 
 }  // namespace ivshadow::test

@@ -18,19 +18,15 @@ std::string testDisplay();
 ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
                                const std::vector<std::string>& environment = {});
 
+// The transparency type SoQt's viewers render with (SoQtViewer's SoGLRenderAction reports
+// BLEND): `ivshadow render --transparency` with it draws what the viewer shows.
+constexpr const char* kViewerTransparency = "BLEND";
+
 // Runs the viewer with `arguments`, which make it save a screenshot to `shot`, and returns the
-// screenshot. When fewer than `share` of its pixels lie within 2 steps of `expected`, the
-// screenshot is taken again, up to kScreenshotAttempts times in all, and the last one is
-// returned: the viewer's scripted screenshot of plain Coin transparency sometimes shows its
-// transparent shapes blended twice (docs/KNOWN_ISSUES.md; measured on a loaded two-core
-// machine: 12 of 24 screenshots of coloured_shadows.iv with the group off, always the same
-// 3.76 % of the pixels up to 40 steps off, with or without the light dragger). Eight attempts
-// bring the chance of eight bad pictures in a row to 1/256 at that worst rate; a viewer
-// that really draws differently gives eight such screenshots and fails the caller's comparison
-// all the same. `result` receives the (last) run's exit status and output.
-constexpr int kScreenshotAttempts = 8;
+// screenshot (an empty image when the viewer failed or wrote none). `result` receives the
+// run's exit status and output.
 Image viewerScreenshot(const std::vector<std::string>& arguments, const std::string& shot,
-                       const Image& expected, double share, ProcessResult& result);
+                       ProcessResult& result);
 
 // The whole content of a file ("" when it cannot be read).
 std::string readText(const std::string& path);

@@ -24,38 +24,28 @@ std::string scene() {
 
 // Grabs the screen until the 3D area shows what `ivshadow render` draws at the area's size
 // (frames keep coming while the viewer settles), and expects that. The viewer starts without
-// its light dragger, which would be drawn over the scene. Two renders are candidates: the
-// interactive viewer's frames matched `--transparency BLEND` to 1 step in some runs and
-// DELAYED_BLEND (what --screenshot's second frame matches, ViewerSmoke) in others, the same
-// throughout a run; they differ by up to 60 steps on the glass sphere (docs/KNOWN_ISSUES.md).
-// Any other picture (a wrong size, a cut-off or stale area, the panel) matches neither.
-// 99.5 % within 2 steps leaves room for a few edge pixels.
+// its light dragger, which would be drawn over the scene. Any other picture (a wrong size, a
+// cut-off or stale area, the panel) differs. 99.5 % within 2 steps leaves room for a few edge
+// pixels.
 void expectViewShowsTheHeadlessRender(InteractiveViewer& viewer, const ScreenRect& area) {
   const std::string dir = test::outputDir();
   const std::string size = std::to_string(area.width) + "x" + std::to_string(area.height);
-  std::vector<Image> candidates;
-  for (const char* transparency : {"BLEND", "DELAYED_BLEND"}) {
-    const std::string path = dir + "/headless_" + transparency + ".png";
-    const test::ProcessResult render =
-        test::run({test::ivshadowExe(), "render", scene(), "-o", path, "--size", size,
-                   "--transparency", transparency});
-    ASSERT_EQ(render.exitCode, 0) << render.err;
-    candidates.push_back(readPng(path));
-  }
+  const std::string path = dir + "/headless.png";
+  const test::ProcessResult render =
+      test::run({test::ivshadowExe(), "render", scene(), "-o", path, "--size", size,
+                 "--transparency", test::kViewerTransparency});
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  const Image expected = readPng(path);
   Image view;
-  std::size_t best = 0;
   for (int i = 0; i < 120; ++i) {
     view = test::crop(test::grabScreen(viewer.display()), area);
-    best = test::shareWithin(view, candidates[0], 2) >= test::shareWithin(view, candidates[1], 2)
-               ? 0
-               : 1;
-    if (test::shareWithin(view, candidates[best], 2) >= 0.995) break;
+    if (test::shareWithin(view, expected, 2) >= 0.995) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
   }
-  test::expectMostlyEqual(view, candidates[best], 2, 0.995,
+  test::expectMostlyEqual(view, expected, 2, 0.995,
                           "the 3D area on screen against ivshadow render");
   // The whole screen, for a failure's reader: what was around (or over) the area.
-  if (test::shareWithin(view, candidates[best], 2) < 0.995) {
+  if (test::shareWithin(view, expected, 2) < 0.995) {
     writePng(dir + "/screen.png", test::grabScreen(viewer.display()));
   }
 }
