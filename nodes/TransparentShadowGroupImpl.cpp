@@ -14,6 +14,7 @@
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SoPath.h>
+#include <Inventor/annex/FXViz/nodes/SoShadowSpotLight.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetMatrixAction.h>
 #include <Inventor/elements/SoCacheElement.h>
@@ -79,6 +80,15 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
     castingLight(*entry.light, group, matrixAction.getMatrix(), where);
     map.kind = where.kind;
     map.position = where.position;
+    // Coin's SoShadowSpotLight bounds its shadow map by nearDistance and farDistance (-1:
+    // fitted): the cube map's radii, the same meaning.
+    if (entry.light->isOfType(SoShadowSpotLight::getClassTypeId())) {
+      const auto& spot = static_cast<const SoShadowSpotLight&>(*entry.light);
+      map.settings.nearRadius = spot.nearDistance.getValue();
+      map.settings.farRadius = spot.farDistance.getValue();
+      if (!(map.settings.nearRadius < map.settings.farRadius) && map.settings.farRadius > 0.0f)
+        map.settings.nearRadius = map.settings.farRadius = -1.0f;
+    }
     if (map.kind != LightKind::Directional) fitMapRange(map, casters.bounds);
     int method = map.settings.method;
     if (method == SoDeepShadowLight::AUTO_METHOD) {

@@ -176,6 +176,27 @@ TEST_P(LightTypes, DeepShadowLightsOnlyLeavesOrdinaryLightsUnshadowed) {
                 "castingLights DEEP_SHADOW_LIGHTS");
 }
 
+// Coin's SoShadowSpotLight bounds its map by nearDistance: a glass nearer the light than that
+// (0.5 away, nearDistance 0.6) is not in the map and casts nothing, so the floor is lit
+// unfiltered inside the cone. The map's own bound: RAYS and the reference trace every caster.
+TEST(LightTypesMap, ShadowSpotLightsNearDistanceBoundsTheMap) {
+  const std::string text = sceneWith(
+      "ShadowSpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.7 nearDistance 0.6 }",
+      "method MAP", 0.3);
+  const Image image = renderIv(text, ShadowScene::kSize);
+  const std::string failure = compareWithExpectation(
+      image,
+      pictureOf(0.3, {LightTerm{[](double x, double y, std::array<double, 3>& rgb) {
+                  const double r = std::hypot(x, y), edge = std::tan(0.7);
+                  if (std::abs(r - edge) < kMargin) return false;
+                  const double term = r > edge ? 0.0 : 255.0 / std::sqrt(1.0 + r * r);
+                  for (double& channel : rgb) channel += term;
+                  return true;
+                }}}),
+      kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, LightTypes,
                          ::testing::Values(Method::Map, Method::Rays, Method::Reference),
                          methodName);
