@@ -8,6 +8,8 @@ set(IVSHADOW_PUBLIC_HEADERS
   include/ivshadow/Export.h
   include/ivshadow/IvShadowInit.h
   include/ivshadow/SoDeepShadowLight.h
+  include/ivshadow/SoDeepShadowSpotLight.h
+  include/ivshadow/SoDeepShadowDirectionalLight.h
   include/ivshadow/SoTransparentShadowGroup.h
   include/ivshadow/SoPeelingSeparator.h
   include/ivshadow/DeepShadowStatistics.h

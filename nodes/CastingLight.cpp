@@ -11,6 +11,7 @@
 #include <Inventor/nodes/SoSpotLight.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -81,13 +82,11 @@ bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
 
 ShadowColourModel castingColourModel(const SoLight& light, const SoTransparentShadowGroup& group,
                                      bool colouredCasters) {
-  if (light.isOfType(SoDeepShadowLight::getClassTypeId())) {
-    const auto& deep = static_cast<const SoDeepShadowLight&>(light);
-    return shadowColourModel(deep.shadowColor.getValue(), deep.colorModel.getValue(),
-                             colouredCasters);
-  }
-  return shadowColourModel(group.shadowColor.getValue(), group.colorModel.getValue(),
-                           colouredCasters);
+  // Only the colour fields are read: no texture size limits them.
+  const DeepShadowSettings settings =
+      castingSettings(const_cast<SoLight&>(light), const_cast<SoTransparentShadowGroup&>(group),
+                      std::numeric_limits<int>::max());
+  return shadowColourModel(settings.shadowColor, settings.colorModel, colouredCasters);
 }
 
 }  // namespace ivshadow

@@ -29,8 +29,8 @@ struct CastingLight {
 IVSHADOW_INTERNAL bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
                                     const SbMatrix& toGroup, CastingLight& out);
 
-// How the light's shadow filters light: a SoDeepShadowLight by its own shadowColor and
-// colorModel fields, an ordinary light by the group's.
+// How the light's shadow filters light: by the shadowColor and colorModel it casts with
+// (castingSettings, nodes/DeepShadowSettings.h).
 IVSHADOW_INTERNAL ShadowColourModel castingColourModel(const SoLight& light,
                                                        const SoTransparentShadowGroup& group,
                                                        bool colouredCasters);

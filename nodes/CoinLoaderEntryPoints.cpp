@@ -8,7 +8,9 @@
 // names to the plugin library; the So-prefixed functions are the nodes' own, and the
 // unprefixed ones below forward to them. Each registers the node (without the prefix, as
 // Coin's own nodes are registered), so both spellings then resolve to the same type.
+#include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 
@@ -23,6 +25,12 @@ struct IVSHADOW_API DeepShadowLight {
 struct IVSHADOW_API PeelingSeparator {
   static void initClass();
 };
+struct IVSHADOW_API DeepShadowSpotLight {
+  static void initClass();
+};
+struct IVSHADOW_API DeepShadowDirectionalLight {
+  static void initClass();
+};
 
 void TransparentShadowGroup::initClass() {
   SoTransparentShadowGroup::initClass();
@@ -32,4 +40,10 @@ void DeepShadowLight::initClass() {
 }
 void PeelingSeparator::initClass() {
   SoPeelingSeparator::initClass();
+}
+void DeepShadowSpotLight::initClass() {
+  SoDeepShadowSpotLight::initClass();
+}
+void DeepShadowDirectionalLight::initClass() {
+  SoDeepShadowDirectionalLight::initClass();
 }

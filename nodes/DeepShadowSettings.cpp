@@ -1,7 +1,9 @@
 #include "nodes/DeepShadowSettings.h"
 
 #include "callbacks/ShaderConstants.h"
+#include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 
 #include <Inventor/errors/SoDebugError.h>
@@ -58,8 +60,10 @@ float finiteOr(const SoNode& light, const char* field, float value, float fallba
   return fallback;
 }
 
-// The map's radii: a SoDeepShadowLight's fields; a group's ordinary lights fit them.
-void readRadii(const SoDeepShadowLight& light, DeepShadowSettings& s) {
+// The map's radii: a light's nearRadius and farRadius fields; a group's ordinary lights fit
+// them.
+template <class Light>
+void readRadii(const Light& light, DeepShadowSettings& s) {
   s.nearRadius = finiteOr(light, "nearRadius", light.nearRadius.getValue(), -1.0f);
   s.farRadius = finiteOr(light, "farRadius", light.farRadius.getValue(), -1.0f);
   if (s.nearRadius > 0.0f && s.farRadius > 0.0f && s.nearRadius >= s.farRadius) {
@@ -106,6 +110,21 @@ DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize)
 
 DeepShadowSettings resolveSettings(SoTransparentShadowGroup& group, int maxTextureSize) {
   return resolveFields(group, maxTextureSize);
+}
+
+DeepShadowSettings castingSettings(SoLight& light, SoTransparentShadowGroup& group,
+                                   int maxTextureSize) {
+  if (light.isOfType(SoDeepShadowLight::getClassTypeId()))
+    return resolveFields(static_cast<SoDeepShadowLight&>(light), maxTextureSize);
+  if (light.isOfType(SoDeepShadowSpotLight::getClassTypeId()))
+    return resolveFields(static_cast<SoDeepShadowSpotLight&>(light), maxTextureSize);
+  DeepShadowSettings s = resolveFields(group, maxTextureSize);
+  if (light.isOfType(SoDeepShadowDirectionalLight::getClassTypeId())) {
+    const auto& own = static_cast<SoDeepShadowDirectionalLight&>(light);
+    s.shadowColor = own.shadowColor.getValue();
+    s.colorModel = own.colorModel.getValue();
+  }
+  return s;
 }
 
 ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {

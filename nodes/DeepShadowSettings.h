@@ -3,7 +3,10 @@
 #include "ivshadow/Export.h"
 #include "scene/ShadowTypes.h"
 
+class SoDeepShadowDirectionalLight;
 class SoDeepShadowLight;
+class SoDeepShadowSpotLight;
+class SoLight;
 class SoTransparentShadowGroup;
 
 namespace ivshadow {
@@ -27,6 +30,12 @@ struct DeepShadowSettings {
 IVSHADOW_INTERNAL DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
 // The same for the group's fields, which ordinary lights in it cast with (radii fitted).
 IVSHADOW_INTERNAL DeepShadowSettings resolveSettings(SoTransparentShadowGroup& group,
+                                                     int maxTextureSize);
+// The settings `light` casts with in `group`: its own fields for a SoDeepShadowLight,
+// SoDeepShadowSpotLight or SoDeepShadowDirectionalLight (the latter's colour fields over the
+// group's others), the group's for any other light.
+IVSHADOW_INTERNAL DeepShadowSettings castingSettings(SoLight& light,
+                                                     SoTransparentShadowGroup& group,
                                                      int maxTextureSize);
 
 // How the shadow of a light with these shadowColor and colorModel fields

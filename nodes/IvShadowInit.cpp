@@ -1,6 +1,8 @@
 #include "ivshadow/IvShadowInit.h"
 
+#include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 
@@ -11,6 +13,8 @@ namespace ivshadow {
 void init() {
   SoDB::init();
   SoDeepShadowLight::initClass();
+  SoDeepShadowSpotLight::initClass();
+  SoDeepShadowDirectionalLight::initClass();
   SoTransparentShadowGroup::initClass();
   SoPeelingSeparator::initClass();
 }

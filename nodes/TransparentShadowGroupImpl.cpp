@@ -14,9 +14,9 @@
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SoPath.h>
-#include <Inventor/annex/FXViz/nodes/SoShadowSpotLight.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetMatrixAction.h>
+#include <Inventor/annex/FXViz/nodes/SoShadowSpotLight.h>
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/elements/SoDepthBufferElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
@@ -73,8 +73,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   for (std::size_t slot = 0; slot < lights.size(); ++slot) {
     const GroupContents::Light& entry = lights[slot];
     MapState& map = context.maps[slot];
-    map.settings = entry.deep ? resolveSettings(*entry.deep, pass.maxTextureSize())
-                              : resolveSettings(group, pass.maxTextureSize());
+    map.settings = castingSettings(*entry.light, group, pass.maxTextureSize());
     matrixAction.apply(entry.path.get());
     CastingLight where;
     castingLight(*entry.light, group, matrixAction.getMatrix(), where);

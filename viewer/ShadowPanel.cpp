@@ -1,7 +1,9 @@
 #include "viewer/ShadowPanel.h"
 
 #include "callbacks/ShaderConstants.h"
+#include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
@@ -55,6 +57,9 @@ const std::vector<FieldSpec>& lightFields() {
       {kLight, "intensity", {0.0, 1.0, 0.05, 2}},
       {kLight, "color", {0.0, 1.0, 0.05, 2}},
       {kLight, "location", {-1e5, 1e5, 0.1, 3}},
+      {kLight, "direction", {-1.0, 1.0, 0.05, 2}},
+      {kLight, "cutOffAngle", {0.0, 1.5708, 0.05, 3}},
+      {kLight, "dropOffRate", {0.0, 1.0, 0.05, 2}},
       {kMethod, "method", {}},
       {kMethod, "shadowColor", {}},
       {kMethod, "colorModel", {}},
@@ -70,18 +75,22 @@ const std::vector<FieldSpec>& lightFields() {
   return fields;
 }
 
-// The group's own fields, then the shadow fields it gives its ordinary lights: the light's
-// specs for the fields of the same names.
+// `first`, then the specs of lightFields() that `type`'s nodes have a field for: the lights'
+// kinds, and the group's shadow fields for its ordinary lights, share the specs of the fields
+// of the same names.
+std::vector<FieldSpec> fieldsOfType(SoType type, std::vector<FieldSpec> first) {
+  auto* probe = static_cast<SoNode*>(type.createInstance());
+  probe->ref();
+  for (const FieldSpec& spec : lightFields())
+    if (probe->getField(spec.name) != nullptr) first.push_back(spec);
+  probe->unref();
+  return first;
+}
+
 const std::vector<FieldSpec>& groupFields() {
-  static const std::vector<FieldSpec> fields = [] {
-    std::vector<FieldSpec> out = {{kMethod, "isActive", {}}, {kMethod, "castingLights", {}}};
-    SoTransparentShadowGroup* probe = new SoTransparentShadowGroup;
-    probe->ref();
-    for (const FieldSpec& spec : lightFields())
-      if (probe->getField(spec.name) != nullptr) out.push_back(spec);
-    probe->unref();
-    return out;
-  }();
+  static const std::vector<FieldSpec> fields =
+      fieldsOfType(SoTransparentShadowGroup::getClassTypeId(),
+                   {{kMethod, "isActive", {}}, {kMethod, "castingLights", {}}});
   return fields;
 }
 
@@ -95,7 +104,14 @@ const std::vector<FieldSpec>& peelingFields() {
 }
 
 const std::vector<FieldSpec>& fieldsOf(const SoNode* node) {
-  if (node->isOfType(SoDeepShadowLight::getClassTypeId())) return lightFields();
+  static const std::vector<FieldSpec> point = fieldsOfType(SoDeepShadowLight::getClassTypeId(), {});
+  static const std::vector<FieldSpec> spot =
+      fieldsOfType(SoDeepShadowSpotLight::getClassTypeId(), {});
+  static const std::vector<FieldSpec> directional =
+      fieldsOfType(SoDeepShadowDirectionalLight::getClassTypeId(), {});
+  if (node->isOfType(SoDeepShadowLight::getClassTypeId())) return point;
+  if (node->isOfType(SoDeepShadowSpotLight::getClassTypeId())) return spot;
+  if (node->isOfType(SoDeepShadowDirectionalLight::getClassTypeId())) return directional;
   if (node->isOfType(SoPeelingSeparator::getClassTypeId())) return peelingFields();
   return groupFields();
 }
@@ -259,6 +275,8 @@ void ShadowPanel::setScene(SoSeparator* root, const std::string& sceneName) {
     };
     forEachNodeOfType<SoTransparentShadowGroup>(root, add);
     forEachNodeOfType<SoDeepShadowLight>(root, add);
+    forEachNodeOfType<SoDeepShadowSpotLight>(root, add);
+    forEachNodeOfType<SoDeepShadowDirectionalLight>(root, add);
     forEachNodeOfType<SoPeelingSeparator>(root, add);
   }
   nodes_->setEnabled(!entries_.empty());

@@ -51,7 +51,8 @@ constexpr double kMargin = 0.02;  // two pixels either side of every edge
 
 // A light above the floor's centre at height 1 (point, or spot pointing down): the glass of
 // half size s at height 0.5 shadows the floor where max(|x|, |y|) < 2 s.
-LightTerm overheadLight(double s, double intensity, double cutOffAngle, double dropOffRate) {
+LightTerm overheadLight(double s, double intensity, double cutOffAngle, double dropOffRate,
+                        std::array<double, 3> shadow = kRedShadow) {
   return {[=](double x, double y, std::array<double, 3>& rgb) {
     const double extent = std::max(std::abs(x), std::abs(y));
     if (std::abs(extent - 2.0 * s) < kMargin) return false;
@@ -66,20 +67,21 @@ LightTerm overheadLight(double s, double intensity, double cutOffAngle, double d
       term = r > edge ? 0.0 : term * std::pow(1.0 / length, 128.0 * dropOffRate);
     }
     for (int c = 0; c < 3; ++c)
-      rgb[std::size_t(c)] += 255.0 * term * (extent < 2.0 * s ? kRedShadow[std::size_t(c)] : 1.0);
+      rgb[std::size_t(c)] += 255.0 * term * (extent < 2.0 * s ? shadow[std::size_t(c)] : 1.0);
     return true;
   }};
 }
 
 // A directional light along (dx, 0, -1): Lambert's cosine 1 / sqrt(1 + dx^2) everywhere, and
 // the glass's shadow is its square moved by dx * 0.5 along x (similar triangles).
-LightTerm obliqueLight(double s, double intensity, double dx) {
+LightTerm obliqueLight(double s, double intensity, double dx,
+                       std::array<double, 3> shadow = kRedShadow) {
   return {[=](double x, double y, std::array<double, 3>& rgb) {
     const double shifted = std::max(std::abs(x - dx * 0.5), std::abs(y));
     if (std::abs(shifted - s) < kMargin) return false;
     const double term = intensity / std::sqrt(1.0 + dx * dx);
     for (int c = 0; c < 3; ++c)
-      rgb[std::size_t(c)] += 255.0 * term * (shifted < s ? kRedShadow[std::size_t(c)] : 1.0);
+      rgb[std::size_t(c)] += 255.0 * term * (shifted < s ? shadow[std::size_t(c)] : 1.0);
     return true;
   }};
 }
@@ -185,16 +187,36 @@ TEST(LightTypesMap, ShadowSpotLightsNearDistanceBoundsTheMap) {
       "method MAP", 0.3);
   const Image image = renderIv(text, ShadowScene::kSize);
   const std::string failure = compareWithExpectation(
-      image,
-      pictureOf(0.3, {LightTerm{[](double x, double y, std::array<double, 3>& rgb) {
-                  const double r = std::hypot(x, y), edge = std::tan(0.7);
-                  if (std::abs(r - edge) < kMargin) return false;
-                  const double term = r > edge ? 0.0 : 255.0 / std::sqrt(1.0 + r * r);
-                  for (double& channel : rgb) channel += term;
-                  return true;
-                }}}),
+      image, pictureOf(0.3, {LightTerm{[](double x, double y, std::array<double, 3>& rgb) {
+                         const double r = std::hypot(x, y), edge = std::tan(0.7);
+                         if (std::abs(r - edge) < kMargin) return false;
+                         const double term = r > edge ? 0.0 : 255.0 / std::sqrt(1.0 + r * r);
+                         for (double& channel : rgb) channel += term;
+                         return true;
+                       }}}),
       kTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
+}
+
+// The glass by eq. 5.1 (shadowColor MONOCHROME): every channel passes 1 - alpha = 0.5.
+const std::array<double, 3> kGreyShadow = transmittance(kRedGlass, ColourModel::Monochrome);
+
+TEST_P(LightTypes, GroupFieldsAreTheOrdinaryLightsShadowFields) {
+  expectPicture("PointLight { location 0 0 1 }", 0.3,
+                {overheadLight(0.3, 1.0, 0.0, 0.0, kGreyShadow)}, "shadowColor MONOCHROME");
+}
+
+TEST_P(LightTypes, DeepShadowSpotLightCastsWithItsOwnFields) {
+  // Its own shadowColor over the group's (COLORED).
+  expectPicture(
+      "DeepShadowSpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.5"
+      " shadowColor MONOCHROME }",
+      0.15, {overheadLight(0.15, 1.0, 0.5, 0.0, kGreyShadow)}, "shadowColor COLORED");
+}
+
+TEST_P(LightTypes, DeepShadowDirectionalLightCastsWithItsOwnFields) {
+  expectPicture("DeepShadowDirectionalLight { direction 1 0 -1 shadowColor MONOCHROME }", 0.3,
+                {obliqueLight(0.3, 1.0, 1.0, kGreyShadow)}, "shadowColor COLORED");
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, LightTypes,

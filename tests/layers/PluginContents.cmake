@@ -15,7 +15,10 @@ endif()
 set(problems "")
 foreach(name SoTransparentShadowGroup::initClass TransparentShadowGroup::initClass
              SoDeepShadowLight::initClass DeepShadowLight::initClass
-             SoPeelingSeparator::initClass PeelingSeparator::initClass "ivshadow::init[(]"
+             SoPeelingSeparator::initClass PeelingSeparator::initClass
+             SoDeepShadowSpotLight::initClass DeepShadowSpotLight::initClass
+             SoDeepShadowDirectionalLight::initClass DeepShadowDirectionalLight::initClass
+             "ivshadow::init[(]"
              ivshadow::collectDeepShadowStatistics ivshadow::collectPeelStatistics)
   if(NOT exported MATCHES "${name}")
     string(APPEND problems "  not exported: ${name}\n")

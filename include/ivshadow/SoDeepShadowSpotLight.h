@@ -1,0 +1,63 @@
+#pragma once
+
+#include "ivshadow/Export.h"
+
+#include <Inventor/fields/SoSFEnum.h>
+#include <Inventor/fields/SoSFFloat.h>
+#include <Inventor/fields/SoSFInt32.h>
+#include <Inventor/nodes/SoSpotLight.h>
+
+/*!
+  \class SoDeepShadowSpotLight
+  A spot light with its own shadow fields: inside a SoTransparentShadowGroup it casts with
+  these instead of the group's (docs/LIGHTS.md), as SoDeepShadowLight does for a point light.
+  Outside a group it is a SoSpotLight. The fields mean what SoDeepShadowLight's of the same
+  names mean; the map is a cube map at the location, of which only the cone is lit.
+
+  FILE FORMAT/DEFAULTS:
+  \code
+    DeepShadowSpotLight {
+        on TRUE
+        intensity 1
+        color 1 1 1
+        location 0 0 1
+        direction 0 0 -1
+        dropOffRate 0
+        cutOffAngle 0.785398
+        resolution 512
+        maxLayers 4
+        nearRadius -1
+        farRadius -1
+        bias 1
+        shadowColor AUTO
+        colorModel SATURATE
+        precision FLOAT
+        filter NONE
+        filterSize 3
+        method AUTO
+    }
+  \endcode
+*/
+class IVSHADOW_API SoDeepShadowSpotLight : public SoSpotLight {
+  typedef SoSpotLight inherited;
+  SO_NODE_HEADER(SoDeepShadowSpotLight);
+
+ public:
+  static void initClass();
+  SoDeepShadowSpotLight();
+
+  SoSFInt32 resolution;
+  SoSFInt32 maxLayers;
+  SoSFFloat nearRadius;
+  SoSFFloat farRadius;
+  SoSFFloat bias;
+  SoSFEnum shadowColor;  //!< SoDeepShadowLight::ShadowColor
+  SoSFEnum colorModel;   //!< SoDeepShadowLight::ColorModel
+  SoSFEnum precision;    //!< SoDeepShadowLight::Precision
+  SoSFEnum filter;       //!< SoDeepShadowLight::Filter
+  SoSFInt32 filterSize;
+  SoSFEnum method;  //!< SoDeepShadowLight::Method
+
+ protected:
+  ~SoDeepShadowSpotLight() override;
+};
