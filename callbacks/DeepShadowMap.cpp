@@ -67,12 +67,17 @@ GlTexture makeArray(GLenum format, int size, int layers) {
   return texture;
 }
 
+// Scratch layers per face: maxLayers and the closing layer.
+int scratchLayers(const MapRequest& request) {
+  return request.layers + 1;
+}
+
 }  // namespace
 
 void DeepShadowMap::allocateScratch(const MapRequest& request) {
   const int size = request.resolution;
-  scratchDepth_ = makeArray(GL_R32F, size, 6 * request.layers);
-  scratchVisibility_ = makeArray(visibilityFormat(request), size, 6 * request.layers);
+  scratchDepth_ = makeArray(GL_R32F, size, 6 * scratchLayers(request));
+  scratchVisibility_ = makeArray(visibilityFormat(request), size, 6 * scratchLayers(request));
   for (int i = 0; i < 2; ++i) {
     peelDepth_[i] = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(peelDepth_[i].get(), 1, GL_R32F, size, size);
@@ -104,7 +109,7 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
   for (int face = 0; face < 6; ++face) {
     const int count = result.layersUsed[std::size_t(face)];
     if (count == 0) continue;
-    const int from = face * request.layers, to = result.firstLayer[std::size_t(face)];
+    const int from = face * scratchLayers(request), to = result.firstLayer[std::size_t(face)];
     glCopyImageSubData(scratchDepth_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, from, depth_.get(),
                        GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, size, size, count);
     glCopyImageSubData(scratchVisibility_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, from,
@@ -112,10 +117,10 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
   }
   bytes_ = std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(std::max(total, 1)) *
            bytesPerLayerTexel(request);
-  peakBytes_ =
-      std::uint64_t(size) * std::uint64_t(size) *
-          (std::uint64_t(6 * request.layers) * bytesPerLayerTexel(request) + 2u * (4u + 16u) + 4u) +
-      bytes_;
+  peakBytes_ = std::uint64_t(size) * std::uint64_t(size) *
+                   (std::uint64_t(6 * scratchLayers(request)) * bytesPerLayerTexel(request) +
+                    2u * (4u + 16u) + 4u) +
+               bytes_;
   scratchDepth_.reset();
   scratchVisibility_.reset();
   for (int i = 0; i < 2; ++i) {
@@ -150,6 +155,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   program.setInt("uPreviousVisibility", 1);
   program.setInt("uColourModel", static_cast<int>(request.colourModel));
   program.setVec3("uLightPosition", request.light);
+  program.setInt("uOpaqueOnly", 0);
 
   const glm::vec3 light(request.light[0], request.light[1], request.light[2]);
   for (int face = 0; face < 6; ++face) {
@@ -161,9 +167,10 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
     glClearTexImage(peelDepth_[0].get(), 0, GL_RED, GL_FLOAT, nothingPeeled);
     glClearTexImage(peelVisibility_[0].get(), 0, GL_RGBA, GL_FLOAT, clear);
     int read = 0;
+    bool lightLeft = false;  // the last pass stored a surface that lets light through
     for (int k = 0; k < request.layers; ++k) {
       const int write = 1 - read;
-      const int layer = face * request.layers + k;
+      const int layer = face * scratchLayers(request) + k;
       glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, scratchDepth_.get(), 0, layer);
       glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0, layer);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
@@ -185,7 +192,35 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       result.passes[std::size_t(face)] = k + 1;
       if (flags[0] != 0u) result.layersUsed[std::size_t(face)] = k + 1;
       read = write;
-      if (flags[1] == 0u) break;
+      lightLeft = flags[1] != 0u;
+      if (!lightLeft) break;
+    }
+    if (lightLeft && result.passes[std::size_t(face)] == request.layers) {
+      // The layers ran out with surfaces that let light through in the last one, and more may
+      // lie behind it: the closing layer takes the nearest opaque surface behind the last
+      // one (visibility 0 from there on), so light never passes an opaque body behind the
+      // surfaces the map could not keep.
+      const int closing = face * scratchLayers(request) + request.layers;
+      const int write = 1 - read;
+      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, scratchDepth_.get(), 0, closing);
+      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0,
+                                     closing);
+      glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
+      glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
+      const float farthest = 0.0f;
+      glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farthest);
+      const GLuint zero[2] = {0u, 0u};
+      glNamedBufferSubData(flagsBuffer, 0, sizeof(zero), zero);
+      glBindTextureUnit(0, peelDepth_[read].get());
+      glBindTextureUnit(1, peelVisibility_[read].get());
+      program.setInt("uOpaqueOnly", 1);
+      casters.draw(program, 2);
+      program.setInt("uOpaqueOnly", 0);
+      GLuint flags[2] = {0u, 0u};
+      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+      glGetNamedBufferSubData(flagsBuffer, 0, sizeof(flags), flags);
+      ++result.passes[std::size_t(face)];
+      if (flags[0] != 0u) result.layersUsed[std::size_t(face)] = request.layers + 1;
     }
   }
   keepUsedLayers(request, result);

@@ -24,6 +24,7 @@ struct MapRequest {
 };
 
 struct MapBuildResult {
+  // Layers stored per face: at most maxLayers, plus the closing layer (DeepShadowMap).
   std::array<int, 6> layersUsed{};
   std::array<int, 6> passes{};
   std::array<int, 6> firstLayer{};  // where each face's layers start in the stored arrays
@@ -31,10 +32,13 @@ struct MapBuildResult {
 
 // One cube deep shadow map (seeds/000 §5): for each face and peeled layer, the distance of the
 // surface along the face axis (32-bit) and the visibility after it (1 or 3 channels, 16 or
-// 32 bits). Faces are peeled into scratch arrays of 6 x maxLayers layers; afterwards only the
-// layers that hold a surface are kept, face after face (layer k of face f is array layer
+// 32 bits). Faces are peeled into scratch arrays of 6 x (maxLayers + 1) layers; afterwards only
+// the layers that hold a surface are kept, face after face (layer k of face f is array layer
 // firstLayer[f] + k), and the scratch memory is released: a face without casters costs no
-// memory, and a scene with one transparent surface keeps two layers, not maxLayers.
+// memory, and a scene with one transparent surface keeps two layers, not maxLayers. When a
+// face's maxLayers layers run out while its last one still lets light through, one more
+// layer, the closing one, holds the nearest opaque surface behind them with visibility 0:
+// surfaces beyond maxLayers are ignored, but light never passes an opaque body behind them.
 class DeepShadowMap {
  public:
   // Peels every face front to back from the light, stopping a face as soon as a pass found

@@ -1,6 +1,8 @@
 // One peel of one cube face. The depth test keeps the nearest surface behind the previous
 // layer; this shader drops everything at or in front of that layer and multiplies the
-// visibility after it by the surface's transmittance (seeds/000 §5).
+// visibility after it by the surface's transmittance (seeds/000 §5). With uOpaqueOnly (the
+// closing pass, when a face's layers run out with surfaces left behind them) only opaque
+// surfaces are kept, and no light passes them.
 in vec3 vPosition;
 in vec4 vColour;
 in vec2 vTexCoord;
@@ -13,6 +15,7 @@ uniform vec3 uTextureBlendColour;
 uniform int uColourModel;
 uniform vec3 uLightPosition;
 uniform int uFace;
+uniform int uOpaqueOnly;
 
 layout(std430, binding = IVSHADOW_MAP_FLAGS_BINDING) buffer PeelFlags {
   uint anyFragment;
@@ -36,8 +39,10 @@ void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   if (depth <= texelFetch(uPreviousDepth, texel, 0).r) discard;
 
-  vec3 visibility = texelFetch(uPreviousVisibility, texel, 0).rgb *
-                    transmittance(clamp(colour, 0.0, 1.0), uColourModel);
+  if (uOpaqueOnly != 0 && !isOpaque(colour.a)) discard;
+  vec3 visibility = uOpaqueOnly != 0 ? vec3(0.0)
+                                     : texelFetch(uPreviousVisibility, texel, 0).rgb *
+                                           transmittance(clamp(colour, 0.0, 1.0), uColourModel);
   anyFragment = 1u;
   // A surface that lets light through may have more surfaces behind it that matter.
   if (!isOpaque(colour.a)) transparentFragment = 1u;

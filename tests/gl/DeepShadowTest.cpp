@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ivshadow::test {
@@ -50,6 +51,39 @@ TEST(DeepShadow, MaxLayersKeepsOnlyTheNearestSurfaces) {
   ShadowPicture picture{&scene, ColourModel::Saturate};
   picture.maxLayers = 1;  // documented: surfaces beyond the first maxLayers are ignored
   expectPicture(scene, picture);
+}
+
+// More transparent surfaces along the light's rays than the map keeps layers (five glasses,
+// maxLayers 4), then an opaque square (half size 0.3 at height 0.2, shadow out to 0.375):
+// light must not pass the opaque body. The floor in its shadow, where it is not hidden from
+// the camera by the square itself (0.3 < max(|x|, |y|) < 0.375, 2-pixel margins), is black;
+// beyond every shadow (max(|x|, |y|) > 0.67) it is Lambert's 255 / sqrt(1 + r^2).
+TEST(DeepShadow, LayersRunningOutNeverLetLightThroughAnOpaqueBody) {
+  ShadowScene scene;
+  scene.lightFields = "maxLayers 4";
+  for (double height : {0.7, 0.6, 0.55, 0.5}) scene.filters.push_back(Filter{0.2, height});
+  scene.filters.push_back(Filter{0.25, 0.45});
+  Filter opaque{0.3, 0.2};
+  opaque.transparency = 0.0;
+  scene.filters.push_back(opaque);
+  const Image image = renderIv(scene.text(), ShadowScene::kSize);
+  int shadowed = 0, lit = 0;
+  for (int py = 0; py < ShadowScene::kSize; ++py)
+    for (int px = 0; px < ShadowScene::kSize; ++px) {
+      const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
+      const double extent = std::max(std::abs(x), std::abs(y));
+      const std::uint8_t* p = image.pixel(px, py);
+      if (extent > 0.32 && extent < 0.355) {
+        ++shadowed;
+        EXPECT_LE(std::max({p[0], p[1], p[2]}), 1)
+            << "light through the opaque body at " << px << "," << py;
+      } else if (extent > 0.69 && extent < 0.98) {
+        ++lit;
+        EXPECT_NEAR(p[0], 255.0 / std::sqrt(1.0 + x * x + y * y), kTolerance) << px << "," << py;
+      }
+    }
+  EXPECT_EQ(shadowed, 70 * 70 - 64 * 64);  // the pixel centres of the band
+  EXPECT_GT(lit, 10000);
 }
 
 TEST(DeepShadow, EarlyTerminationCostsOnePassPerEmptyFace) {
