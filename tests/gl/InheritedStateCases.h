@@ -2,6 +2,7 @@
 
 #include "tests/gl/ShadowScene.h"
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct InheritedCase {
 // DrawStyle LINES, LightModel (both ways), ShapeHints and a transform above the group.
 std::vector<InheritedCase> inheritedStateCases();
 std::string inheritedCaseName(const ::testing::TestParamInfo<InheritedCase>& info);
+// How gtest names a case in its messages (instead of the object's bytes).
+inline void PrintTo(const InheritedCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 // The floor point at the centre of pixel (px, py) of a ShadowScene picture.
 double floorX(int px);

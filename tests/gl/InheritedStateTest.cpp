@@ -27,6 +27,10 @@ struct MethodCase {
   std::string method;
 };
 
+void PrintTo(const MethodCase& c, std::ostream* os) {
+  *os << c.state.name << " with " << c.method;
+}
+
 std::vector<MethodCase> methodCases() {
   std::vector<MethodCase> result;
   for (const InheritedCase& c : inheritedStateCases())
