@@ -188,7 +188,7 @@ std::vector<InheritedCase> inheritedStateCases() {
      // red glass's, at half size and moved. The cosine of Lambert's law is scale free, and
      // the light has no attenuation.
     ShadowScene scene = redGlass();
-    scene.aboveGroup = "Transform { translation 0.3 -0.2 0 scaleFactor 0.5 0.5 0.5 }";
+    scene.aboveGroup = "DEF Move Transform { translation 0.3 -0.2 0 scaleFactor 0.5 0.5 0.5 }";
     const ShadowScene expected = redGlass();
     cases.push_back({"TransformAbove", scene, [expected](int px, int py) {
                        const ShadowPicture picture{&expected, ColourModel::Saturate};

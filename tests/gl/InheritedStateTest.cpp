@@ -8,6 +8,7 @@
 
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTransform.h>
 
 #include <gtest/gtest.h>
 
@@ -97,6 +98,46 @@ TEST_P(InheritedStateChange, AMaterialChangedAboveTheGroupIsSeenInTheNextFrame) 
   EXPECT_EQ(still.rebuilds, after.rebuilds);  // nothing changed: nothing is built again
   EXPECT_EQ(still.rayFrames, after.rayFrames);
   EXPECT_EQ(still.bvhBuilds, after.bvhBuilds);
+  root->unref();
+}
+
+// The transform above the group moved between two frames: casters and lights are kept in the
+// group's coordinates, so no caster is taken again and no map is built again (RAYS traces
+// again: the view of the group changed); the picture moves with the transform.
+TEST_P(InheritedStateChange, ATransformMovedAboveTheGroupTakesNoCastersAgain) {
+  InheritedCase moved;
+  for (const InheritedCase& c : inheritedStateCases())
+    if (c.name == "TransformAbove") moved = c;
+  ASSERT_FALSE(moved.name.empty());
+  moved.scene.method = GetParam();
+  SoSeparator* root = readIv(moved.scene.text());
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  renderer->render(root);
+  std::string failure = compareWithExpectation(renderer->read(), moved.expected, kTolerance);
+  EXPECT_TRUE(failure.empty()) << "before: " << failure;
+  const DeepShadowStatistics before = collectDeepShadowStatistics(root);
+
+  auto* transform = static_cast<SoTransform*>(SoNode::getByName("Move"));
+  ASSERT_NE(transform, nullptr);
+  transform->translation.setValue(-0.3f, 0.2f, 0.0f);
+  renderer->render(root);
+  ShadowScene glass;
+  glass.filters = {kRedGlass};
+  const ShadowPicture picture{&glass, ColourModel::Saturate};
+  failure = compareWithExpectation(
+      renderer->read(),
+      [&picture](int px, int py) {
+        return picture.at((floorX(px) + 0.3) / 0.5, (floorY(py) - 0.2) / 0.5, 0.01 / 0.5);
+      },
+      kTolerance);
+  EXPECT_TRUE(failure.empty()) << "moved: " << failure;
+  const DeepShadowStatistics after = collectDeepShadowStatistics(root);
+  EXPECT_EQ(after.rebuilds, before.rebuilds);
+  EXPECT_EQ(after.bvhBuilds, before.bvhBuilds);
+  EXPECT_EQ(after.bvhRefits, before.bvhRefits);
+  if (GetParam() == "RAYS") EXPECT_EQ(after.rayFrames, before.rayFrames + 1);
   root->unref();
 }
 
