@@ -51,6 +51,24 @@ ShadowScene withoutShadow(ShadowScene scene) {
   return scene;
 }
 
+// The floor under the checkerboard glass (checkerboardFilter) held 0.5 above it. Floor point
+// (x, y) takes the light through glass point (x, y) / 2; Coin's default texture coordinates
+// put texel (0, 0) at the glass's lower left corner: the lower left and upper right quarters
+// are opaque, the others clear (`swapped`: the other way round).
+ExpectedImage checkerboardShadow(bool swapped) {
+  return [swapped](int px, int py) {
+    const double x = -1.2 + (px + 0.5) * kPixel, y = 1.2 - (py + 0.5) * kPixel;
+    Expectation e;
+    if (outsideFloor(x, y, e)) return e;
+    const double extent = std::max(std::abs(x), std::abs(y));
+    if (extent < 0.3 + kMargin || std::abs(extent - 0.6) < kMargin || std::abs(x) < kMargin ||
+        std::abs(y) < kMargin)
+      return e;
+    const bool opaque = extent < 0.6 && ((x < 0.0) == (y < 0.0)) != swapped;
+    return grey(opaque ? 0.0 : lambert(x, y));
+  };
+}
+
 }  // namespace
 
 double floorX(int px) {
@@ -86,20 +104,15 @@ std::vector<InheritedCase> inheritedStateCases() {
     glass.nodes.clear();
     scene.filters = {glass};
     scene.floorNodes = "Texture2 { }";
-    // Floor point (x, y) takes the light through glass point (x, y) / 2; Coin's default
-    // texture coordinates put texel (0, 0) at the glass's lower left corner: the lower left
-    // and upper right quarters are opaque, the others clear.
-    cases.push_back({"TextureAbove", scene, [](int px, int py) {
-                       const double x = floorX(px), y = floorY(py);
-                       Expectation e;
-                       if (outsideFloor(x, y, e)) return e;
-                       const double extent = std::max(std::abs(x), std::abs(y));
-                       if (extent < 0.3 + kMargin || std::abs(extent - 0.6) < kMargin ||
-                           std::abs(x) < kMargin || std::abs(y) < kMargin)
-                         return e;
-                       const bool opaque = extent < 0.6 && (x < 0.0) == (y < 0.0);
-                       return grey(opaque ? 0.0 : lambert(x, y));
-                     }});
+    cases.push_back({"TextureAbove", scene, checkerboardShadow(false)});
+    // A texture matrix above moving s by half the texture: REPEAT brings the other column.
+    scene.aboveGroup += " Texture2Transform { translation 0.5 0 }";
+    cases.push_back({"TextureTransformAbove", scene, checkerboardShadow(true)});
+    // Texture coordinates above, mirrored in s (the glass's corners are listed from its
+    // lower left, counter-clockwise); the floor takes them too, untextured.
+    scene.aboveGroup =
+        checkerboardFilter().nodes + " TextureCoordinate2 { point [ 1 0, 0 0, 0 1, 1 1 ] }";
+    cases.push_back({"TextureCoordinatesAbove", scene, checkerboardShadow(true)});
   }
   {  // Complexity 0.1 above: Coin's sphere with int(30 * 0.1) = 3 slices and stacks, raised
      // to its minimum of 4 slices and 3 stacks (SoSphere, sogen_generate_sphere), is an

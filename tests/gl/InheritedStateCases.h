@@ -18,8 +18,9 @@ struct InheritedCase {
 };
 
 // One case per kind of inherited state: Material (transparency), BaseColor, Texture2 with
-// Complexity's textureQuality, Complexity (a sphere's facets), Units, ShadowStyle (both ways),
-// DrawStyle LINES, LightModel (both ways), ShapeHints and a transform above the group.
+// Complexity's textureQuality, a texture matrix, texture coordinates, Complexity (a sphere's
+// facets), Units, ShadowStyle (both ways), DrawStyle LINES, LightModel (both ways), ShapeHints and
+// a transform above the group.
 std::vector<InheritedCase> inheritedStateCases();
 std::string inheritedCaseName(const ::testing::TestParamInfo<InheritedCase>& info);
 // How gtest names a case in its messages (instead of the object's bytes).
