@@ -190,11 +190,14 @@ std::vector<InheritedCase> inheritedStateCases() {
     scene.floorNodes = "LightModel { model PHONG }";
     cases.push_back({"LightModelBaseColorAboveLitFloor", scene, pictureOf(redGlass())});
   }
-  {  // Known vertex order, unknown shape type: two-sided lighting; a shadow is still cast
-     // both ways through the glass and received on the side of the floor that is seen.
+  {  // Known vertex order, unknown shape type: two-sided lighting. The floor's normal points
+     // down, away from the light; its vertices run counter-clockwise seen from above, which
+     // the clockwise order above makes its back: two-sided lighting turns the normal up, and
+     // the floor takes the light (and the shadow) as if its normal were up. Without the hints
+     // it would be dark.
     ShadowScene scene = redGlass();
-    scene.aboveGroup =
-        "ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType UNKNOWN_SHAPE_TYPE }";
+    scene.aboveGroup = "ShapeHints { vertexOrdering CLOCKWISE shapeType UNKNOWN_SHAPE_TYPE }";
+    scene.floorNodes = "Normal { vector 0 0 -1 } NormalBinding { value OVERALL }";
     cases.push_back({"ShapeHintsAbove", scene, pictureOf(redGlass())});
   }
   {  // A transform above moves and shrinks lights and casters together: the picture is the
