@@ -2,6 +2,7 @@
 
 #include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 
 #include <Inventor/errors/SoDebugError.h>
 
@@ -18,24 +19,29 @@ namespace {
 // Lights already warned about, per field, so that a bad value is reported once and not on
 // every frame. Entries go when Coin reuses the address for a new node only in theory; the
 // cost of a missed warning then is one warning fewer.
-std::set<std::pair<const SoDeepShadowLight*, std::string>>& warned() {
-  static std::set<std::pair<const SoDeepShadowLight*, std::string>> fields;
+std::set<std::pair<const SoNode*, std::string>>& warned() {
+  static std::set<std::pair<const SoNode*, std::string>> fields;
   return fields;
 }
 
-std::string nodeLabel(const SoDeepShadowLight& light) {
-  const SbName name = light.getName();
-  return name.getLength() > 0 ? std::string("SoDeepShadowLight \"") + name.getString() + "\""
-                              : std::string("SoDeepShadowLight");
+// "SoDeepShadowLight \"Lamp\"", "SoTransparentShadowGroup": the class as Coin's messages
+// name it, and the node's name when it has one.
+std::string nodeClass(const SoNode& node) {
+  return std::string("So") + node.getTypeId().getName().getString();
 }
 
-void warnOnce(const SoDeepShadowLight& light, const char* field, const std::string& what) {
+std::string nodeLabel(const SoNode& node) {
+  const SbName name = node.getName();
+  return name.getLength() > 0 ? nodeClass(node) + " \"" + name.getString() + "\"" : nodeClass(node);
+}
+
+void warnOnce(const SoNode& light, const char* field, const std::string& what) {
   if (!warned().insert({&light, field}).second) return;
-  SoDebugError::postWarning("SoDeepShadowLight", "%s: field %s %s", nodeLabel(light).c_str(), field,
-                            what.c_str());
+  SoDebugError::postWarning(nodeClass(light).c_str(), "%s: field %s %s", nodeLabel(light).c_str(),
+                            field, what.c_str());
 }
 
-int clampInt(const SoDeepShadowLight& light, const char* field, int value, int low, int high) {
+int clampInt(const SoNode& light, const char* field, int value, int low, int high) {
   if (value >= low && value <= high) return value;
   const int clamped = std::clamp(value, low, high);
   warnOnce(light, field,
@@ -44,7 +50,7 @@ int clampInt(const SoDeepShadowLight& light, const char* field, int value, int l
   return clamped;
 }
 
-float finiteOr(const SoDeepShadowLight& light, const char* field, float value, float fallback) {
+float finiteOr(const SoNode& light, const char* field, float value, float fallback) {
   if (std::isfinite(value)) return value;
   std::ostringstream text;
   text << "is not a finite number; using " << fallback;
@@ -52,19 +58,26 @@ float finiteOr(const SoDeepShadowLight& light, const char* field, float value, f
   return fallback;
 }
 
-}  // namespace
-
-DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize) {
-  DeepShadowSettings s;
-  s.resolution =
-      clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
-  s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, kMaxMapLayers);
+// The map's radii: a SoDeepShadowLight's fields; a group's ordinary lights fit them.
+void readRadii(const SoDeepShadowLight& light, DeepShadowSettings& s) {
   s.nearRadius = finiteOr(light, "nearRadius", light.nearRadius.getValue(), -1.0f);
   s.farRadius = finiteOr(light, "farRadius", light.farRadius.getValue(), -1.0f);
   if (s.nearRadius > 0.0f && s.farRadius > 0.0f && s.nearRadius >= s.farRadius) {
     warnOnce(light, "nearRadius", "is not below farRadius; fitting both to the casters");
     s.nearRadius = s.farRadius = -1.0f;
   }
+}
+
+void readRadii(const SoTransparentShadowGroup&, DeepShadowSettings&) {}
+
+// SoDeepShadowLight and SoTransparentShadowGroup have the shadow fields under the same names.
+template <class Node>
+DeepShadowSettings resolveFields(Node& light, int maxTextureSize) {
+  DeepShadowSettings s;
+  s.resolution =
+      clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
+  s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, kMaxMapLayers);
+  readRadii(light, s);
   s.bias = finiteOr(light, "bias", light.bias.getValue(), 1.0f);
   if (s.bias < 0.0f) {
     warnOnce(light, "bias", "is negative; using 0");
@@ -83,6 +96,16 @@ DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize)
   }
   s.method = light.method.getValue();
   return s;
+}
+
+}  // namespace
+
+DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize) {
+  return resolveFields(light, maxTextureSize);
+}
+
+DeepShadowSettings resolveSettings(SoTransparentShadowGroup& group, int maxTextureSize) {
+  return resolveFields(group, maxTextureSize);
 }
 
 ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {

@@ -4,6 +4,7 @@
 #include "scene/ShadowTypes.h"
 
 class SoDeepShadowLight;
+class SoTransparentShadowGroup;
 
 namespace ivshadow {
 
@@ -24,11 +25,15 @@ struct DeepShadowSettings {
 // Reads and clamps the light's fields; each field that is out of range is reported once per
 // light through SoDebugError::postWarning, naming the node and the field.
 IVSHADOW_INTERNAL DeepShadowSettings resolveSettings(SoDeepShadowLight& light, int maxTextureSize);
+// The same for the group's fields, which ordinary lights in it cast with (radii fitted).
+IVSHADOW_INTERNAL DeepShadowSettings resolveSettings(SoTransparentShadowGroup& group,
+                                                     int maxTextureSize);
 
 // How the shadow of a light with these shadowColor and colorModel fields
 // (SoDeepShadowLight::ShadowColor, ::ColorModel) filters light: COLORED and MONOCHROME as set,
 // AUTO coloured when some transparent caster is coloured; a coloured one by SATURATE or POWER.
 // The GL path and the reference both ask here, so they cannot resolve it differently.
-IVSHADOW_INTERNAL ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters);
+IVSHADOW_INTERNAL ShadowColourModel shadowColourModel(int shadowColor, int colorModel,
+                                                      bool colouredCasters);
 
 }  // namespace ivshadow

@@ -2,8 +2,11 @@
 
 #include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/CastingLight.h"
 #include "nodes/NodesOfType.h"
 
+#include <Inventor/SbMatrix.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoAction.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -51,11 +54,11 @@ void GroupContents::changed(SoNotList* list) {
     return;
   }
   lightsValid_ = false;
-  if (node->isOfType(SoDeepShadowLight::getClassTypeId())) {
+  // Any light may cast (the group's castingLights): a changed light changes its shadows.
+  if (node->isOfType(SoLight::getClassTypeId())) {
     ++mapsVersion_;
     return;
   }
-  if (node->isOfType(SoLight::getClassTypeId())) return;
   castersValid_ = false;
   ++mapsVersion_;
 }
@@ -70,13 +73,28 @@ void GroupContents::findLights() {
     auto* light = static_cast<SoLight*>(path.getTail());
     if (!light->on.getValue()) return;
     ++subgraphLightsOn_;
-    if (deepShadows_ && light->isOfType(SoDeepShadowLight::getClassTypeId()) &&
-        int(lights_.size()) < kMaxGlLights) {
-      Light entry;
-      entry.path = CoinRef<SoPath>(path.copy());
-      entry.light = static_cast<SoDeepShadowLight*>(light);
-      lights_.push_back(std::move(entry));
+    if (!deepShadows_) return;
+    // Where it casts from is asked again when the maps are built; here only whether it does.
+    CastingLight where;
+    if (!castingLight(*light, *static_cast<SoTransparentShadowGroup*>(owner_), SbMatrix::identity(),
+                      where))
+      return;
+    if (int(lights_.size()) >= kMaxGlLights) {
+      static std::set<const SoLight*> warned;
+      if (warned.insert(light).second)
+        SoDebugError::postWarning(
+            "SoTransparentShadowGroup",
+            "light %s lights without a shadow: at most %d lights of a group cast",
+            light->getName().getLength() ? light->getName().getString() : "(unnamed)",
+            kMaxGlLights);
+      return;
     }
+    Light entry;
+    entry.path = CoinRef<SoPath>(path.copy());
+    entry.light = light;
+    if (light->isOfType(SoDeepShadowLight::getClassTypeId()))
+      entry.deep = static_cast<SoDeepShadowLight*>(light);
+    lights_.push_back(std::move(entry));
   });
   lightsValid_ = true;
 }

@@ -9,16 +9,17 @@
 
 class SoAction;
 class SoDeepShadowLight;
+class SoLight;
 class SoNotList;
 class SoPath;
 class SoSeparator;
 
 namespace ivshadow {
 
-// What the subgraph of a shadow group holds that its shadows depend on: the deep shadow
-// lights (one per GL light at most), how many lights are on, the last camera and environment
-// inside it, and the shadow casters. Searched again only after a notification says they may
-// have changed; the versions tell the per-context passes what to rebuild.
+// What the subgraph of a shadow group holds that its shadows depend on: the casting lights
+// (one per GL light at most, nodes/CastingLight.h), how many lights are on, the last camera and
+// environment inside it, and the shadow casters. Searched again only after a notification says they
+// may have changed; the versions tell the per-context passes what to rebuild.
 //
 // The casters are taken in the traversal state in force where the group is rendered (a
 // Material, Complexity, DrawStyle, Units, ShadowStyle, texture... above the group applies to
@@ -33,10 +34,12 @@ class GroupContents {
  public:
   struct Light {
     CoinRef<SoPath> path;  // from the group to the light
-    SoDeepShadowLight* light = nullptr;
+    SoLight* light = nullptr;
+    SoDeepShadowLight* deep = nullptr;  // the light, when it is a deep shadow light
   };
 
-  // `deepShadows` false: deep shadow lights are plain point lights and nothing casts.
+  // `deepShadows` false: deep shadow lights are plain point lights and nothing casts. True:
+  // `owner` is a SoTransparentShadowGroup, whose castingLights field says which lights cast.
   GroupContents(SoSeparator* owner, bool deepShadows);
 
   void changed(SoNotList* list);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlLimits.h"
+#include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
 
 #include <Inventor/SbVec3f.h>
@@ -13,7 +14,8 @@ namespace ivshadow {
 // position in the group's coordinates, how its shadow is coloured, whether it is traced, and
 // for a map, its depth range and where each face's layers are stored.
 struct MapState {
-  SbVec3f position;
+  LightKind kind = LightKind::Point;
+  SbVec3f position;  // for a directional light: the unit direction towards it
   DeepShadowSettings settings;
   bool coloured = false;
   float nearRadius = 0.0f;

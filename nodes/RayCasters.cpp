@@ -57,8 +57,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-bool RayCasters::ready(const SceneTriangles& casters, std::uint64_t version,
-                       const SoDeepShadowLight* light, const std::string& lightName,
+bool RayCasters::ready(const SceneTriangles& casters, std::uint64_t version, const SoLight* light,
+                       const std::string& lightName, const char* instead,
                        DeepShadowStatistics& statistics) {
   if (error_.empty() && scene_ && version_ != version) {
     // The same triangles recoloured or moved keep their tree.
@@ -91,9 +91,8 @@ bool RayCasters::ready(const SceneTriangles& casters, std::uint64_t version,
   }
   if (scene_) return true;
   if (warned_.insert(light).second)
-    SoDebugError::postWarning("SoDeepShadowLight",
-                              "light %s: cannot trace shadow rays (%s); using its deep shadow map",
-                              lightName.c_str(), error_.c_str());
+    SoDebugError::postWarning("SoDeepShadowLight", "light %s: cannot trace shadow rays (%s); %s",
+                              lightName.c_str(), error_.c_str(), instead);
   return false;
 }
 

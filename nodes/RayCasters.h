@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-class SoDeepShadowLight;
+class SoLight;
 
 namespace ivshadow {
 
@@ -19,17 +19,18 @@ struct DeepShadowStatistics;
 class RayCasters {
  public:
   // Makes the scene hold version `version` of `casters`; false (with one warning per light,
-  // naming `lightName`) when Embree cannot hold them, and that light then uses its map.
-  bool ready(const SceneTriangles& casters, std::uint64_t version, const SoDeepShadowLight* light,
-             const std::string& lightName, DeepShadowStatistics& statistics);
+  // naming `lightName` and saying `instead`, what the light does then) when Embree cannot
+  // hold them.
+  bool ready(const SceneTriangles& casters, std::uint64_t version, const SoLight* light,
+             const std::string& lightName, const char* instead, DeepShadowStatistics& statistics);
   // Null until ready() succeeded.
   const CasterScene* scene() const { return scene_.get(); }
 
  private:
   std::unique_ptr<CasterScene> scene_;
   std::uint64_t version_ = 0;
-  std::string error_;  // set once Embree failed: RAYS lights fall back to maps
-  std::set<const SoDeepShadowLight*> warned_;  // lights told they keep their map
+  std::string error_;                // set once Embree failed: RAYS lights fall back to maps
+  std::set<const SoLight*> warned_;  // lights told they keep their map
 };
 
 }  // namespace ivshadow

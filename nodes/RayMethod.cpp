@@ -98,6 +98,7 @@ void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
     if (!map.rays) continue;
     RayLight light;
     for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
+    light.directional = map.kind == LightKind::Directional;
     light.model = map.model;
     lights.push_back(light);
   }

@@ -1,5 +1,7 @@
 #include "ivshadow/SoDeepShadowLight.h"
 
+#include "nodes/DeepShadowEnums.h"
+
 SO_NODE_SOURCE(SoDeepShadowLight);
 
 void SoDeepShadowLight::initClass() {
@@ -25,24 +27,11 @@ SoDeepShadowLight::SoDeepShadowLight() {
   SO_NODE_ADD_FIELD(filterSize, (3));
   SO_NODE_ADD_FIELD(method, (AUTO_METHOD));
 
-  SO_NODE_DEFINE_ENUM_VALUE(ShadowColor, AUTO);
-  SO_NODE_DEFINE_ENUM_VALUE(ShadowColor, MONOCHROME);
-  SO_NODE_DEFINE_ENUM_VALUE(ShadowColor, COLORED);
+  if (SO_NODE_IS_FIRST_INSTANCE()) ivshadow::addDeepShadowEnumValues(fieldData);
   SO_NODE_SET_SF_ENUM_TYPE(shadowColor, ShadowColor);
-  SO_NODE_DEFINE_ENUM_VALUE(ColorModel, SATURATE);
-  SO_NODE_DEFINE_ENUM_VALUE(ColorModel, POWER);
   SO_NODE_SET_SF_ENUM_TYPE(colorModel, ColorModel);
-  SO_NODE_DEFINE_ENUM_VALUE(Precision, FLOAT);
-  SO_NODE_DEFINE_ENUM_VALUE(Precision, HALF);
   SO_NODE_SET_SF_ENUM_TYPE(precision, Precision);
-  SO_NODE_DEFINE_ENUM_VALUE(Filter, NONE);
-  SO_NODE_DEFINE_ENUM_VALUE(Filter, PCF);
   SO_NODE_SET_SF_ENUM_TYPE(filter, Filter);
-  // AUTO is taken by ShadowColor in this class's scope; files say AUTO all the same, so the
-  // name is given by hand (what SO_NODE_DEFINE_ENUM_VALUE expands to, with another name).
-  fieldData->addEnumValue("Method", "AUTO", AUTO_METHOD);
-  SO_NODE_DEFINE_ENUM_VALUE(Method, MAP);
-  SO_NODE_DEFINE_ENUM_VALUE(Method, RAYS);
   SO_NODE_SET_SF_ENUM_TYPE(method, Method);
 }
 

@@ -6,12 +6,15 @@
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/CastingLight.h"
 #include "nodes/MapMethod.h"
 #include "nodes/RayMethod.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SoPath.h>
+#include <Inventor/annex/FXViz/nodes/SoShadowSpotLight.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetMatrixAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
@@ -39,7 +42,7 @@ const char* methodName(int method) {
   return method == SoDeepShadowLight::RAYS ? "RAYS" : "MAP";
 }
 
-std::string lightName(const SoDeepShadowLight& light) {
+std::string lightName(const SoLight& light) {
   const std::string name = light.getName().getString();
   return name.empty() ? std::string("(unnamed)") : "'" + name + "'";
 }
@@ -68,34 +71,59 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.maps.assign(lights.size(), MapState{});
   statistics_.lights.clear();
   SoGetMatrixAction matrixAction(action->getViewportRegion());
+  auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
   for (std::size_t slot = 0; slot < lights.size(); ++slot) {
     const GroupContents::Light& entry = lights[slot];
     MapState& map = context.maps[slot];
-    map.settings = resolveSettings(*entry.light, pass.maxTextureSize());
+    map.settings = entry.deep ? resolveSettings(*entry.deep, pass.maxTextureSize())
+                              : resolveSettings(group, pass.maxTextureSize());
     matrixAction.apply(entry.path.get());
-    matrixAction.getMatrix().multVecMatrix(entry.light->location.getValue(), map.position);
-    fitMapRange(map, casters.bounds);
+    CastingLight where;
+    castingLight(*entry.light, group, matrixAction.getMatrix(), where);
+    map.kind = where.kind;
+    map.position = where.position;
+    // Coin's SoShadowSpotLight bounds its shadow map by nearDistance and farDistance (-1:
+    // fitted): the cube map's radii, the same meaning.
+    if (entry.light->isOfType(SoShadowSpotLight::getClassTypeId())) {
+      const auto& spot = static_cast<const SoShadowSpotLight&>(*entry.light);
+      map.settings.nearRadius = spot.nearDistance.getValue();
+      map.settings.farRadius = spot.farDistance.getValue();
+      if (!(map.settings.nearRadius < map.settings.farRadius) && map.settings.farRadius > 0.0f)
+        map.settings.nearRadius = map.settings.farRadius = -1.0f;
+    }
+    if (map.kind != LightKind::Directional) fitMapRange(map, casters.bounds);
     int method = map.settings.method;
     if (method == SoDeepShadowLight::AUTO_METHOD) {
       method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
       if (methodLogged_.insert(entry.light).second)
-        SoDebugError::postInfo("SoDeepShadowLight", "light %s: method AUTO uses %s on %s",
+        SoDebugError::postInfo(entry.deep ? "SoDeepShadowLight" : "SoTransparentShadowGroup",
+                               "light %s: method AUTO uses %s on %s",
                                lightName(*entry.light).c_str(), methodName(method),
                                context.renderer.c_str());
     }
+    // No map is built for a directional light: its shadows are traced with either method.
+    if (map.kind == LightKind::Directional && method == SoDeepShadowLight::MAP) {
+      if (methodLogged_.insert(entry.light).second)
+        SoDebugError::postInfo("SoTransparentShadowGroup",
+                               "light %s: a directional light's shadows are traced (RAYS)",
+                               lightName(*entry.light).c_str());
+      method = SoDeepShadowLight::RAYS;
+    }
     if (method == SoDeepShadowLight::RAYS &&
         !rayCasters_.ready(casters, contents_.castersVersion(), entry.light,
-                           lightName(*entry.light), statistics_))
-      method = SoDeepShadowLight::MAP;
+                           lightName(*entry.light),
+                           map.kind == LightKind::Directional ? "it lights without a shadow"
+                                                              : "using its deep shadow map",
+                           statistics_))
+      method = map.kind == LightKind::Directional ? -1 : SoDeepShadowLight::MAP;
     map.rays = method == SoDeepShadowLight::RAYS;
-    map.model = shadowColourModel(map.settings.shadowColor, map.settings.colorModel,
-                                  casters.hasColouredTransparent);
+    map.model = castingColourModel(*entry.light, group, casters.hasColouredTransparent);
     map.coloured = map.model != ShadowColourModel::Monochrome;
     DeepShadowLightStatistics light;
     light.name = entry.light->getName().getString();
     light.coloured = map.coloured;
-    light.method = methodName(method);
-    if (map.rays) {
+    light.method = method < 0 ? "NONE" : methodName(method);
+    if (map.rays || method < 0) {
       statistics_.lights.push_back(light);
       continue;
     }
@@ -164,13 +192,20 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   int rayCount = 0;
   for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot) {
     const MapState& map = context.maps[slot];
+    const bool directional = map.kind == LightKind::Directional;
     SbVec3f eye;
-    toEye.multVecMatrix(map.position, eye);
+    if (directional) {
+      toEye.multDirMatrix(map.position, eye);
+      eye.normalize();
+    } else {
+      toEye.multVecMatrix(map.position, eye);
+    }
     for (int i = 0; i < 3; ++i) {
       uniforms->mapLight[slot * 3 + std::size_t(i)] = map.position[i];
       uniforms->mapLightEye[slot * 3 + std::size_t(i)] = eye[i];
     }
     uniforms->mapParams[slot * 4 + 0] = float(map.settings.resolution);
+    uniforms->mapParams[slot * 4 + 1] = directional ? 1.0f : 0.0f;
     for (std::size_t face = 0; face < 6; ++face) {
       uniforms->mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
       uniforms->mapFaceLayers[slot * 6 + face] = map.faceLayers[face];

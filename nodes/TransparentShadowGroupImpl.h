@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-class SoDeepShadowLight;
+class SoLight;
 class SoGLRenderAction;
 class SoNotList;
 class SoPath;
@@ -75,7 +75,7 @@ class TransparentShadowGroupImpl {
   PerContext<Context> contexts_;
   DeepShadowStatistics statistics_;
   RayCasters rayCasters_;
-  std::set<const SoDeepShadowLight*> methodLogged_;  // lights whose AUTO choice was said
+  std::set<const SoLight*> methodLogged_;  // lights whose AUTO choice was said
 };
 
 }  // namespace ivshadow

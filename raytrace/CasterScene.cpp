@@ -121,6 +121,22 @@ glm::vec4 CasterScene::surfaceColour(unsigned int primitive, float u, float v) c
   return texturedColour(sample.colour, sample.texel, image);
 }
 
+glm::vec3 CasterScene::transmittanceTowards(const glm::vec3& from, const glm::vec3& normal,
+                                            const glm::vec3& towards,
+                                            ShadowColourModel model) const {
+  if (casters_.bounds.isEmpty()) return glm::vec3(1.0f);
+  // A point beyond every caster along the ray: farther than the casters' farthest corner is
+  // from `from` (no caster lies past it), and the ray then is an ordinary finite one.
+  const SbVec3f low = casters_.bounds.getMin(), high = casters_.bounds.getMax();
+  float reach = 0.0f;
+  for (int i = 0; i < 3; ++i) {
+    const float d = std::max(std::fabs(from[i] - low[i]), std::fabs(from[i] - high[i]));
+    reach += d * d;
+  }
+  const float length = 2.0f * std::sqrt(reach) + 1.0f;
+  return transmittance(from, normal, from + glm::normalize(towards) * length, model);
+}
+
 glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& normal,
                                      const glm::vec3& to, ShadowColourModel model) const {
   if (casters_.vertices.empty()) return glm::vec3(1.0f);

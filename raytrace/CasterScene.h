@@ -42,6 +42,9 @@ class IVSHADOW_INTERNAL CasterScene {
   // scale-aware offset along the normal, so grazing light does not shadow its own surface.
   glm::vec3 transmittance(const glm::vec3& from, const glm::vec3& normal, const glm::vec3& to,
                           ShadowColourModel model) const;
+  // The same towards a directional light: along the unit vector `towards`, past every caster.
+  glm::vec3 transmittanceTowards(const glm::vec3& from, const glm::vec3& normal,
+                                 const glm::vec3& towards, ShadowColourModel model) const;
 
   bool coloured() const { return casters_.hasColouredTransparent; }
 

@@ -1,7 +1,9 @@
 #include "raytrace/ReferenceRenderer.h"
 
+#include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
@@ -64,7 +66,7 @@ struct Light {
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // constant, linear, quadratic
   float spotCosCutoff = -1.0f;
   float spotExponent = 0.0f;
-  const SoDeepShadowLight* deep = nullptr;
+  const SoLight* node = nullptr;
 };
 
 struct Group {
@@ -73,6 +75,7 @@ struct Group {
   CoinRef<SoPath> path;  // from the root: its casters are taken in the state in force there
   std::vector<int> outsideLights;  // lit the group from outside (SoLightElement at entry)
   std::vector<int> lights;         // every light turned on in the group's subgraph
+  std::vector<int> casting;        // those that cast (nodes/CastingLight.h), as many as GL's
   std::unique_ptr<CasterScene> casters;
 };
 
@@ -215,11 +218,10 @@ SoCallbackAction::Response light(void* user, SoCallbackAction* action, const SoN
     SbVec3f position;
     toEye.multVecMatrix(static_cast<const SoPointLight*>(node)->location.getValue(), position);
     record.eyeVector = toGlm(position);
-    if (node->isOfType(SoDeepShadowLight::getClassTypeId()))
-      record.deep = static_cast<const SoDeepShadowLight*>(node);
   } else {
     return SoCallbackAction::CONTINUE;
   }
+  record.node = base;
   const int index = int(data.lights.size());
   data.lights.push_back(record);
   data.lightOfNode[node] = index;
@@ -545,19 +547,20 @@ class Tracer {
     glm::vec3 direct = nDotL * light.colour * diffuse;
     if (nDotH > 0.0f)
       direct += std::pow(nDotH, material.shininess) * light.colour * material.specular;
-    if (light.deep != nullptr && group != nullptr && tri.shadowed && group->casters &&
-        std::find(group->lights.begin(), group->lights.end(), int(&light - data_.lights.data())) !=
-            group->lights.end()) {
+    if (group != nullptr && tri.shadowed && group->casters &&
+        std::find(group->casting.begin(), group->casting.end(),
+                  int(&light - data_.lights.data())) != group->casting.end()) {
       ++shadowRays;
-      direct *= group->casters->transmittance(position, tri.geometricNormal, light.position,
-                                              modelOf(*light.deep, *group->casters));
+      const ShadowColourModel model = castingColourModel(
+          *light.node, *static_cast<const SoTransparentShadowGroup*>(group->node),
+          group->casters->coloured());
+      direct *=
+          light.type == LightType::Directional
+              ? group->casters->transmittanceTowards(position, tri.geometricNormal,
+                                                     light.towardsLight, model)
+              : group->casters->transmittance(position, tri.geometricNormal, light.position, model);
     }
     return attenuation * direct;
-  }
-
-  static ShadowColourModel modelOf(const SoDeepShadowLight& light, const CasterScene& casters) {
-    return shadowColourModel(light.shadowColor.getValue(), light.colorModel.getValue(),
-                             casters.coloured());
   }
 
   const Extraction& data_;
@@ -620,6 +623,14 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   EmbreeDevice device = createEmbreeDevice(error);
   if (!device) throw std::runtime_error(error);
   for (Group& group : data.groups) {
+    // The lights that cast, decided as the group decides it (GroupContents::findLights).
+    const auto& node = *static_cast<const SoTransparentShadowGroup*>(group.node);
+    for (int index : group.lights) {
+      CastingLight where;
+      if (int(group.casting.size()) < kMaxGlLights &&
+          castingLight(*data.lights[std::size_t(index)].node, node, SbMatrix::identity(), where))
+        group.casting.push_back(index);
+    }
     // In the group's coordinates, from the state in force at the group (as the GL path takes
     // them), then placed in the world.
     SceneTriangles casters = extractShadowCasters(group.path.get());

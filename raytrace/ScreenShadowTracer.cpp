@@ -36,8 +36,9 @@ std::size_t traceScreenShadows(const CasterScene& casters, const std::vector<Sur
           const RayLight& light = lights[r];
           glm::vec3 v(1.0f);
           if (traced) {
-            const glm::vec3 to(light.position[0], light.position[1], light.position[2]);
-            v = casters.transmittance(from, normal, to, light.model);
+            const glm::vec3 at(light.position[0], light.position[1], light.position[2]);
+            v = light.directional ? casters.transmittanceTowards(from, normal, at, light.model)
+                                  : casters.transmittance(from, normal, at, light.model);
             ++count;
           }
           std::uint16_t* out = &visibility[((r * layerCount + l) * pixels + pixel) * 4];

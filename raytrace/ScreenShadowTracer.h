@@ -11,7 +11,9 @@ namespace ivshadow {
 class CasterScene;
 
 struct RayLight {
-  float position[3] = {0.0f, 0.0f, 0.0f};  // in the group's coordinates
+  // In the group's coordinates; for a directional light the unit direction towards it.
+  float position[3] = {0.0f, 0.0f, 0.0f};
+  bool directional = false;
   ShadowColourModel model = ShadowColourModel::Monochrome;
 };
 

@@ -70,8 +70,18 @@ const std::vector<FieldSpec>& lightFields() {
   return fields;
 }
 
+// The group's own fields, then the shadow fields it gives its ordinary lights: the light's
+// specs for the fields of the same names.
 const std::vector<FieldSpec>& groupFields() {
-  static const std::vector<FieldSpec> fields = {{kMethod, "isActive", {}}};
+  static const std::vector<FieldSpec> fields = [] {
+    std::vector<FieldSpec> out = {{kMethod, "isActive", {}}, {kMethod, "castingLights", {}}};
+    SoTransparentShadowGroup* probe = new SoTransparentShadowGroup;
+    probe->ref();
+    for (const FieldSpec& spec : lightFields())
+      if (probe->getField(spec.name) != nullptr) out.push_back(spec);
+    probe->unref();
+    return out;
+  }();
   return fields;
 }
 
@@ -127,9 +137,8 @@ ShadowPanel::ShadowPanel(QWidget* parent) : QDockWidget("Deep shadows", parent) 
   emptyLayout->setContentsMargins(0, 0, 0, 0);
   auto* explanation = wrappingLabel(
       "This scene has no deep shadow nodes. Adding shadows puts the scene in a "
-      "TransparentShadowGroup and makes its lights cast (point lights become "
-      "DeepShadowLights; spot and directional lights get one standing in for them); a scene "
-      "without lights gets one DeepShadowLight.",
+      "TransparentShadowGroup, in which its own lights cast; a scene without lights gets one "
+      "DeepShadowLight.",
       emptyPage_);
   emptyLayout->addWidget(explanation);
   auto* add = new QPushButton("Add deep shadow light", emptyPage_);

@@ -301,15 +301,17 @@ std::string ViewerWindow::saveSceneAs(const QString& path) {
 std::string ViewerWindow::addDeepShadowLight() {
   if (!scene_) return "ivshadow: error: no scene to add a deep shadow light to";
   dragger_.detach();
-  SoDeepShadowLight* light =
+  SoNode* added =
       wrapInShadowGroup(scene_.get(), viewer_->getCamera(), viewer_->getViewportRegion());
   // The scene has a light of its own now; like `ivshadow render` of the saved file, the
   // viewer drops its headlight.
   viewer_->setHeadlight(!ViewSetup::hasActiveLight(scene_.get()));
   panel_->setScene(scene_.get(), path_.toStdString());
-  panel_->selectNode(light);
+  panel_->selectNode(added);
   inspector_->setScene(scene_.get());
-  showMessage("Added a deep shadow light; File > Save Scene As keeps it");
+  showMessage(added->isOfType(SoDeepShadowLight::getClassTypeId())
+                  ? "Added a shadow group and a deep shadow light; File > Save Scene As keeps them"
+                  : "Added a shadow group: the scene's lights cast; File > Save Scene As keeps it");
   return {};
 }
 

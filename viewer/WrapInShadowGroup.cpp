@@ -2,7 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "viewer/ShadowCastingLights.h"
+#include "scene/ViewSetup.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
@@ -13,8 +13,8 @@
 
 namespace ivshadow {
 
-SoDeepShadowLight* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
-                                     const SbViewportRegion& viewport) {
+SoNode* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
+                          const SbViewportRegion& viewport) {
   SoGetBoundingBoxAction boxAction(viewport);
   boxAction.apply(root);
   const SbBox3f box = boxAction.getBoundingBox();
@@ -26,12 +26,10 @@ SoDeepShadowLight* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
   }
   auto* group = new SoTransparentShadowGroup;
   group->setName("ShadowGroup");
-  // The scene's own lights cast the shadows when it has any: a light added beside them would
-  // light the scene twice over.
-  const std::vector<SoDeepShadowLight*> own =
-      castShadowsFromSceneLights(root, center, radius, viewport);
-  SoDeepShadowLight* light = own.empty() ? nullptr : own.front();
-  if (light == nullptr) {
+  // The scene's own lights cast the shadows when it has any (the group's castingLights
+  // ALL_LIGHTS): a light added beside them would light the scene twice over.
+  SoNode* added = group;
+  if (!ViewSetup::hasActiveLight(root)) {
     SbVec3f up(0.0f, 1.0f, 0.0f), back(0.0f, 0.0f, 1.0f), right(1.0f, 0.0f, 0.0f);
     if (camera != nullptr) {
       const SbRotation orientation = camera->orientation.getValue();
@@ -45,10 +43,11 @@ SoDeepShadowLight* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
     // object.
     SbVec3f direction = up + 0.5f * back + 0.3f * right;
     direction.normalize();
-    light = new SoDeepShadowLight;
+    auto* light = new SoDeepShadowLight;
     light->setName("ShadowLight");
     light->location.setValue(center + direction * (1.5f * radius));
     group->addChild(light);
+    added = light;
   }
 
   int insertAt = -1;
@@ -66,7 +65,7 @@ SoDeepShadowLight* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
     root->removeChild(i);
   }
   root->insertChild(group, insertAt < 0 ? root->getNumChildren() : insertAt);
-  return light;
+  return added;
 }
 
 }  // namespace ivshadow

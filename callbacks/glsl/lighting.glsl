@@ -22,7 +22,8 @@ uniform sampler2DArray uMapVisibility[kMaxLights];
 uniform int uMapCount;
 uniform vec3 uMapLight[kMaxLights];     // light position in the group's coordinates
 uniform vec3 uMapLightEye[kMaxLights];  // ... and in eye coordinates
-uniform vec4 uMapParams[kMaxLights];  // resolution, unused, bias (texels), filter radius
+// resolution, 1 for a directional light (uMapLight*: its direction), bias (texels), filter radius
+uniform vec4 uMapParams[kMaxLights];
 uniform int uMapColoured[kMaxLights];
 uniform int uMapFaceFirst[kMaxLights * 6];   // array layer of each face's first layer
 uniform int uMapFaceLayers[kMaxLights * 6];  // layers stored for each face
@@ -97,14 +98,17 @@ vec3 deepShadowVisibility(int slot, vec3 localPosition, float cosTheta) {
   return sum / taps;
 }
 
-// The map of the GL light, found by its position: Coin numbers GL lights by traversal and
-// reuses a number when a separator ends, so only the position says which light it is.
+// The slot of the GL light, found by its position (a directional light's: its direction):
+// Coin numbers GL lights by traversal and reuses a number when a separator ends, so only the
+// position says which light it is.
 int mapOfLight(gl_LightSourceParameters light) {
-  if (light.position.w == 0.0) return -1;
-  vec3 at = light.position.xyz / light.position.w;
-  for (int slot = 0; slot < uMapCount; ++slot)
+  bool directional = light.position.w == 0.0;
+  vec3 at = directional ? normalize(light.position.xyz) : light.position.xyz / light.position.w;
+  for (int slot = 0; slot < uMapCount; ++slot) {
+    if ((uMapParams[slot].y != 0.0) != directional) continue;
     if (distance(at, uMapLightEye[slot]) <= 1e-3 * (1.0 + length(uMapLightEye[slot])))
       return slot;
+  }
   return -1;
 }
 

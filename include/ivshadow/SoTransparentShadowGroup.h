@@ -3,6 +3,9 @@
 #include "ivshadow/Export.h"
 
 #include <Inventor/fields/SoSFBool.h>
+#include <Inventor/fields/SoSFEnum.h>
+#include <Inventor/fields/SoSFFloat.h>
+#include <Inventor/fields/SoSFInt32.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 namespace ivshadow {
@@ -12,16 +15,26 @@ struct DeepShadowStatistics;
 
 /*!
   \class SoTransparentShadowGroup
-  A separator whose subgraph is rendered with shadows from every SoDeepShadowLight in it:
-  shadows whose strength follows each caster's opacity and whose colour follows its colour.
+  A separator whose subgraph is rendered with shadows from the lights in it: shadows whose
+  strength follows each caster's opacity and whose colour follows its colour.
 
-  Each deep shadow light in the subgraph gets a cube deep shadow map built by depth peeling
-  from the light; the map is rebuilt only when something under the group changed. The
-  children are rendered with a per-pixel version of Coin's own lighting in which each deep
-  shadow light's contribution is multiplied by the visibility in its map. SoShadowStyle is
-  honoured as by SoShadowGroup: only shapes whose style includes CASTS_SHADOW go into the
-  maps, and only shapes whose style includes SHADOWED receive shadows. Like SoShadowGroup,
-  the group treats every light found in its subgraph as lighting all of it.
+  Every light turned on in the subgraph casts (`castingLights ALL_LIGHTS`, the default), or
+  only the SoDeepShadowLight nodes (`DEEP_SHADOW_LIGHTS`). A SoDeepShadowLight is a point light
+  with its own shadow fields; an ordinary SoPointLight, SoSpotLight or SoDirectionalLight
+  (Coin's SoShadowSpotLight and SoShadowDirectionalLight included) casts with the group's
+  fields below, which mean what the SoDeepShadowLight fields of the same names mean. Point and
+  spot lights get a cube deep shadow map (MAP) or shadow rays (RAYS) from their location (a
+  spot light lights only its cone, so only its cone shows a shadow); a directional light's
+  shadows are traced (RAYS) with either method. A light of zero direction, or a spot light
+  whose cutOffAngle is not in (0, pi/2], lights without a shadow, with one warning. At most
+  8 lights cast (the shading program's limit); further ones light without a shadow, with one
+  warning.
+
+  The children are rendered with a per-pixel version of Coin's own lighting in which each
+  casting light's contribution is multiplied by its visibility. SoShadowStyle is honoured as
+  by SoShadowGroup: only shapes whose style includes CASTS_SHADOW cast, and only shapes whose
+  style includes SHADOWED receive shadows. Like SoShadowGroup, the group treats every light
+  found in its subgraph as lighting all of it.
 
   The state in force where the group is traversed applies to its casters as it does to what
   Coin draws: a Material, BaseColor, Complexity, Texture2, Units, DrawStyle, ShapeHints,
@@ -37,7 +50,18 @@ struct DeepShadowStatistics;
         boundingBoxCaching AUTO
         renderCulling AUTO
         pickCulling AUTO
-        isActive TRUE   # FALSE renders the children like a plain SoSeparator
+        isActive TRUE            # FALSE renders the children like a plain SoSeparator
+        castingLights ALL_LIGHTS # ALL_LIGHTS or DEEP_SHADOW_LIGHTS
+        # The shadows of the ordinary lights (SoDeepShadowLight nodes use their own fields):
+        method AUTO              # AUTO, MAP or RAYS
+        resolution 512           # cube face size in texels
+        maxLayers 4              # peeled layers per face, 1 .. 64
+        bias 1                   # in texels at the receiver
+        shadowColor AUTO         # AUTO, MONOCHROME or COLORED
+        colorModel SATURATE      # SATURATE or POWER
+        precision FLOAT          # FLOAT or HALF
+        filter NONE              # NONE or PCF
+        filterSize 3             # PCF kernel width in texels, odd, 1 .. 9
     }
   \endcode
 */
@@ -49,7 +73,22 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   static void initClass();
   SoTransparentShadowGroup();
 
+  enum CastingLights {
+    ALL_LIGHTS,         //!< every light turned on in the subgraph casts
+    DEEP_SHADOW_LIGHTS  //!< only SoDeepShadowLight nodes cast; other lights only light
+  };
+
   SoSFBool isActive;
+  SoSFEnum castingLights;
+  SoSFEnum method;
+  SoSFInt32 resolution;
+  SoSFInt32 maxLayers;
+  SoSFFloat bias;
+  SoSFEnum shadowColor;
+  SoSFEnum colorModel;
+  SoSFEnum precision;
+  SoSFEnum filter;
+  SoSFInt32 filterSize;
 
   //! What the last render in any context did: per light, layers used per face, map bytes,
   //! build time, and how many times the maps were rebuilt since the group was created.

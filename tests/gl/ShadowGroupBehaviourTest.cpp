@@ -49,10 +49,12 @@ std::vector<int> pixelDifferences(const Image& a, const Image& b) {
 }
 
 TEST(ShadowGroup, WithoutDeepShadowLightsItLooksLikeCoin) {
-  // The whole bundled scene, camera included, wrapped in a group without deep shadow lights.
+  // The whole bundled scene, camera included, wrapped in a group without deep shadow lights
+  // whose other lights do not cast.
   const std::string plain = readFile(scenesDir() + "/shading_features.iv");
-  const std::string wrapped = "#Inventor V2.1 ascii\nTransparentShadowGroup {\n" +
-                              plain.substr(plain.find('\n') + 1) + "\n}\n";
+  const std::string wrapped =
+      "#Inventor V2.1 ascii\nTransparentShadowGroup {\ncastingLights DEEP_SHADOW_LIGHTS\n" +
+      plain.substr(plain.find('\n') + 1) + "\n}\n";
   const Image coin = renderIv(plain, 300);
   const Image group = renderIv(wrapped, 300);
   const std::vector<int> differences = pixelDifferences(coin, group);

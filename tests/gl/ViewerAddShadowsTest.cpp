@@ -52,21 +52,20 @@ AddedShadows addShadows(const std::string& sceneName) {
 TEST(ViewerAddShadows, TheLampOfGlassOverFloorCastsTheGlasssRedShadowInsteadOfASecondLight) {
   const AddedShadows added = addShadows("glass_over_floor.iv");
   ASSERT_EQ(added.run.exitCode, 0) << added.run.err;
-  // The scene's point light became the deep shadow light, under its own name: one light, as
-  // in the file, not the file's and a new one.
-  EXPECT_EQ(occurrences(added.saved, "DeepShadowLight"), 1) << added.saved;
-  EXPECT_NE(added.saved.find("DEF Lamp DeepShadowLight"), std::string::npos) << added.saved;
-  EXPECT_EQ(added.saved.find("PointLight"), std::string::npos) << added.saved;
+  // The scene's point light casts, as it is: one light, as in the file, not the file's and a
+  // new one.
+  EXPECT_EQ(occurrences(added.saved, "DeepShadowLight"), 0) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "DEF Lamp PointLight"), 1) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "DEF ShadowGroup TransparentShadowGroup"), 1) << added.saved;
 
-  // Independent of the viewer's code: the file edited by hand as a user would, its lamp
-  // made a DeepShadowLight and everything after the camera put in a shadow group, rendered
-  // headlessly with the viewer's transparency type.
+  // Independent of the viewer's code: the file edited by hand as a user would, everything
+  // after the camera put in a shadow group, rendered headlessly with the viewer's
+  // transparency type.
   const std::string dir = test::outputDir();
   std::string text = readText(test::scenesDir() + "/glass_over_floor.iv");
   const std::string lamp = "DEF Lamp PointLight {";
   ASSERT_NE(text.find(lamp), std::string::npos);
-  text.replace(text.find(lamp), lamp.size(),
-               "TransparentShadowGroup {\n  DEF Lamp DeepShadowLight {");
+  text.replace(text.find(lamp), lamp.size(), "TransparentShadowGroup {\n  " + lamp);
   text.replace(text.rfind('}'), 1, "}\n}");
   std::ofstream(dir + "/by_hand.iv") << text;
   const test::ProcessResult render =
@@ -134,16 +133,20 @@ TEST(ViewerAddShadows, ASceneWithoutLightsGetsOneWhoseShadowIsSeen) {
   EXPECT_GT(tinted, 320 * 240 / 100) << "no red shadow to be seen";
 }
 
-TEST(ViewerAddShadows, SpotAndDirectionalLightsGetStandInsAndGoOff) {
+TEST(ViewerAddShadows, SpotAndDirectionalLightsCastAsTheyAre) {
   const AddedShadows added = addShadows("shading_features.iv");
   ASSERT_EQ(added.run.exitCode, 0) << added.run.err;
-  // One deep shadow light per light of the scene: the point light replaced, one standing in
-  // for each of the others, which are kept, switched off, so that nothing is lit twice.
-  EXPECT_EQ(occurrences(added.saved, "DeepShadowLight"), 3) << added.saved;
-  EXPECT_EQ(occurrences(added.saved, "PointLight"), 0) << added.saved;
+  // The scene's point, spot and directional lights are kept as they are, all on, inside the
+  // group, where they cast: no light is added, none is replaced or switched off.
+  EXPECT_EQ(occurrences(added.saved, "DeepShadowLight"), 0) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "PointLight"), 1) << added.saved;
   EXPECT_EQ(occurrences(added.saved, "SpotLight"), 1) << added.saved;
   EXPECT_EQ(occurrences(added.saved, "DirectionalLight"), 1) << added.saved;
-  EXPECT_EQ(occurrences(added.saved, "on FALSE"), 2) << added.saved;
+  EXPECT_EQ(occurrences(added.saved, "on FALSE"), 0) << added.saved;
+  const std::size_t group = added.saved.find("TransparentShadowGroup");
+  ASSERT_NE(group, std::string::npos) << added.saved;
+  EXPECT_LT(group, added.saved.find("SpotLight")) << added.saved;
+  EXPECT_LT(group, added.saved.find("DirectionalLight")) << added.saved;
 }
 
 }  // namespace

@@ -1,0 +1,93 @@
+#include "nodes/CastingLight.h"
+
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/DeepShadowSettings.h"
+
+#include <Inventor/SbMatrix.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoPointLight.h>
+#include <Inventor/nodes/SoSpotLight.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace ivshadow {
+namespace {
+
+void warnCannotCast(const SoLight& light, const std::string& why) {
+  static std::set<const SoLight*> warned;
+  if (!warned.insert(&light).second) return;
+  const std::string name = light.getName().getString();
+  const std::string type = std::string("So") + light.getTypeId().getName().getString();
+  const std::string label = name.empty() ? type : type + " \"" + name + "\"";
+  SoDebugError::postWarning(type.c_str(), "%s lights without a shadow: %s", label.c_str(),
+                            why.c_str());
+}
+
+// A direction Coin can light along: finite and not zero.
+bool usableDirection(const SbVec3f& direction) {
+  const float length = direction.length();
+  return std::isfinite(length) && length > 0.0f;
+}
+
+}  // namespace
+
+bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
+                  const SbMatrix& toGroup, CastingLight& out) {
+  if (!light.on.getValue()) return false;
+  const bool deep = light.isOfType(SoDeepShadowLight::getClassTypeId());
+  if (!deep && group.castingLights.getValue() == SoTransparentShadowGroup::DEEP_SHADOW_LIGHTS)
+    return false;
+  if (light.isOfType(SoSpotLight::getClassTypeId())) {
+    const auto& spot = static_cast<const SoSpotLight&>(light);
+    const float cutOff = spot.cutOffAngle.getValue();
+    if (!usableDirection(spot.direction.getValue())) {
+      warnCannotCast(light, "its direction is zero");
+      return false;
+    }
+    if (!(cutOff > 0.0f && cutOff <= float(M_PI / 2.0) + 1e-6f)) {
+      warnCannotCast(light, "cutOffAngle " + std::to_string(cutOff) + " is not in (0, pi/2]");
+      return false;
+    }
+    out.kind = LightKind::Spot;
+    toGroup.multVecMatrix(spot.location.getValue(), out.position);
+    return true;
+  }
+  if (light.isOfType(SoPointLight::getClassTypeId())) {
+    out.kind = LightKind::Point;
+    toGroup.multVecMatrix(static_cast<const SoPointLight&>(light).location.getValue(),
+                          out.position);
+    return true;
+  }
+  if (light.isOfType(SoDirectionalLight::getClassTypeId())) {
+    const SbVec3f direction = static_cast<const SoDirectionalLight&>(light).direction.getValue();
+    SbVec3f towards;
+    toGroup.multDirMatrix(-direction, towards);
+    if (!usableDirection(direction) || !usableDirection(towards)) {
+      warnCannotCast(light, "its direction is zero");
+      return false;
+    }
+    towards.normalize();
+    out.kind = LightKind::Directional;
+    out.position = towards;
+    return true;
+  }
+  warnCannotCast(light, "only point, spot and directional lights cast");
+  return false;
+}
+
+ShadowColourModel castingColourModel(const SoLight& light, const SoTransparentShadowGroup& group,
+                                     bool colouredCasters) {
+  if (light.isOfType(SoDeepShadowLight::getClassTypeId())) {
+    const auto& deep = static_cast<const SoDeepShadowLight&>(light);
+    return shadowColourModel(deep.shadowColor.getValue(), deep.colorModel.getValue(),
+                             colouredCasters);
+  }
+  return shadowColourModel(group.shadowColor.getValue(), group.colorModel.getValue(),
+                           colouredCasters);
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "ivshadow/Export.h"
+#include "scene/ShadowTypes.h"
+
+#include <Inventor/SbVec3f.h>
+
+class SbMatrix;
+class SoLight;
+class SoTransparentShadowGroup;
+
+namespace ivshadow {
+
+// Which lights of a shadow group cast, and from where: the one answer the GL methods and the
+// reference renderer both ask, so that they cannot disagree on it.
+enum class LightKind { Point, Spot, Directional };
+
+struct CastingLight {
+  LightKind kind = LightKind::Point;
+  // In the coordinates of `toGroup` (the group's): a point or spot light's location; for a
+  // directional light, the unit direction towards the light.
+  SbVec3f position;
+};
+
+// Whether `light` casts in `group` (its castingLights field, the light's on field, the light
+// type) and, when it does, where from. A light that cannot cast (zero direction; a spot light
+// whose cutOffAngle is not in (0, pi/2]; a light type other than point, spot and directional)
+// lights without a shadow: one warning per light names it and says why.
+IVSHADOW_INTERNAL bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
+                                    const SbMatrix& toGroup, CastingLight& out);
+
+// How the light's shadow filters light: a SoDeepShadowLight by its own shadowColor and
+// colorModel fields, an ordinary light by the group's.
+IVSHADOW_INTERNAL ShadowColourModel castingColourModel(const SoLight& light,
+                                                       const SoTransparentShadowGroup& group,
+                                                       bool colouredCasters);
+
+}  // namespace ivshadow

@@ -1,0 +1,25 @@
+#include "nodes/DeepShadowEnums.h"
+
+#include "ivshadow/SoDeepShadowLight.h"
+
+#include <Inventor/fields/SoFieldData.h>
+
+namespace ivshadow {
+
+void addDeepShadowEnumValues(SoFieldData* fieldData) {
+  fieldData->addEnumValue("ShadowColor", "AUTO", SoDeepShadowLight::AUTO);
+  fieldData->addEnumValue("ShadowColor", "MONOCHROME", SoDeepShadowLight::MONOCHROME);
+  fieldData->addEnumValue("ShadowColor", "COLORED", SoDeepShadowLight::COLORED);
+  fieldData->addEnumValue("ColorModel", "SATURATE", SoDeepShadowLight::SATURATE);
+  fieldData->addEnumValue("ColorModel", "POWER", SoDeepShadowLight::POWER);
+  fieldData->addEnumValue("Precision", "FLOAT", SoDeepShadowLight::FLOAT);
+  fieldData->addEnumValue("Precision", "HALF", SoDeepShadowLight::HALF);
+  fieldData->addEnumValue("Filter", "NONE", SoDeepShadowLight::NONE);
+  fieldData->addEnumValue("Filter", "PCF", SoDeepShadowLight::PCF);
+  // Files say AUTO for the method too; the C++ name is AUTO_METHOD, since ShadowColor has AUTO.
+  fieldData->addEnumValue("Method", "AUTO", SoDeepShadowLight::AUTO_METHOD);
+  fieldData->addEnumValue("Method", "MAP", SoDeepShadowLight::MAP);
+  fieldData->addEnumValue("Method", "RAYS", SoDeepShadowLight::RAYS);
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,230 @@
+// Ordinary Inventor lights inside a shadow group cast: a PointLight, a SpotLight (inside, at
+// the edge of and outside its cone, with and without dropOffRate) and a DirectionalLight at an
+// oblique angle, each by the map (MAP), the traced rays (RAYS) and the CPU reference, against
+// pictures computed here from the geometry alone.
+#include "ivshadow/IvShadowInit.h"
+#include "scene/CoinMessageCapture.h"
+#include "tests/gl/ShadowScene.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+namespace ivshadow::test {
+namespace {
+
+// ShadowScene's set-up (a 2 x 2 white floor at z = 0 seen straight down, 100 pixels per unit
+// at 240 x 240, no ambient, no specular) with `lights` in place of its deep shadow light and a
+// red glass of half size `halfSize` at height 0.5.
+std::string sceneWith(const std::string& lights, const std::string& groupFields, double halfSize) {
+  std::ostringstream iv;
+  iv << "#Inventor V2.1 ascii\nSeparator {\n"
+     << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+     << "  TransparentShadowGroup {\n    " << groupFields << "\n    " << lights << "\n"
+     << "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
+     << "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"
+     << "    QuadMesh { verticesPerRow 2 verticesPerColumn 2 }\n"
+     << "    Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor 1 0 0"
+     << " transparency 0.5 }\n"
+     << "    Coordinate3 { point [ " << -halfSize << ' ' << -halfSize << " 0.5, " << halfSize << ' '
+     << -halfSize << " 0.5, " << halfSize << ' ' << halfSize << " 0.5, " << -halfSize << ' '
+     << halfSize << " 0.5 ] }\n"
+     << "    FaceSet { numVertices 4 }\n  }\n}\n";
+  return iv.str();
+}
+
+// The red glass (alpha 0.5) by eq. 5.3: red passes 0.5, green and blue 0.25 (ShadowScene.h).
+const std::array<double, 3> kRedShadow = transmittance(kRedGlass, ColourModel::Saturate);
+
+// One light's analytic contribution at floor point (x, y): its Lambert term times the
+// transmittance where the glass is between the point and the light, or nothing to check
+// (a point within `margin` of an edge where the picture jumps: the glass seen from the camera,
+// a shadow edge, a cone edge).
+struct LightTerm {
+  std::function<bool(double x, double y, std::array<double, 3>& rgb)> at;
+};
+
+constexpr double kMargin = 0.02;  // two pixels either side of every edge
+
+// A light above the floor's centre at height 1 (point, or spot pointing down): the glass of
+// half size s at height 0.5 shadows the floor where max(|x|, |y|) < 2 s.
+LightTerm overheadLight(double s, double intensity, double cutOffAngle, double dropOffRate) {
+  return {[=](double x, double y, std::array<double, 3>& rgb) {
+    const double extent = std::max(std::abs(x), std::abs(y));
+    if (std::abs(extent - 2.0 * s) < kMargin) return false;
+    const double r = std::hypot(x, y);
+    const double length = std::sqrt(1.0 + r * r);
+    double term = intensity / length;  // Lambert: cos = 1 / length
+    if (cutOffAngle > 0.0) {
+      // Coin's GL spot: outside the cone nothing, inside cos^(128 dropOffRate) of the angle
+      // to the axis, which here is 1 / length as well.
+      const double edge = std::tan(cutOffAngle);
+      if (std::abs(r - edge) < kMargin) return false;
+      term = r > edge ? 0.0 : term * std::pow(1.0 / length, 128.0 * dropOffRate);
+    }
+    for (int c = 0; c < 3; ++c)
+      rgb[std::size_t(c)] += 255.0 * term * (extent < 2.0 * s ? kRedShadow[std::size_t(c)] : 1.0);
+    return true;
+  }};
+}
+
+// A directional light along (dx, 0, -1): Lambert's cosine 1 / sqrt(1 + dx^2) everywhere, and
+// the glass's shadow is its square moved by dx * 0.5 along x (similar triangles).
+LightTerm obliqueLight(double s, double intensity, double dx) {
+  return {[=](double x, double y, std::array<double, 3>& rgb) {
+    const double shifted = std::max(std::abs(x - dx * 0.5), std::abs(y));
+    if (std::abs(shifted - s) < kMargin) return false;
+    const double term = intensity / std::sqrt(1.0 + dx * dx);
+    for (int c = 0; c < 3; ++c)
+      rgb[std::size_t(c)] += 255.0 * term * (shifted < s ? kRedShadow[std::size_t(c)] : 1.0);
+    return true;
+  }};
+}
+
+// The picture of the floor under `terms`, the glass (half size s) seen from the camera and
+// the floor's edge left unchecked.
+ExpectedImage pictureOf(double s, const std::vector<LightTerm>& terms) {
+  return [=](int px, int py) {
+    const double x = -1.2 + (px + 0.5) / 100.0;
+    const double y = 1.2 - (py + 0.5) / 100.0;
+    const double extent = std::max(std::abs(x), std::abs(y));
+    Expectation e;
+    if (extent >= 1.0 + kMargin) {
+      e.checked = true;  // the black background
+      return e;
+    }
+    if (extent > 1.0 - kMargin || extent < s + kMargin) return e;
+    std::array<double, 3> rgb{};
+    for (const LightTerm& term : terms)
+      if (!term.at(x, y, rgb)) return e;
+    e.checked = true;
+    for (int c = 0; c < 3; ++c) e.rgb[std::size_t(c)] = std::min(rgb[std::size_t(c)], 255.0);
+    return e;
+  };
+}
+
+// The group lights per pixel in float; the transmittance is stored as a 16-bit float (RAYS) or
+// a 32-bit float (MAP) and rounded once to 8 bits: one step bounds it, the 1/255.
+constexpr double kTolerance = 1.0;
+
+enum class Method { Map, Rays, Reference };
+
+std::string methodName(const ::testing::TestParamInfo<Method>& info) {
+  return info.param == Method::Map ? "Map" : info.param == Method::Rays ? "Rays" : "Reference";
+}
+
+class LightTypes : public ::testing::TestWithParam<Method> {
+ protected:
+  void expectPicture(const std::string& lights, double s, const std::vector<LightTerm>& terms,
+                     const std::string& extraGroupFields = "") {
+    const std::string fields =
+        std::string(GetParam() == Method::Map ? "method MAP" : "method RAYS") + " " +
+        extraGroupFields;
+    const std::string text = sceneWith(lights, fields, s);
+    const Image image = GetParam() == Method::Reference ? referenceIv(text, ShadowScene::kSize)
+                                                        : renderIv(text, ShadowScene::kSize);
+    const std::string failure = compareWithExpectation(image, pictureOf(s, terms), kTolerance);
+    EXPECT_TRUE(failure.empty()) << failure;
+  }
+};
+
+TEST_P(LightTypes, PointLightCastsAsADeepShadowLight) {
+  expectPicture("PointLight { location 0 0 1 }", 0.3, {overheadLight(0.3, 1.0, 0.0, 0.0)});
+}
+
+TEST_P(LightTypes, SpotLightCastsInsideItsConeAndLightsNothingOutside) {
+  // Cone radius tan(0.5) = 0.55 on the floor; the shadow (half size 0.3) lies inside it, a lit
+  // ring around it, darkness outside.
+  expectPicture("SpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.5 }", 0.15,
+                {overheadLight(0.15, 1.0, 0.5, 0.0)});
+}
+
+TEST_P(LightTypes, SpotLightsDropOffRateShapesItsLight) {
+  expectPicture("SpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.7 dropOffRate 0.05 }",
+                0.15, {overheadLight(0.15, 1.0, 0.7, 0.05)});
+}
+
+TEST_P(LightTypes, SpotConeNarrowerThanTheShadowLeavesNoLitRing) {
+  // Cone radius tan(0.2) = 0.2, the shadow's half size 0.6: all the cone's light is filtered.
+  expectPicture("SpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.2 }", 0.3,
+                {overheadLight(0.3, 1.0, 0.2, 0.0)});
+}
+
+TEST_P(LightTypes, ObliqueDirectionalLightShiftsAndTintsTheShadow) {
+  // Along (1, 0, -1): the shadow is the glass moved 0.5 along x, seen beside the glass.
+  expectPicture("DirectionalLight { direction 1 0 -1 }", 0.3, {obliqueLight(0.3, 1.0, 1.0)});
+}
+
+TEST_P(LightTypes, PointAndDirectionalLightsInOneGroupAddUp) {
+  expectPicture(
+      "PointLight { location 0 0 1 intensity 0.5 } "
+      "DirectionalLight { direction 1 0 -1 intensity 0.5 }",
+      0.3, {overheadLight(0.3, 0.5, 0.0, 0.0), obliqueLight(0.3, 0.5, 1.0)});
+}
+
+TEST_P(LightTypes, DeepShadowLightsOnlyLeavesOrdinaryLightsUnshadowed) {
+  // castingLights DEEP_SHADOW_LIGHTS: the point light lights the floor under the glass fully.
+  expectPicture("PointLight { location 0 0 1 }", 0.3,
+                {LightTerm{[](double x, double y, std::array<double, 3>& rgb) {
+                  const double term = 255.0 / std::sqrt(1.0 + x * x + y * y);
+                  for (double& channel : rgb) channel += term;
+                  return true;
+                }}},
+                "castingLights DEEP_SHADOW_LIGHTS");
+}
+
+// Coin's SoShadowSpotLight bounds its map by nearDistance: a glass nearer the light than that
+// (0.5 away, nearDistance 0.6) is not in the map and casts nothing, so the floor is lit
+// unfiltered inside the cone. The map's own bound: RAYS and the reference trace every caster.
+TEST(LightTypesMap, ShadowSpotLightsNearDistanceBoundsTheMap) {
+  const std::string text = sceneWith(
+      "ShadowSpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.7 nearDistance 0.6 }",
+      "method MAP", 0.3);
+  const Image image = renderIv(text, ShadowScene::kSize);
+  const std::string failure = compareWithExpectation(
+      image,
+      pictureOf(0.3, {LightTerm{[](double x, double y, std::array<double, 3>& rgb) {
+                  const double r = std::hypot(x, y), edge = std::tan(0.7);
+                  if (std::abs(r - edge) < kMargin) return false;
+                  const double term = r > edge ? 0.0 : 255.0 / std::sqrt(1.0 + r * r);
+                  for (double& channel : rgb) channel += term;
+                  return true;
+                }}}),
+      kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, LightTypes,
+                         ::testing::Values(Method::Map, Method::Rays, Method::Reference),
+                         methodName);
+
+// Lights that cannot cast light without a shadow, with one warning naming them; the picture is
+// still drawn (the floor fully lit by the other light).
+TEST(LightTypesBadInput, SpotBeyondAHemisphereAndZeroDirectionLightWithoutAShadow) {
+  init();  // before the capture: Coin's handlers are set up by the first init
+  CoinMessageCapture messages;
+  const std::string text = sceneWith(
+      "DEF Wide SpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 2 } "
+      "DEF Nowhere DirectionalLight { direction 0 0 0 }",
+      "method RAYS", 0.3);
+  const Image image = renderIv(text, ShadowScene::kSize);
+  int wide = 0, nowhere = 0;
+  for (const CoinMessageCapture::Message& m : messages.messages()) {
+    wide += m.text.find("\"Wide\" lights without a shadow: cutOffAngle") != std::string::npos;
+    nowhere += m.text.find("\"Nowhere\" lights without a shadow: its direction is zero") !=
+               std::string::npos;
+  }
+  EXPECT_EQ(wide, 1);
+  EXPECT_EQ(nowhere, 1);
+  // Under the glass's would-be shadow (0.4, 0) the spot light (GL cuts it off at 90 degrees)
+  // lights the floor unfiltered: Lambert 255 / sqrt(1 + 0.16).
+  const std::uint8_t* pixel = image.pixel(160, 120);
+  EXPECT_NEAR(pixel[0], 255.0 / std::sqrt(1.16), 1.5);
+  EXPECT_NEAR(pixel[1], 255.0 / std::sqrt(1.16), 1.5);
+}
+
+}  // namespace
+}  // namespace ivshadow::test
