@@ -178,7 +178,8 @@ SoCallbackAction::Response startShape(void* data, SoCallbackAction* action, cons
   }
 }
 
-SceneTriangles extract(Collector& collector, const std::function<void(SoCallbackAction&)>& apply) {
+SceneTriangles extract(const std::function<void(SoCallbackAction&)>& apply) {
+  Collector collector;
   SoCallbackAction action;
   action.addPreCallback(SoShape::getClassTypeId(), startShape, &collector);
   // Called only when the action is applied to a path: at the group, its tail.
@@ -206,15 +207,12 @@ SceneTriangles extract(Collector& collector, const std::function<void(SoCallback
 }  // namespace
 
 SceneTriangles extractShadowCasters(SoNode* root) {
-  Collector collector;
-  return extract(collector, [root](SoCallbackAction& action) { action.apply(root); });
+  return extract([root](SoCallbackAction& action) { action.apply(root); });
 }
 
 SceneTriangles extractShadowCasters(const SoPath* toGroup) {
-  Collector collector;
-  return extract(collector, [toGroup](SoCallbackAction& action) {
-    action.apply(const_cast<SoPath*>(toGroup));
-  });
+  return extract(
+      [toGroup](SoCallbackAction& action) { action.apply(const_cast<SoPath*>(toGroup)); });
 }
 
 }  // namespace ivshadow
