@@ -8,6 +8,7 @@
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SoPath.h>
+#include <Inventor/actions/SoAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/misc/SoNotification.h>
@@ -98,11 +99,29 @@ void GroupContents::findLights() {
   lightsValid_ = true;
 }
 
-void GroupContents::update() {
+void GroupContents::update(SoAction* action) {
   if (!lightsValid_) findLights();
   // Without deep shadows (a peeling separator on its own) there is nothing to cast into.
-  if (!castersValid_ && deepShadows_) {
-    casters_ = extractShadowCasters(owner_);
+  if (!deepShadows_) return;
+  SoState* state = action->getState();
+  if (!inherited_.matches(state)) {
+    if (!warnedInstanced_ && previous_.matches(state)) {
+      warnedInstanced_ = true;
+      SoDebugError::postWarning(
+          owner_->getTypeId().getName().getString(),
+          "%s is rendered through several paths under different materials, complexity or other "
+          "inherited state: its casters and maps are rebuilt for each path in every frame",
+          describeNode(owner_).c_str());
+    }
+    previous_ = std::move(inherited_);
+    inherited_ = InheritedState::capture(state);
+    castersValid_ = false;
+    ++mapsVersion_;
+  }
+  if (!castersValid_) {
+    // A copy: the action's own path changes as it traverses; this one is applied to.
+    const CoinRef<SoPath> toGroup(action->getCurPath()->copy());
+    casters_ = extractShadowCasters(toGroup.get());
     castersValid_ = true;
     // Neither method can cast a shadow from lines or points: say so once per shape.
     static std::set<std::string> warnedShapes;

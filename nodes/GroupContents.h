@@ -1,11 +1,13 @@
 #pragma once
 
 #include "scene/CoinRef.h"
+#include "scene/InheritedState.h"
 #include "scene/SceneTriangles.h"
 
 #include <cstdint>
 #include <vector>
 
+class SoAction;
 class SoDeepShadowLight;
 class SoLight;
 class SoNotList;
@@ -18,6 +20,16 @@ namespace ivshadow {
 // (one per GL light at most, nodes/CastingLight.h), how many lights are on, the last camera and
 // environment inside it, and the shadow casters. Searched again only after a notification says they
 // may have changed; the versions tell the per-context passes what to rebuild.
+//
+// The casters are taken in the traversal state in force where the group is rendered (a
+// Material, Complexity, DrawStyle, Units, ShadowStyle, texture... above the group applies to
+// them as it does to what Coin draws), in the group's coordinates like the lights, so that a
+// transform above moves both and changes no caster. The group is notified only of changes
+// below it: each frame the state it inherits is compared with the one the casters were taken
+// in (InheritedState), and a difference takes them again. A group rendered through several
+// paths (instanced) under different inherited states takes its casters, and rebuilds its
+// maps, for each path in turn: correct, but at a rebuild per path and frame; a warning says
+// so once. Instances that differ only in transforms share one extraction.
 class GroupContents {
  public:
   struct Light {
@@ -31,8 +43,10 @@ class GroupContents {
   GroupContents(SoSeparator* owner, bool deepShadows);
 
   void changed(SoNotList* list);
-  // Finds the lights and casters again where a change made them out of date.
-  void update();
+  // Finds the lights and casters again where a change below the group, or in the state it
+  // inherits, made them out of date. `action` is traversing the group (its current path ends
+  // at the group).
+  void update(SoAction* action);
 
   const std::vector<Light>& lights() const { return lights_; }
   int lightsOn() const { return subgraphLightsOn_; }
@@ -54,6 +68,9 @@ class GroupContents {
   CoinRef<SoPath> environmentPath_;  // the last SoEnvironment inside the group, if any
   int subgraphLightsOn_ = 0;
   bool castersValid_ = false;
+  InheritedState inherited_;  // what the casters were taken in
+  InheritedState previous_;   // the one before: a group met alternately under both is instanced
+  bool warnedInstanced_ = false;
   SceneTriangles casters_;
   std::uint64_t castersVersion_ = 0;
   std::uint64_t mapsVersion_ = 1;

@@ -70,7 +70,7 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   // The uniforms and the program belong to this frame; a render cache above the separator
   // must not replay them.
   SoCacheElement::invalidate(state);
-  contents_.update();
+  contents_.update(action);
   state->push();
   if (shading_.begin(action, pass->textureUnits()) == nullptr) {
     state->pop();

@@ -19,8 +19,10 @@ void SoTransparentShadowGroup::initClass() {
   // name to files, and SoType::fromName finds "TransparentShadowGroup" from either spelling.
   PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup",
                            &SoTransparentShadowGroup::createInstance, SoSeparator);
-  // The casters are collected with a SoCallbackAction, which must track SoShadowStyle.
+  // The casters are collected with a SoCallbackAction, which must track SoShadowStyle; the
+  // group reads the style it inherits when it renders (Coin enables that one too).
   SO_ENABLE(SoCallbackAction, SoShadowStyleElement);
+  SO_ENABLE(SoGLRenderAction, SoShadowStyleElement);
 }
 
 SoTransparentShadowGroup::SoTransparentShadowGroup()

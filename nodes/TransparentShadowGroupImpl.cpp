@@ -16,11 +16,13 @@
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetMatrixAction.h>
+#include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowSpotLight.h>
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/elements/SoDepthBufferElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
 #include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoGLShaderProgramElement.h>
 #include <Inventor/elements/SoModelMatrixElement.h>
 #include <Inventor/elements/SoProjectionMatrixElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
@@ -170,7 +172,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
   // group must not replay them.
   SoCacheElement::invalidate(state);
 
-  contents_.update();
+  contents_.update(action);
   const SceneTriangles& casters = contents_.casters();
   if (context.castersVersion != contents_.castersVersion()) {
     context.pass->uploadCasters(casters);
@@ -228,6 +230,10 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     // A peeling separator below shades its layers with this group's program and maps.
     ShadowGroupElement::setActiveGroup(state, &shading_);
+    // A shadow style above the group that does not receive: its shapes are drawn as a
+    // SoShadowStyle inside would draw them (shading off), until a style below turns it on.
+    if (!(SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED))
+      SoGLShaderProgramElement::enable(state, FALSE);
     const bool timed = passTiming();
     if (timed) context.shadingTimer.start();
     renderChildren_(action, inPath);

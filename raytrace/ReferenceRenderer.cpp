@@ -9,6 +9,7 @@
 #include "raytrace/EmbreeHandles.h"
 #include "raytrace/ParallelRows.h"
 #include "raytrace/SurfaceOptics.h"
+#include "scene/CoinRef.h"
 #include "scene/SceneTriangles.h"
 #include "scene/ShapeValidation.h"
 
@@ -20,6 +21,7 @@
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
+#include <Inventor/elements/SoDrawStyleElement.h>
 #include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoLightElement.h>
 #include <Inventor/lists/SoNodeList.h>
@@ -70,6 +72,7 @@ struct Light {
 struct Group {
   SbMatrix toWorld;
   const SoNode* node = nullptr;
+  CoinRef<SoPath> path;  // from the root: its casters are taken in the state in force there
   std::vector<int> outsideLights;  // lit the group from outside (SoLightElement at entry)
   std::vector<int> lights;         // every light turned on in the group's subgraph
   std::vector<int> casting;        // those that cast (nodes/CastingLight.h), as many as GL's
@@ -160,13 +163,11 @@ SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, cons
     return SoCallbackAction::CONTINUE;
   Group group;
   group.node = node;
+  group.path = CoinRef<SoPath>(action->getCurPath()->copy());
   group.toWorld = action->getModelMatrix();
   group.outsideLights = currentLights(data, action->getState());
   data.groupStack.push_back(int(data.groups.size()));
   data.groups.push_back(std::move(group));
-  // As in extractShadowCasters: inside a group every shape casts and receives by default.
-  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node),
-                            SoShadowStyleElement::CASTS_SHADOW_AND_SHADOWED);
   return SoCallbackAction::CONTINUE;
 }
 
@@ -228,9 +229,26 @@ SoCallbackAction::Response light(void* user, SoCallbackAction* action, const SoN
   return SoCallbackAction::CONTINUE;
 }
 
-SoCallbackAction::Response shapeStart(void* user, SoCallbackAction*, const SoNode*) {
-  ++static_cast<Extraction*>(user)->shape;
-  return SoCallbackAction::CONTINUE;
+void notTriangles(SoCallbackAction* action, Extraction& data) {
+  const SoNode* node = action->getCurPathTail();
+  if (data.skipped.count(node) == 0) data.skipped.emplace(node, describeNode(node));
+}
+
+SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, const SoNode*) {
+  auto& data = *static_cast<Extraction*>(user);
+  ++data.shape;
+  // SoCallbackAction generates a shape's triangles whatever the draw style, as for the
+  // casters (extractShadowCasters): GL draws outlines or points, which this does not draw.
+  switch (action->getDrawStyle()) {
+    case SoDrawStyleElement::INVISIBLE:
+      return SoCallbackAction::PRUNE;
+    case SoDrawStyleElement::LINES:
+    case SoDrawStyleElement::POINTS:
+      notTriangles(action, data);
+      return SoCallbackAction::PRUNE;
+    default:
+      return SoCallbackAction::CONTINUE;
+  }
 }
 
 void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
@@ -312,11 +330,6 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   }
   out.geometricNormal = glm::cross(world[1] - world[0], world[2] - world[0]);
   data.triangles.push_back(out);
-}
-
-void notTriangles(SoCallbackAction* action, Extraction& data) {
-  const SoNode* node = action->getCurPathTail();
-  if (data.skipped.count(node) == 0) data.skipped.emplace(node, describeNode(node));
 }
 
 void lineSegment(void* user, SoCallbackAction* action, const SoPrimitiveVertex*,
@@ -618,7 +631,9 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
           castingLight(*data.lights[std::size_t(index)].node, node, SbMatrix::identity(), where))
         group.casting.push_back(index);
     }
-    SceneTriangles casters = extractShadowCasters(const_cast<SoNode*>(group.node));
+    // In the group's coordinates, from the state in force at the group (as the GL path takes
+    // them), then placed in the world.
+    SceneTriangles casters = extractShadowCasters(group.path.get());
     for (TriangleVertex& vertex : casters.vertices) {
       SbVec3f p;
       group.toWorld.multVecMatrix(SbVec3f(vertex.position), p);
@@ -637,7 +652,8 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   ReferenceResult result;
   result.triangles = count;
   for (const auto& [node, name] : data.skipped)
-    result.warnings.push_back(name + " has no triangles; the reference does not draw it");
+    result.warnings.push_back(name +
+                              " is drawn with lines or points; the reference does not draw it");
   result.image.width = options.width;
   result.image.height = options.height;
   result.image.rgb.assign(std::size_t(options.width) * std::size_t(options.height) * 3, 0.0f);

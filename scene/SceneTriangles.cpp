@@ -3,15 +3,18 @@
 #include "scene/ShapeValidation.h"
 
 #include <Inventor/SbMatrix.h>
+#include <Inventor/SoPath.h>
 #include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
+#include <Inventor/elements/SoDrawStyleElement.h>
 #include <Inventor/elements/SoTextureQualityElement.h>
 #include <Inventor/nodes/SoShape.h>
 #include <Inventor/nodes/SoTexture2.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -26,6 +29,9 @@ struct Collector {
   std::map<int, std::pair<std::vector<TriangleVertex>, std::vector<std::uint32_t>>> byTexture;
   TextureCache textures;
   std::uint32_t shape = 0;
+  // From the coordinates of the traversal's root to those the casters are kept in: the
+  // inverse of the model matrix at the group, when the traversal starts above it.
+  SbMatrix toGroup = SbMatrix::identity();
 };
 
 }  // namespace
@@ -84,9 +90,8 @@ int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures
 
 namespace {
 
-SoCallbackAction::Response startGroup(void*, SoCallbackAction* action, const SoNode* node) {
-  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node),
-                            SoShadowStyleElement::CASTS_SHADOW_AND_SHADOWED);
+SoCallbackAction::Response enterGroup(void* data, SoCallbackAction* action, const SoNode*) {
+  static_cast<Collector*>(data)->toGroup = action->getModelMatrix().inverse();
   return SoCallbackAction::CONTINUE;
 }
 
@@ -100,7 +105,7 @@ void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
               const SoPrimitiveVertex* v2, const SoPrimitiveVertex* v3) {
   if (!(SoShadowStyleElement::get(action->getState()) & SoShadowStyleElement::CASTS_SHADOW)) return;
   auto& collector = *static_cast<Collector*>(data);
-  const SbMatrix& model = action->getModelMatrix();
+  const SbMatrix model = action->getModelMatrix() * collector.toGroup;
   const int texture = currentTexture(action, collector.result.textures, collector.textures);
   const SbMatrix& textureMatrix = action->getTextureMatrix();
   auto& [out, shapes] = collector.byTexture[texture];
@@ -150,24 +155,40 @@ void point(void* data, SoCallbackAction* action, const SoPrimitiveVertex*) {
   notTriangles(*static_cast<Collector*>(data), action);
 }
 
-SoCallbackAction::Response nextShape(void* data, SoCallbackAction*, const SoNode*) {
-  ++static_cast<Collector*>(data)->shape;
-  return SoCallbackAction::CONTINUE;
+// Before each shape: counts it, and prunes what Coin's GL rendering would not fill.
+SoCallbackAction::Response startShape(void* data, SoCallbackAction* action, const SoNode* node) {
+  auto& collector = *static_cast<Collector*>(data);
+  // A shape left of the path to the group is outside it (Coin traverses only the nodes there
+  // that affect the state, which shapes do not; this holds for node classes that forget to).
+  if (action->getCurPathCode() == SoAction::OFF_PATH) return SoCallbackAction::PRUNE;
+  ++collector.shape;
+  if (skipDefectiveShape(nullptr, action, node) == SoCallbackAction::PRUNE)
+    return SoCallbackAction::PRUNE;
+  // SoCallbackAction generates a shape's triangles whatever the draw style; Coin's GL
+  // rendering draws them as outlines or points (which cast nothing) or not at all.
+  switch (action->getDrawStyle()) {
+    case SoDrawStyleElement::INVISIBLE:
+      return SoCallbackAction::PRUNE;
+    case SoDrawStyleElement::LINES:
+    case SoDrawStyleElement::POINTS:
+      notTriangles(collector, action);
+      return SoCallbackAction::PRUNE;
+    default:
+      return SoCallbackAction::CONTINUE;
+  }
 }
 
-}  // namespace
-
-SceneTriangles extractShadowCasters(SoNode* root) {
+SceneTriangles extract(const std::function<void(SoCallbackAction&)>& apply) {
   Collector collector;
   SoCallbackAction action;
-  action.addPreCallback(SoShape::getClassTypeId(), skipDefectiveShape, nullptr);
-  action.addPreCallback(SoShape::getClassTypeId(), nextShape, &collector);
-  action.addPreCallback(root->getTypeId(), startGroup, nullptr);
+  action.addPreCallback(SoShape::getClassTypeId(), startShape, &collector);
+  // Called only when the action is applied to a path: at the group, its tail.
+  action.addPreTailCallback(enterGroup, &collector);
   action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
   action.addTriangleCallback(SoShape::getClassTypeId(), triangle, &collector);
   action.addLineSegmentCallback(SoShape::getClassTypeId(), lineSegment, &collector);
   action.addPointCallback(SoShape::getClassTypeId(), point, &collector);
-  action.apply(root);
+  apply(action);
 
   SceneTriangles& result = collector.result;
   for (auto& [texture, triangles] : collector.byTexture) {
@@ -180,7 +201,18 @@ SceneTriangles extractShadowCasters(SoNode* root) {
     result.shapes.insert(result.shapes.end(), shapes.begin(), shapes.end());
     result.batches.push_back(batch);
   }
-  return result;
+  return std::move(result);
+}
+
+}  // namespace
+
+SceneTriangles extractShadowCasters(SoNode* root) {
+  return extract([root](SoCallbackAction& action) { action.apply(root); });
+}
+
+SceneTriangles extractShadowCasters(const SoPath* toGroup) {
+  return extract(
+      [toGroup](SoCallbackAction& action) { action.apply(const_cast<SoPath*>(toGroup)); });
 }
 
 }  // namespace ivshadow

@@ -13,6 +13,7 @@
 #include <vector>
 
 class SoNode;
+class SoPath;
 class SoCallbackAction;
 
 namespace ivshadow {
@@ -64,10 +65,18 @@ struct SceneTriangles {
   std::size_t triangleCount() const { return vertices.size() / 3; }
 };
 
-// The triangles under `root` that cast shadows: those whose SoShadowStyle includes
-// CASTS_SHADOW (the default inside a SoTransparentShadowGroup). Fully clear triangles are
-// kept; they cast nothing, which the map builder handles per fragment (texture alpha).
+// The triangles under `root` that cast shadows, taken from a default traversal state: those
+// whose SoShadowStyle includes CASTS_SHADOW (the default) and that Coin draws filled
+// (SoDrawStyle FILLED; LINES and POINTS are listed in `withoutTriangles`, INVISIBLE is left
+// out). Fully clear triangles are kept; they cast nothing, which the map builder handles per
+// fragment (texture alpha).
 IVSHADOW_INTERNAL SceneTriangles extractShadowCasters(SoNode* root);
+
+// The same for the node at the tail of `toGroup` (a path from the scene's root), in the
+// traversal state in force there: the materials, complexity, textures, draw style, shape
+// hints, units and shadow style set by nodes above it apply, as they do when Coin renders it.
+// The triangles are in the tail's own coordinates (transforms above it are undone).
+IVSHADOW_INTERNAL SceneTriangles extractShadowCasters(const SoPath* toGroup);
 
 // A node as messages name it: its type and, when it has one, its DEF name ("LineSet 'Wire'").
 IVSHADOW_INTERNAL std::string describeNode(const SoNode* node);

@@ -36,6 +36,13 @@ struct DeepShadowStatistics;
   style includes SHADOWED receive shadows. Like SoShadowGroup, the group treats every light
   found in its subgraph as lighting all of it.
 
+  The state in force where the group is traversed applies to its casters as it does to what
+  Coin draws: a Material, BaseColor, Complexity, Texture2, Units, DrawStyle, ShapeHints,
+  LightModel or SoShadowStyle set above the group, outside it (unlike SoShadowGroup, which
+  resets the shadow style at the group). Casters and lights are kept in the group's
+  coordinates, so transforms above move both. A change above the group is seen in the next
+  frame (see docs/DEEP_SHADOWS.md, "State inherited from above the group").
+
   FILE FORMAT/DEFAULTS:
   \code
     TransparentShadowGroup {

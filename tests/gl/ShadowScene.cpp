@@ -46,6 +46,7 @@ std::string ShadowScene::text() const {
      << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
      << "  Rotation { rotation " << axis[0] << ' ' << axis[1] << ' ' << axis[2] << ' '
      << -rotationAngle << " }\n"
+     << "  " << aboveGroup << "\n"
      << "  DEF Group TransparentShadowGroup {\n"
      << "    isActive " << (shadowGroupActive ? "TRUE" : "FALSE") << "\n"
      << "    Rotation { rotation " << axis[0] << ' ' << axis[1] << ' ' << axis[2] << ' '
@@ -68,22 +69,26 @@ std::string ShadowScene::text() const {
   for (const Filter& f : filters) {
     const double s = f.halfSize, h = f.height;
     iv << "    DEF Filter" << index++ << " Separator {\n      " << f.nodes << "\n"
-       << "      Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor " << f.diffuse[0]
-       << ' ' << f.diffuse[1] << ' ' << f.diffuse[2] << " transparency " << f.transparency << " }\n"
-       << "      Coordinate3 { point [ " << -s << ' ' << -s << ' ' << h << ", " << s << ' ' << -s
+       << "      ";
+    if (f.ownMaterial)
+      iv << "Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor " << f.diffuse[0] << ' '
+         << f.diffuse[1] << ' ' << f.diffuse[2] << " transparency " << f.transparency << " }";
+    iv << "\n      Coordinate3 { point [ " << -s << ' ' << -s << ' ' << h << ", " << s << ' ' << -s
        << ' ' << h << ", " << s << ' ' << s << ' ' << h << ", " << -s << ' ' << s << ' ' << h
        << " ] }\n      " << f.faceNodes << "\n"
        << "      FaceSet { numVertices 4 }\n    }\n";
   }
   if (peelFilters) iv << "    }\n";
-  iv << "  }\n}\n";
+  iv << "    " << groupNodes << "\n  }\n}\n";
   return iv.str();
 }
 
 Expectation ShadowPicture::operator()(int px, int py) const {
-  const double x = -1.2 + (px + 0.5) / 100.0;
-  const double y = 1.2 - (py + 0.5) / 100.0;
-  const double margin = edgeMarginPixels / 100.0;
+  return at(-1.2 + (px + 0.5) / 100.0, 1.2 - (py + 0.5) / 100.0, 1.0 / 100.0);
+}
+
+Expectation ShadowPicture::at(double x, double y, double pixel) const {
+  const double margin = edgeMarginPixels * pixel;
   const double extent = std::max(std::abs(x), std::abs(y));
   Expectation e;
   if (extent >= 1.0 + margin) {

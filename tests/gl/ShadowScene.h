@@ -21,8 +21,9 @@ struct Filter {
   double height = 0.5;
   std::array<double, 3> diffuse{1.0, 0.0, 0.0};
   double transparency = 0.5;
-  std::string nodes;      // Inventor nodes placed before the filter's material (a texture)
-  std::string faceNodes;  // Inventor nodes placed after it, just before the face
+  std::string nodes;        // Inventor nodes placed before the filter's material (a texture)
+  std::string faceNodes;    // Inventor nodes placed after it, just before the face
+  bool ownMaterial = true;  // false: no Material of its own (it takes the one in force)
 };
 
 enum class ColourModel { Monochrome, Saturate, Power };
@@ -54,6 +55,8 @@ struct ShadowScene {
   std::string method = "MAP";  // the lights' method: these scenes test the map unless told
   std::string lightFields;     // extra fields of the DeepShadowLight, e.g. "maxLayers 1"
   std::string floorNodes;      // Inventor nodes placed before the floor's mesh
+  std::string aboveGroup;      // Inventor nodes placed just before the group, outside it
+  std::string groupNodes;      // Inventor nodes placed in the group after the filters
   std::array<double, 3> rotationAxis{0.0, 0.0, 1.0};
   double rotationAngle = 0.0;
   int floorCells = 1;  // quads per side of the floor mesh
@@ -77,6 +80,8 @@ struct ShadowPicture {
   bool checkFilters = false;  // true when the filters are invisible (transparency 1)
 
   Expectation operator()(int px, int py) const;
+  // The same at the floor point (x, y), `pixel` floor units a pixel (margins are in pixels).
+  Expectation at(double x, double y, double pixel) const;
 };
 
 // A scene with the analytic picture it must give: the cases every shadow method (the map, the
