@@ -131,10 +131,27 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
   framebuffer_.reset();
 }
 
+std::uint64_t DeepShadowMap::peakBytesFor(const MapRequest& request) {
+  const std::uint64_t texels =
+      std::uint64_t(request.resolution) * std::uint64_t(request.resolution);
+  const std::uint64_t scratch =
+      std::uint64_t(6 * scratchLayers(request)) * bytesPerLayerTexel(request);
+  return texels * (2u * scratch + 2u * (4u + 16u) + 4u);
+}
+
 MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& program,
                                     const CasterBuffers& casters, unsigned int flagsBuffer) {
-  allocateScratch(request);
   MapBuildResult result;
+  // Errors before the build are not the build's: taken off so that an out-of-memory below is
+  // seen as this build's.
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  allocateScratch(request);
+  if (glGetError() == GL_OUT_OF_MEMORY) {
+    result.outOfMemory = true;
+    releaseAll();
+    return result;
+  }
   const GLuint fbo = framebuffer_.get();
   const float noSurface[4] = {kNoSurface, 0.0f, 0.0f, 0.0f};
   const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
@@ -224,7 +241,26 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
     }
   }
   keepUsedLayers(request, result);
+  if (glGetError() == GL_OUT_OF_MEMORY) {
+    result = MapBuildResult{};
+    result.outOfMemory = true;
+    releaseAll();
+  }
   return result;
+}
+
+void DeepShadowMap::releaseAll() {
+  depth_.reset();
+  visibility_.reset();
+  scratchDepth_.reset();
+  scratchVisibility_.reset();
+  for (int i = 0; i < 2; ++i) {
+    peelDepth_[i].reset();
+    peelVisibility_[i].reset();
+  }
+  depthBuffer_.reset();
+  framebuffer_.reset();
+  bytes_ = peakBytes_ = 0;
 }
 
 void DeepShadowMap::bind(int depthUnit, int visibilityUnit) const {

@@ -24,6 +24,7 @@ struct MapRequest {
 };
 
 struct MapBuildResult {
+  bool outOfMemory = false;  // GL_OUT_OF_MEMORY during the build: the map holds nothing
   // Layers stored per face: at most maxLayers, plus the closing layer (DeepShadowMap).
   std::array<int, 6> layersUsed{};
   std::array<int, 6> passes{};
@@ -46,6 +47,8 @@ class DeepShadowMap {
   // left changed: the caller saves and restores GL state around the build.
   MapBuildResult build(const MapRequest& request, const GlProgram& program,
                        const CasterBuffers& casters, unsigned int flagsBuffer);
+  // What a build of `request` needs at its peak, at most (all scratch layers kept).
+  static std::uint64_t peakBytesFor(const MapRequest& request);
   void bind(int depthUnit, int visibilityUnit) const;
   // GPU memory the map keeps between builds, and what a build needs at its peak.
   std::uint64_t bytes() const { return bytes_; }
@@ -54,6 +57,7 @@ class DeepShadowMap {
  private:
   void allocateScratch(const MapRequest& request);
   void keepUsedLayers(const MapRequest& request, MapBuildResult& result);
+  void releaseAll();
 
   GlTexture depth_;
   GlTexture visibility_;

@@ -27,8 +27,9 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
              " fragment texture units are needed; this context offers " + std::to_string(units);
     return nullptr;
   }
-  if (drawBuffers < 4 || layers < 6 * kMaxMapLayers) {
-    whyNot = "4 draw buffers and " + std::to_string(6 * kMaxMapLayers) +
+  // Each face peels kMaxMapLayers layers and may close with one more (DeepShadowMap.h).
+  if (drawBuffers < 4 || layers < 6 * (kMaxMapLayers + 1)) {
+    whyNot = "4 draw buffers and " + std::to_string(6 * (kMaxMapLayers + 1)) +
              " array texture layers are needed";
     return nullptr;
   }

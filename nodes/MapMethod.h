@@ -1,6 +1,9 @@
 #pragma once
 
+#include <cstdint>
+
 class SbBox3f;
+class SoNode;
 
 namespace ivshadow {
 
@@ -15,8 +18,17 @@ struct MapState;
 // from the casters' bounds seen from map.position.
 void fitMapRange(MapState& map, const SbBox3f& casterBounds);
 
+// The memory a map build may take in the current context: what GL says it can give
+// (callbacks/GlMemoryBudget.h), capped by IVSHADOW_GL_MEMORY_LIMIT (bytes; a value that is
+// not a number above 0 is reported once and ignored); 0 when nothing says.
+std::uint64_t mapMemoryBudget(bool softwareRenderer);
+
 // Builds slot `slot`'s map as `map` asks (settings resolved, range fitted), records where its
-// layers went in `map` and what it holds in `light`.
-void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLightStatistics& light);
+// layers went in `map` and what it holds in `light`. A resolution whose build would need more
+// than `budget` bytes (0: unknown), or that runs out of GL memory, is halved until the build
+// fits, with one warning naming `light node`'s field; map.settings.resolution then holds the
+// resolution built. Where even the smallest runs out, the light lights without a shadow.
+void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLightStatistics& light,
+                  const SoNode& lightNode, std::uint64_t budget);
 
 }  // namespace ivshadow

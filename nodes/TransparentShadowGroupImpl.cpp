@@ -71,6 +71,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.maps.assign(lights.size(), MapState{});
   statistics_.lights.clear();
   SoGetMatrixAction matrixAction(action->getViewportRegion());
+  const std::uint64_t memoryBudget = mapMemoryBudget(context.softwareRenderer);
   auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
   for (std::size_t slot = 0; slot < lights.size(); ++slot) {
     const GroupContents::Light& entry = lights[slot];
@@ -126,7 +127,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
       statistics_.lights.push_back(light);
       continue;
     }
-    buildSlotMap(pass, int(slot), map, light);
+    buildSlotMap(pass, int(slot), map, light, *entry.light, memoryBudget);
     statistics_.lights.push_back(light);
   }
   pass.keepSlots(int(lights.size()));

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -67,6 +68,41 @@ TEST(RenderCommand, StatsJsonHasTheDocumentedKeys) {
   EXPECT_TRUE(stats.at("passes").is_object());
   EXPECT_TRUE(stats.at("passes").contains("scene_ms"));
   EXPECT_EQ(stats.at("transparency"), "SORTED_LAYERS_BLEND");
+}
+
+// A map resolution whose build needs more memory than GL can give (here capped by
+// IVSHADOW_GL_MEMORY_LIMIT at 100 MB) is halved until it fits, with one warning naming the
+// light and the field, and the picture is the one that resolution gives: not a dark or grey
+// one with exit 0. The build's peak at 2048 with 6 coloured layers is some 7 GB.
+TEST(RenderCommand, AMapTooLargeForGlMemoryIsBuiltSmallerWithOneWarning) {
+  const std::string dir = test::outputDir();
+  const std::vector<std::string> common = {
+      test::ivshadowExe(), "render", scene("coloured_shadows.iv"), "--size", "160x120", "--set",
+      "Lamp.method=MAP"};
+  std::vector<std::string> capped = common;
+  capped.insert(capped.end(), {"-o", dir + "/capped.png", "--stats", dir + "/stats.json", "--set",
+                               "Lamp.resolution=2048"});
+  const test::ProcessResult result = run(capped, {"IVSHADOW_GL_MEMORY_LIMIT=100000000"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(test::lines(result.err).size(), 1u) << result.err;
+  EXPECT_NE(result.err.find("SoDeepShadowLight \"Lamp\": field resolution 2048 needs"),
+            std::string::npos)
+      << result.err;
+  std::ifstream in(dir + "/stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  const int resolution = stats.at("dsm_layers_used")[0].at("resolution");
+  EXPECT_LT(resolution, 2048);
+  EXPECT_GE(resolution, 64) << "halved further than 100 MB asks";
+  EXPECT_NE(result.err.find("using " + std::to_string(resolution)), std::string::npos)
+      << result.err;
+  EXPECT_LE(stats.at("dsm_layers_used")[0].at("peak_bytes").get<std::uint64_t>(), 100000000u);
+  // The same picture as that resolution asked for directly.
+  std::vector<std::string> direct = common;
+  direct.insert(direct.end(), {"-o", dir + "/direct.png", "--set",
+                               "Lamp.resolution=" + std::to_string(resolution)});
+  ASSERT_EQ(run(direct).exitCode, 0);
+  const Image a = readPng(dir + "/capped.png"), b = readPng(dir + "/direct.png");
+  EXPECT_TRUE(std::equal(a.data(), a.data() + 160 * 120 * 4, b.data()));
 }
 
 TEST(RenderCommand, StatsReportDeepShadowMapsBuiltOnce) {
@@ -360,8 +396,8 @@ TEST(RenderCommand, OutputsNamingTheInputSceneAreRefusedAndTheSceneIsKept) {
   const std::string copy = dir + "/scene.iv";
   std::filesystem::copy_file(scene("lit_plane.iv"), copy);
   const auto before = std::filesystem::file_size(copy);
-  const test::ProcessResult result =
-      run({test::ivshadowExe(), "render", copy, "-o", dir + "/out.png", "--stats", dir + "/./scene.iv"});
+  const test::ProcessResult result = run({test::ivshadowExe(), "render", copy, "-o",
+                                          dir + "/out.png", "--stats", dir + "/./scene.iv"});
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.err.find("cannot write statistics over the input file"), std::string::npos)
       << result.err;
