@@ -1,0 +1,258 @@
+// The corpus test (issue 21): every model of SGI's Open Inventor sample data (Debian
+// `inventor-data`), none of them written for the plugin, wrapped unchanged in a
+// TransparentShadowGroup the way the viewer's add-shadows does it, renders with `ivshadow
+// render` and agrees with `ivshadow reference`. docs/CORPUS.md has the table of the results and
+// explains the worst ones; bench/corpus_table.sh regenerates it from this test's output.
+#include "image/ImageComparison.h"
+#include "image/PngFile.h"
+#include "ivshadow/IvShadowInit.h"
+#include "scene/CoinRef.h"
+#include "tests/support/TestSupport.h"
+#include "viewer/WrapInShadowGroup.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/SoOutput.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/actions/SoWriteAction.h>
+#include <Inventor/errors/SoReadError.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoFile.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ivshadow {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Where Debian's inventor-data puts the models (tests/CMakeLists.txt may point elsewhere).
+const std::string kModelsDir = IVSHADOW_CORPUS_DIR;
+// The package's model count (inventor-data 2.1.5-10, 97 .iv files in 18 folders): a smaller
+// count means a partial install and models this test would silently skip.
+constexpr std::size_t kModelCount = 97;
+
+constexpr int kWidth = 160, kHeight = 120;
+const std::string kSize = std::to_string(kWidth) + "x" + std::to_string(kHeight);
+
+// Every .iv file under the models folder, relative to it, sorted.
+std::vector<std::string> corpusModels() {
+  std::vector<std::string> models;
+  std::error_code error;
+  if (!fs::is_directory(kModelsDir, error)) return models;
+  for (const auto& entry : fs::recursive_directory_iterator(kModelsDir, error)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".iv")
+      models.push_back(fs::relative(entry.path(), kModelsDir).string());
+  }
+  std::sort(models.begin(), models.end());
+  return models;
+}
+
+// What a model's picture must reach against the reference, and why.
+struct Expectation {
+  double psnrFloor;
+  const char* reason;
+};
+
+// The floor of a model without an entry below. Measured at 160 x 120 on llvmpipe
+// (docs/CORPUS.md): TODO.
+constexpr Expectation kDefault{30.0, "TODO"};
+
+const std::map<std::string, Expectation>& expectations() {
+  static const std::map<std::string, Expectation> table = {};
+  return table;
+}
+
+Expectation expectationFor(const std::string& model) {
+  const auto found = expectations().find(model);
+  return found == expectations().end() ? kDefault : found->second;
+}
+
+// The first camera a render would use (not under a switched-off switch), or nullptr.
+const SoCamera* activeCamera(SoNode* root) {
+  SoSearchAction search;
+  search.setType(SoCamera::getClassTypeId());
+  search.setInterest(SoSearchAction::FIRST);
+  search.setSearchingAll(FALSE);
+  search.apply(root);
+  return search.getPath() ? static_cast<const SoCamera*>(search.getPath()->getTail()) : nullptr;
+}
+
+// Reads `path` with Coin alone (not the CLI's loader, whose checks are under test). Empty
+// when Coin cannot read it: no scene, or a read error posted on the way (a File node whose file
+// is missing leaves an empty node and a scene that is not the model).
+CoinRef<SoSeparator> readWithCoin(const std::string& path) {
+  SoInput input;
+  if (!input.openFile(path.c_str())) return {};
+  int errors = 0;
+  SoErrorCB* const previous = SoReadError::getHandlerCallback();
+  void* const previousData = SoReadError::getHandlerData();
+  SoReadError::setHandlerCallback(
+      [](const SoError* error, void* count) {
+        ++*static_cast<int*>(count);
+        std::fprintf(stderr, "%s\n", error->getDebugString().getString());
+      },
+      &errors);
+  CoinRef<SoSeparator> root(SoDB::readAll(&input));
+  SoReadError::setHandlerCallback(previous, previousData);
+  if (errors > 0) root.reset();
+  return root;
+}
+
+// Coin writes a File node as its name, not its contents, and a relative name is looked up
+// beside the file being read: in the test's folder once the scene is wrapped there. Each File
+// node of the model (those of included files are written with them) is made to name its file
+// by its absolute path, which reads the same file again; nothing else changes.
+void anchorFileNodes(SoNode* node, const fs::path& modelDir) {
+  if (node->isOfType(SoFile::getClassTypeId())) {
+    auto* file = static_cast<SoFile*>(node);
+    const fs::path name = file->name.getValue().getString();
+    if (name.is_relative()) file->name.setValue((modelDir / name).c_str());
+    return;
+  }
+  if (!node->isOfType(SoGroup::getClassTypeId())) return;
+  auto* group = static_cast<SoGroup*>(node);
+  for (int i = 0; i < group->getNumChildren(); ++i) anchorFileNodes(group->getChild(i), modelDir);
+}
+
+// Writes `root` as an ASCII Inventor file. Coin writes floats to eight significant digits, the
+// model's values to within a unit in their last place, so the wrapped scene is the model's
+// graph inside the group.
+void writeScene(SoNode* root, const std::string& path) {
+  SoOutput output;
+  ASSERT_TRUE(output.openFile(path.c_str())) << path;
+  SoWriteAction write(&output);
+  write.apply(root);
+  output.closeFile();
+}
+
+// Files in `dir`, sorted: what a run left behind.
+std::vector<std::string> filesIn(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The test of "household/teapot.iv" is InventorData.household_teapot.
+std::string testName(const std::string& model) {
+  std::string name = model.substr(0, model.size() - 3);
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return name;
+}
+
+void checkModel(const std::string& model);
+
+// One test per model, registered by name (a value-parameterised test would carry the parameter
+// in every CTest name).
+class CorpusModel : public ::testing::Test {
+ public:
+  explicit CorpusModel(std::string model) : model_(std::move(model)) {}
+  void SetUp() override { init(); }
+  void TestBody() override { checkModel(model_); }
+
+ private:
+  std::string model_;
+};
+
+const bool registered = [] {
+  for (const std::string& model : corpusModels()) {
+    ::testing::RegisterTest("InventorData", testName(model).c_str(), nullptr, nullptr, __FILE__,
+                            __LINE__,
+                            [model]() -> ::testing::Test* { return new CorpusModel(model); });
+  }
+  return true;
+}();
+
+TEST(Corpus, InventorDataIsInstalled) {
+  EXPECT_EQ(corpusModels().size(), kModelCount)
+      << "SGI's sample models are missing from " << kModelsDir
+      << ": install Debian's inventor-data (./run test does)";
+}
+
+// One model: wrapped, rendered and traced at 160 x 120, compared. Both commands run at once
+// (the reference on all cores, the render mostly waiting for llvmpipe). Writes result.txt,
+// the figures bench/corpus_table.sh puts in docs/CORPUS.md.
+void checkModel(const std::string& model) {
+  const std::string source = kModelsDir + "/" + model;
+  const std::string dir = test::outputDir();
+  const std::string wrapped = dir + "/wrapped.iv", gl = dir + "/gl.png",
+                    reference = dir + "/reference.png";
+
+  CoinRef<SoSeparator> root = readWithCoin(source);
+  if (!root) {
+    // Coin itself cannot read it: the CLI must say so, naming the file, and write nothing.
+    const test::ProcessResult result =
+        test::run({test::ivshadowExe(), "render", source, "-o", gl, "--size", kSize});
+    EXPECT_EQ(result.exitCode, 2) << result.err;
+    EXPECT_NE(result.err.find(model), std::string::npos) << result.err;
+    EXPECT_FALSE(test::fileExists(gl));
+    std::ofstream(dir + "/result.txt")
+        << "model " << model << "\nunreadable " << result.exitCode << "\n";
+    return;
+  }
+  const SbViewportRegion viewport(kWidth, kHeight);
+  // The light goes where the viewer's add-shadows puts it, seen from the camera the render will
+  // use: the model's own, or the one ViewSetup::prepare adds, which looks down -z like a
+  // camera without orientation (nullptr here). With that light, or the model's own lights,
+  // inside the group the render adds no headlight: one outside the group would light the
+  // scene without casting.
+  anchorFileNodes(root.get(), fs::path(source).parent_path());
+  wrapInShadowGroup(root.get(), activeCamera(root.get()), viewport);
+  writeScene(root.get(), wrapped);
+  root.reset();
+
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const int renderPid =
+      test::startProcess({test::ivshadowExe(), "render", wrapped, "-o", gl, "--size", kSize}, {},
+                         dir + "/render.out", dir + "/render.err");
+  const int referencePid = test::startProcess({test::ivshadowExe(), "reference", wrapped, "-o",
+                                               reference, "--size", kSize, "--threads", "1"},
+                                              {}, dir + "/reference.out", dir + "/reference.err");
+  const int renderExit = test::waitForProcess(renderPid);
+  const double renderSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const int referenceExit = test::waitForProcess(referencePid);
+  const double bothSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+  std::ofstream result(dir + "/result.txt");
+  result << "model " << model << "\nrender_exit " << renderExit << "\nreference_exit "
+         << referenceExit << "\nrender_s " << renderSeconds << "\nboth_s " << bothSeconds << "\n";
+  // Exit 0 from both: the model was readable, so nothing is bad input (a crash is 128 + the
+  // signal).
+  ASSERT_EQ(renderExit, 0) << "render: see " << dir << "/render.err";
+  ASSERT_EQ(referenceExit, 0) << "reference: see " << dir << "/reference.err";
+  // Nothing but the two pictures beside the inputs and logs: no temporary file left over.
+  EXPECT_EQ(filesIn(dir),
+            (std::vector<std::string>{"gl.png", "reference.err", "reference.out", "reference.png",
+                                      "render.err", "render.out", "result.txt", "wrapped.iv"}));
+
+  const Image actual = readPng(gl), exact = readPng(reference);
+  ASSERT_EQ(actual.width(), kWidth);
+  ASSERT_EQ(actual.height(), kHeight);
+  const ImageComparison metrics = ImageComparison::compare(exact, actual, "reference", "gl");
+  result << "psnr " << metrics.all.psnr << "\nmax_error " << metrics.all.maxError << "\n";
+  const Expectation expected = expectationFor(model);
+  if (metrics.all.psnr < expected.psnrFloor)
+    writePng(dir + "/diff.png", errorHeatMap(exact, actual, 0));
+  EXPECT_GE(metrics.all.psnr, expected.psnrFloor)
+      << model << " (" << expected.reason << "): largest error " << metrics.all.maxError << " at "
+      << metrics.maxErrorX << "," << metrics.maxErrorY << "; see " << dir;
+}
+
+}  // namespace
+}  // namespace ivshadow
