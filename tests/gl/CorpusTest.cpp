@@ -67,11 +67,49 @@ struct Expectation {
 };
 
 // The floor of a model without an entry below. Measured at 160 x 120 on llvmpipe
-// (docs/CORPUS.md): TODO.
-constexpr Expectation kDefault{30.0, "TODO"};
+// (docs/CORPUS.md, every run the same): 44 of the 95 readable models are identical to the
+// reference, and the worst model without an entry, vehicles/spacestation.iv, is at 44.1 dB
+// (a few silhouette pixels where the rasteriser and the ray tracer find different surfaces).
+// 43 dB is an RMSE of 1.8/255 over the picture.
+constexpr Expectation kDefault{43.0, "no known difference between the GL path and the reference"};
 
+// Models below the default, each a little under its measurement (the pictures do not vary
+// between runs), with the cause: docs/CORPUS.md shows the pictures. A fix of a cause raises
+// the model's figure; a model that falls under its floor renders differently from before.
 const std::map<std::string, Expectation>& expectations() {
-  static const std::map<std::string, Expectation> table = {};
+  static const std::map<std::string, Expectation> table = {
+      // 16.0 dB: white coastlines of a LineSet; the reference draws no lines or points.
+      {"geography/coasts.iv", {15.0, "lines, which the reference does not draw"}},
+      // 18.4 dB: eight Text2 strings; the reference draws no screen-aligned bitmap text.
+      {"simple/text.iv", {17.0, "Text2, which the reference does not draw"}},
+      // 20.0 dB: two dodecahedra under DrawStyle LINES, drawn filled by the reference.
+      {"simple/three.iv", {19.0, "DrawStyle LINES, which the reference draws filled"}},
+      // 22.9 dB: Coin draws diffuseColor 1.5 1.3 1.1 as 0.5 0.3 0.1 (it packs colours into
+      // eight bits without clamping), the reference as given; the group also ignores
+      // TextureCoordinatePlane.
+      {"furniture/table.iv", {22.0, "diffuse colour above 1 wrapped by Coin; texgen ignored"}},
+      // 23.3 dB: diffuseColor 1.7 drawn by Coin as 0.7.
+      {"toys/legoDog.iv", {22.0, "diffuse colour above 1 wrapped by Coin"}},
+      // 24.3 dB: axes of an IndexedLineSet and Text2 labels, neither drawn by the reference.
+      {"simple/axis.iv", {23.0, "lines and Text2, which the reference does not draw"}},
+      // 30.8 dB: the logo's strips lie in the case's faces: the two renderers pick different
+      // surfaces where they coincide.
+      {"sgi/indigo.iv", {29.5, "coplanar decal strips"}},
+      // 32.0 dB: one diagonal silhouette edge through pixel centres, owned by different faces
+      // (of different colours) in the rasteriser and the ray tracer.
+      {"spongetri4.iv", {31.0, "an edge through pixel centres"}},
+      // 33.3 dB: a one-pixel purple arc at the right border that the reference draws and GL
+      // does not; not explained yet (docs/CORPUS.md).
+      {"toys/jackInTheBox.iv", {32.0, "an arc at the border only the reference draws"}},
+      // 33.3 dB: the wing bracing under DrawStyle LINES.
+      {"vehicles/kittyHawk.iv", {32.0, "DrawStyle LINES, which the reference draws filled"}},
+      // 34.5 dB: the stripes of its texture, sampled with mipmaps by GL and at the base level
+      // by the reference.
+      {"toys/top.iv", {33.5, "texture filtering"}},
+      // 37.4 dB: a flat BASE_COLOR floor plan seen almost edge-on: GL draws a dark strip of it
+      // that the reference does not; not explained yet.
+      {"buildings/Barcelona.iv", {36.0, "a grazing strip only GL draws"}},
+  };
   return table;
 }
 
@@ -195,14 +233,18 @@ void checkModel(const std::string& model) {
 
   CoinRef<SoSeparator> root = readWithCoin(source);
   if (!root) {
-    // Coin itself cannot read it: the CLI must say so, naming the file, and write nothing.
-    const test::ProcessResult result =
-        test::run({test::ivshadowExe(), "render", source, "-o", gl, "--size", kSize});
-    EXPECT_EQ(result.exitCode, 2) << result.err;
-    EXPECT_NE(result.err.find(model), std::string::npos) << result.err;
-    EXPECT_FALSE(test::fileExists(gl));
-    std::ofstream(dir + "/result.txt")
-        << "model " << model << "\nunreadable " << result.exitCode << "\n";
+    // Coin itself cannot read it: both commands must say so, naming the file, and write nothing.
+    std::ofstream result(dir + "/result.txt");
+    result << "model " << model << "\n";
+    for (const std::string command : {"render", "reference"}) {
+      const test::ProcessResult run =
+          test::run({test::ivshadowExe(), command, source, "-o", gl, "--size", kSize});
+      EXPECT_EQ(run.exitCode, 2) << command << ": " << run.err;
+      EXPECT_NE(run.err.find(model), std::string::npos) << command << ": " << run.err;
+      EXPECT_FALSE(test::fileExists(gl)) << command;
+      result << command << "_exit " << run.exitCode << "\n";
+    }
+    result << "unreadable 1\n";
     return;
   }
   const SbViewportRegion viewport(kWidth, kHeight);
