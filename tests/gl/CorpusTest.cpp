@@ -101,16 +101,16 @@ const std::map<std::string, Expectation>& expectations() {
       // (of different colours) in the rasteriser and the ray tracer.
       {"spongetri4.iv", {31.0, "an edge through pixel centres"}},
       // 33.3 dB: a one-pixel purple arc at the right border that the reference draws and GL
-      // does not; not explained yet (docs/CORPUS.md).
-      {"toys/jackInTheBox.iv", {32.0, "an arc at the border only the reference draws"}},
+      // does not, by its colour the Text3 "?" seen from the side; not explained yet.
+      {"toys/jackInTheBox.iv", {32.0, "a Text3 glyph only the reference draws"}},
       // 33.3 dB: the wing bracing under DrawStyle LINES.
       {"vehicles/kittyHawk.iv", {32.0, "DrawStyle LINES, which the reference draws filled"}},
       // 34.5 dB: the stripes of its texture, sampled with mipmaps by GL and at the base level
       // by the reference.
       {"toys/top.iv", {33.5, "texture filtering"}},
-      // 37.4 dB: a flat BASE_COLOR floor plan seen almost edge-on: GL draws a dark strip of it
-      // that the reference does not; not explained yet.
-      {"buildings/Barcelona.iv", {36.0, "a grazing strip only GL draws"}},
+      // 37.4 dB: a flat BASE_COLOR floor plan almost in the plane of the eye: GL rasterises its
+      // nearly degenerate triangles into a dark strip that the reference's grazing rays miss.
+      {"buildings/Barcelona.iv", {36.0, "a plan seen edge-on"}},
   };
   return table;
 }
