@@ -27,6 +27,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -42,7 +43,7 @@ namespace fs = std::filesystem;
 
 // Where Debian's inventor-data puts the models (tests/CMakeLists.txt may point elsewhere).
 const std::string kModelsDir = IVSHADOW_CORPUS_DIR;
-// The package's model count (inventor-data 2.1.5-10, 97 .iv files in 18 folders): a smaller
+// The package's model count (inventor-data 2.1.5-10+dfsg-2 holds 97 .iv files): a smaller
 // count means a partial install and models this test would silently skip.
 constexpr std::size_t kModelCount = 97;
 
