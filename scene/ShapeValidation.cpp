@@ -18,6 +18,7 @@
 #include <Inventor/nodes/SoQuadMesh.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
+#include <algorithm>
 #include <mutex>
 #include <set>
 #include <utility>
@@ -49,6 +50,16 @@ Counts countsFor(SoCallbackAction* action, const SoVertexShape* shape) {
     if (property->texCoord.getNum() > 0) counts.textureCoordinates = property->texCoord.getNum();
   }
   return counts;
+}
+
+// The material binding the shape draws with: its own SoVertexProperty's where that holds
+// colours, otherwise the element in force.
+int materialBinding(SoState* state, const SoVertexShape* shape) {
+  if (const auto* property = static_cast<const SoVertexProperty*>(shape->vertexProperty.getValue());
+      property != nullptr && property->isOfType(SoVertexProperty::getClassTypeId()) &&
+      property->orderedRGBA.getNum() > 0)
+    return property->materialBinding.getValue();
+  return SoMaterialBindingElement::get(state);
 }
 
 std::string needMore(const std::string& what, long need, long start, long have) {
@@ -120,6 +131,17 @@ std::string indexedDefect(SoCallbackAction* action, const SoIndexedShape* shape,
       !defect.empty())
     return defect;
   SoState* state = action->getState();
+  // Under PER_VERTEX Coin reads one material per vertex, in coordIndex order, whatever the
+  // materials in force hold (SGI's indexedTriangleMesh.iv draws its mesh again under a single
+  // BaseColor: the colours came from whatever memory followed it, different on each run).
+  if (materialBinding(state, shape) == SoMaterialBindingElement::PER_VERTEX) {
+    const long vertices = std::count_if(shape->coordIndex.getValues(0),
+                                        shape->coordIndex.getValues(0) + shape->coordIndex.getNum(),
+                                        [](int32_t index) { return index != -1; });
+    if (vertices > counts.materials)
+      return "materialBinding PER_VERTEX asks for " + std::to_string(vertices) +
+             " materials, one per vertex; the materials hold " + std::to_string(counts.materials);
+  }
   // The other arrays are only read under an indexed binding, and only when the shape gives
   // them values (otherwise Coin uses coordIndex, or generates normals itself).
   const bool explicitMaterials = shape->materialIndex.getNum() > 0 && shape->materialIndex[0] != -1;

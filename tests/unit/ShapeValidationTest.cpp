@@ -49,6 +49,17 @@ const Case kCases[] = {
      "MaterialBinding { value PER_VERTEX_INDEXED } IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] "
      "materialIndex [ 0, 5, 0, -1 ] }",
      "IndexedFaceSet: materialIndex[1] 5 is outside the 1 materials"},
+    // SGI's indexedTriangleMesh.iv: a mesh drawn again under one colour, its PER_VERTEX
+    // binding still in force.
+    {"indexed_per_vertex_material",
+     "MaterialBinding { value PER_VERTEX } IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }",
+     "IndexedFaceSet: materialBinding PER_VERTEX asks for 3 materials, one per vertex; the "
+     "materials hold 1"},
+    {"vertex_property_per_vertex_material",
+     "IndexedFaceSet { vertexProperty VertexProperty { orderedRGBA [ 0xff0000ff, 0xff00ff ] "
+     "materialBinding PER_VERTEX } coordIndex [ 0, 1, 2, -1 ] }",
+     "IndexedFaceSet: materialBinding PER_VERTEX asks for 3 materials, one per vertex; the "
+     "materials hold 2"},
     {"indexed_normal",
      "NormalBinding { value PER_VERTEX_INDEXED } Normal { vector [ 0 0 1, 0 0 1 ] } "
      "IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] normalIndex [ 0, 1, 2, -1 ] }",
@@ -99,10 +110,12 @@ TEST(ShapeValidation, ValidShapesUsingEveryCountAndIndexAreKept) {
          "  MaterialBinding { value PER_VERTEX_INDEXED }\n  Material { diffuseColor [ 1 0 0, 0 1 0 "
          "] }\n"
          "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 1, 3, 2, -1 ] materialIndex [ 0, 1, 1, -1, "
-         "1, 1, 0, -1 ] }\n}\n";
+         "1, 1, 0, -1 ] }\n"
+         "  MaterialBinding { value PER_VERTEX }\n  Material { diffuseColor [ 1 0 0, 0 1 0, 0 0 1 "
+         "] }\n  IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }\n}\n";
   const LoadedScene scene = loadScene(path);
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
-  EXPECT_EQ(countShapes(scene.root.get()), 6);
+  EXPECT_EQ(countShapes(scene.root.get()), 7);
 }
 
 // Applications hand the group graphs that never went through loadScene: the casters'
