@@ -3,9 +3,11 @@
 #include "callbacks/DeepShadowPass.h"
 #include "callbacks/GlCapabilities.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/PeelPass.h"
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "nodes/DepthPeeling.h"
 #include "nodes/MapMethod.h"
 #include "nodes/RayMethod.h"
 #include "nodes/ShadowGroupElement.h"
@@ -116,7 +118,38 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.mapsVersion = contents_.mapsVersion();
 }
 
-bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
+void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool inPath, bool peel,
+                                               Context& context) {
+  SoState* state = action->getState();
+  // Inside a peeling (this group under a SoPeelingSeparator or another peeling group) the
+  // children are peeled by it, with its shading.
+  if (peel && !ShadowGroupElement::peeling(state) && !context.peelTried) {
+    context.peelTried = true;
+    std::string whyNot;
+    context.peel = PeelPass::create(whyNot);
+    if (!context.peel)
+      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                "transparency composited by Coin, without depth peeling: %s",
+                                whyNot.c_str());
+  }
+  if (!peel || ShadowGroupElement::peeling(state) || !context.peel) {
+    peelStatistics_.passes = 0;
+    peelStatistics_.peelMs = 0.0;
+    peelStatistics_.gpuPeelMs = 0.0;
+    renderChildren_(action, inPath);
+    return;
+  }
+  // Dual peeling: fewer passes than front to back for the same layers, and cheaper per frame
+  // where it was measured (docs/PEELING.md, "Inside a group").
+  PeelOptions options;
+  options.dual = true;
+  peelSubgraph(
+      action, *context.peel, shading_, options,
+      [this, inPath](SoGLRenderAction* drawing) { renderChildren_(drawing, inPath); },
+      peelStatistics_);
+}
+
+bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
   SoState* state = action->getState();
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
@@ -196,7 +229,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
     ShadowGroupElement::setActiveGroup(state, &shading_);
     const bool timed = passTiming();
     if (timed) context.shadingTimer.start();
-    renderChildren_(action, inPath);
+    shadeChildren(action, inPath, peel, context);
     if (timed) {
       context.shadingTimer.stop();
       statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();  // waits for the GPU
