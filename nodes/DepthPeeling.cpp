@@ -13,6 +13,7 @@
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/elements/SoDepthBufferElement.h>
 #include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoPolygonOffsetElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/elements/SoViewportRegionElement.h>
 
@@ -29,8 +30,11 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
   SoCacheElement::invalidate(state);
 
   state->push();
-  // The opaque pass discards transparent fragments; drawn at once, none is delayed.
-  overrideTransparencyType(state, SoGLRenderAction::NONE);
+  // The opaque pass discards transparent fragments; drawn at once, none is delayed. Blending
+  // is on for the shapes Coin finds transparent: those the program draws are discarded
+  // anyway, and a transparent shape that SoShadowStyle keeps from being SHADOWED (drawn by
+  // Coin without the program) is blended as under Coin's BLEND rather than drawn opaque.
+  overrideTransparencyType(state, SoGLRenderAction::BLEND);
   // A peeling separator or group below draws its children plainly: they are peeled here.
   ShadowGroupElement::setPeeling(state, true);
   const bool opaqueBound = shading.bind(action, ShadingVariant::OpaqueOnly) != nullptr;
@@ -66,6 +70,12 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
     // Against the opaque pass's depth: only what lies in front of it is peeled, and the
     // early depth test of the peel program skips the rest before shading.
     SoDepthBufferElement::set(state, TRUE, FALSE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
+    // A shape drawn in the opaque pass by Coin's fixed function (one SoShadowStyle keeps from
+    // being SHADOWED) comes out a few ulps nearer when the program draws it again, and would
+    // be peeled over itself. The peel passes push every surface back by about kSameLayer
+    // (16 steps of the 32-bit float depth near 0.5), so a surface's own opaque depth hides
+    // it; every peel pass moves a surface alike, so layers still compare as before.
+    SoPolygonOffsetElement::set(state, nullptr, 0.0f, 16.0f, SoPolygonOffsetElement::FILLED, TRUE);
     for (;;) {
       const UniformLocations* peelProgram =
           shading.bind(action, passes == 0    ? ShadingVariant::PeelInit

@@ -187,6 +187,19 @@ TEST(GroupPeeling, CrossingPanesUnderCoinBlendingKeepCoinsOrder) {
   EXPECT_EQ(rendered.group.passes, 0);
 }
 
+TEST(GroupPeeling, ATransparentShapeThatIsNotShadowedIsBlendedAsByCoin) {
+  // SoShadowStyle switches the group's program off for pane A: Coin draws it in the opaque
+  // pass, blended over what is there and writing its depth, as under its BLEND. B, behind A
+  // on the left, is then hidden there; on the right it is peeled and composited over A. Both
+  // sides give Coin's order, and A is not drawn opaque.
+  std::string panes = crossingPanes();
+  panes.replace(panes.find("Material"), 0, "ShadowStyle { style NO_SHADOWING } ");
+  const Rendered rendered = render(groupScene("", panes));
+  const std::string failure =
+      compareWithExpectation(rendered.image, panesPicture(coinBlend), kExact);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
 // A closed glass box, each face its own colour (opacity 0.5), turned so that the camera sees
 // different pairs of faces, over an opaque grey floor (0.4: 102 in 8 bits, exactly).
 constexpr double kBoxHalf = 0.4;
