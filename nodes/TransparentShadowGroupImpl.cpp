@@ -120,10 +120,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
 
 void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool inPath, bool peel,
                                                Context& context) {
-  SoState* state = action->getState();
-  // Inside a peeling (this group under a SoPeelingSeparator or another peeling group) the
-  // children are peeled by it, with its shading.
-  if (peel && !ShadowGroupElement::peeling(state) && !context.peelTried) {
+  if (peel && !context.peelTried) {
     context.peelTried = true;
     std::string whyNot;
     context.peel = PeelPass::create(whyNot);
@@ -132,7 +129,7 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
                                 "transparency composited by Coin, without depth peeling: %s",
                                 whyNot.c_str());
   }
-  if (!peel || ShadowGroupElement::peeling(state) || !context.peel) {
+  if (!peel || !context.peel) {
     peelStatistics_.passes = 0;
     peelStatistics_.peelMs = 0.0;
     peelStatistics_.gpuPeelMs = 0.0;
@@ -151,6 +148,14 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
 
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
   SoState* state = action->getState();
+  // Inside a peeling (an enclosing peeling group's or a SoPeelingSeparator's) every pass has
+  // its variant of the enclosing shading bound; this group's own programs would write colours
+  // into the peel targets. Its children are drawn as a plain separator's, peeled and shaded
+  // with the rest.
+  if (ShadowGroupElement::peeling(state)) {
+    peelStatistics_.passes = 0;
+    return false;
+  }
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
     auto pass = DeepShadowPass::create(whyNot);

@@ -31,8 +31,10 @@ struct PeelStatistics;
   layer shaded with the group's shadows, whatever Coin's transparency type. A frame whose
   view shows no transparent fragment draws the children once, as Coin would. A
   SoPeelingSeparator inside a peeling group draws its children as part of the group's
-  peeling (one peeling per pixel: its own fields do not apply there). COIN_BLENDING leaves
-  transparency to Coin (the action's transparency type, in traversal order), as before.
+  peeling (one peeling per pixel: its own fields do not apply there), and so does a group
+  inside a peeling (shaded by the enclosing group's or separator's shading). COIN_BLENDING
+  leaves transparency to Coin (the action's transparency type, in traversal order), as
+  before.
 
   FILE FORMAT/DEFAULTS:
   \code

@@ -354,6 +354,16 @@ TEST(GroupPeeling, APeelingSeparatorInsideAPeelingGroupPeelsOnce) {
   EXPECT_EQ(blended.separators.passes, 3);
 }
 
+TEST(GroupPeeling, AGroupInsideAPeelingGroupIsPeeledWithIt) {
+  // The inner group draws its children as part of the outer group's peeling (its own
+  // programs would write into the peel targets): exact, with the outer group's 2 passes.
+  const Rendered rendered =
+      render(groupScene("", "    TransparentShadowGroup {\n" + crossingPanes() + "    }\n"));
+  const std::string failure = compareWithExpectation(rendered.image, panesPicture(exactOf), kExact);
+  EXPECT_TRUE(failure.empty()) << failure;
+  EXPECT_EQ(rendered.group.passes, 2) << "summed over both groups: only the outer one peels";
+}
+
 TEST(GroupPeeling, AnOpaqueSceneCostsNoPeelPass) {
   const std::string floor =
       "    Material { diffuseColor 0.4 0.4 0.4 }\n"
