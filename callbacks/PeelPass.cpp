@@ -64,6 +64,22 @@ void PeelPass::allocate(int width, int height) {
                             0);
 }
 
+void PeelPass::beginOpaque() {
+  // Only the storage binding changes: the opaque pass draws where and how Coin chose.
+  savedOpaque_ = std::make_unique<GlStateScope>(GlStateScope::kStorageBuffers);
+  const GLuint none = 0u;
+  glNamedBufferSubData(progress_.get(), 0, sizeof(none), &none);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPeelProgressBinding, progress_.get());
+}
+
+bool PeelPass::endOpaque() {
+  GLuint seen = 0u;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(progress_.get(), 0, sizeof(seen), &seen);
+  savedOpaque_.reset();
+  return seen != 0u;
+}
+
 void PeelPass::begin(int x, int y, int width, int height) {
   timer_.start();
   // Until end(): the peel targets with MAX blending, the progress flag, the compositing

@@ -13,12 +13,15 @@ namespace ivshadow {
 class GlStateScope;
 class UniformLocations;
 
-// The GL side of SoPeelingSeparator in one context: the peel targets (depth range, front
-// accumulation, back layer, back accumulation, each sized to the viewport), the copy of the
-// opaque depth, the compositing program and the progress flag. A frame is
+// The GL side of depth peeling (SoPeelingSeparator, a peeling SoTransparentShadowGroup) in
+// one context: the peel targets (depth range, front accumulation, back layer, back
+// accumulation, each sized to the viewport), the copy of the opaque depth, the compositing
+// program and the progress flag. A frame is
+//   beginOpaque(); <Coin draws the children>; endOpaque();
 //   begin(); [startPass(i); <Coin draws the children>; finishPass(i)]...; end();
-// with a peel variant of the shading program bound and its units set through
-// setPeelUniforms() per pass.
+// with the opaque variant of the shading program bound for the first traversal, a peel
+// variant for the others, and the peel variants' units set through setPeelUniforms() per
+// pass.
 class PeelPass {
  public:
   static std::unique_ptr<PeelPass> create(std::string& whyNot);
@@ -26,6 +29,12 @@ class PeelPass {
 
   // GL_MAX_TEXTURE_IMAGE_UNITS of the context (read once).
   int textureUnits() const { return textureUnits_; }
+
+  // Around the opaque pass: binds the progress flag, cleared, for the opaque variant to raise
+  // on a transparent fragment it discards. endOpaque() restores the binding and returns
+  // whether one was raised (waiting for the pass); without one there is nothing to peel.
+  void beginOpaque();
+  bool endOpaque();
 
   // Saves GL state, sizes the targets to cover the viewport (x, y, width, height) in window
   // coordinates, copies the depth of the opaque pass from the current framebuffer and
@@ -63,6 +72,7 @@ class PeelPass {
   std::array<GlFramebuffer, 2> peelFramebuffer_;
   GlFramebuffer backFramebuffer_;
   std::unique_ptr<GlStateScope> saved_;
+  std::unique_ptr<GlStateScope> savedOpaque_;
   int targetFramebuffer_ = 0;
   std::array<int, 4> viewport_{};
   int textureUnits_ = 0;

@@ -1,8 +1,9 @@
 #include "cli/RenderMemory.h"
 
-#include "nodes/NodesOfType.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoPeelingSeparator.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/NodesOfType.h"
 
 namespace ivshadow {
 
@@ -15,14 +16,27 @@ RenderMemory RenderMemory::of(SoNode* root, bool softwareRenderer, bool traced) 
   });
   int separators = 0;
   forEachNodeOfType<SoPeelingSeparator>(root, [&](SoPeelingSeparator&) { ++separators; });
+  // A group that peels (its default) keeps the same targets once it meets a transparent
+  // fragment; counted whether or not it will, as the budget must hold for any view.
+  int groups = 0;
+  forEachNodeOfType<SoTransparentShadowGroup>(root, [&](SoTransparentShadowGroup& group) {
+    if (group.isActive.getValue() &&
+        group.transparency.getValue() == SoTransparentShadowGroup::PEELED)
+      ++groups;
+  });
 
   RenderMemory memory{{kFrameBytesPerPixel, kFrameFixedBytes}, "a render"};
-  memory.cost.bytesPerPixel += kPeelingBytesPerPixel * separators;
+  memory.cost.bytesPerPixel += kPeelingBytesPerPixel * (separators + groups);
   if (rays) memory.cost.bytesPerPixel += kRaysBytesPerPixel;
   if (rays) memory.what += " with traced (RAYS) shadows";
+  std::string peelers;
   if (separators > 0)
-    memory.what += std::string(rays ? " and " : " with ") + std::to_string(separators) +
-                   (separators == 1 ? " PeelingSeparator" : " PeelingSeparators");
+    peelers =
+        std::to_string(separators) + (separators == 1 ? " PeelingSeparator" : " PeelingSeparators");
+  if (groups > 0)
+    peelers += (peelers.empty() ? "" : " and ") + std::to_string(groups) +
+               (groups == 1 ? " peeling group" : " peeling groups");
+  if (!peelers.empty()) memory.what += std::string(rays ? " and " : " with ") + peelers;
   return memory;
 }
 

@@ -14,7 +14,8 @@ namespace ivshadow {
 // deep shadow maps do not grow with the image and are not counted.
 inline constexpr double kFrameBytesPerPixel = 12.0;  // colour, depth-stencil, read-back
 inline constexpr double kFrameFixedBytes = 128.0 * (1 << 20);
-// Each SoPeelingSeparator's targets: 2 RG32F + 4 RGBA32F (measured 80 too).
+// Each SoPeelingSeparator's or peeling SoTransparentShadowGroup's targets: 2 RG32F + 4 RGBA32F
+// (measured 80 too).
 inline constexpr double kPeelingBytesPerPixel = 80.0;
 // Captured surface layers, their read-back and the rays on the CPU: 292 measured with
 // coloured_shadows.iv, 368 with peeled_glasses.iv, which captures more layers; the larger.

@@ -1,19 +1,28 @@
 #include "ivshadow/PeelStatistics.h"
 
 #include "ivshadow/SoPeelingSeparator.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 
 namespace ivshadow {
 
+namespace {
+
+void add(PeelStatistics& total, const PeelStatistics& one) {
+  total.passes += one.passes;
+  total.peelMs += one.peelMs;
+  total.gpuPeelMs += one.gpuPeelMs;
+  total.frames += one.frames;
+}
+
+}  // namespace
+
 PeelStatistics collectPeelStatistics(SoNode* root) {
   PeelStatistics total;
-  forEachNodeOfType<SoPeelingSeparator>(root, [&](const SoPeelingSeparator& separator) {
-    const PeelStatistics& one = separator.getStatistics();
-    total.passes += one.passes;
-    total.peelMs += one.peelMs;
-    total.gpuPeelMs += one.gpuPeelMs;
-    total.frames += one.frames;
-  });
+  forEachNodeOfType<SoPeelingSeparator>(
+      root, [&](const SoPeelingSeparator& separator) { add(total, separator.getStatistics()); });
+  forEachNodeOfType<SoTransparentShadowGroup>(
+      root, [&](const SoTransparentShadowGroup& group) { add(total, group.getPeelStatistics()); });
   return total;
 }
 

@@ -19,6 +19,7 @@ void ShadowGroupElement::init(SoState* state) {
   inherited::init(state);
   group_ = nullptr;
   capturing_ = false;
+  peeling_ = false;
 }
 
 void ShadowGroupElement::push(SoState* state) {
@@ -26,17 +27,19 @@ void ShadowGroupElement::push(SoState* state) {
   const auto* previous = static_cast<const ShadowGroupElement*>(getNextInStack());
   group_ = previous->group_;
   capturing_ = previous->capturing_;
+  peeling_ = previous->peeling_;
 }
 
 SbBool ShadowGroupElement::matches(const SoElement* element) const {
   const auto* other = static_cast<const ShadowGroupElement*>(element);
-  return other->group_ == group_ && other->capturing_ == capturing_;
+  return other->group_ == group_ && other->capturing_ == capturing_ && other->peeling_ == peeling_;
 }
 
 SoElement* ShadowGroupElement::copyMatchInfo() const {
   auto* copy = static_cast<ShadowGroupElement*>(getTypeId().createInstance());
   copy->group_ = group_;
   copy->capturing_ = capturing_;
+  copy->peeling_ = peeling_;
   return copy;
 }
 
@@ -48,6 +51,10 @@ void ShadowGroupElement::setCapturing(SoState* state, bool capturing) {
   static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->capturing_ = capturing;
 }
 
+void ShadowGroupElement::setPeeling(SoState* state, bool peeling) {
+  static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->peeling_ = peeling;
+}
+
 GroupShading* ShadowGroupElement::activeGroup(SoState* state) {
   return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->group_;
 }
@@ -55,6 +62,10 @@ GroupShading* ShadowGroupElement::activeGroup(SoState* state) {
 bool ShadowGroupElement::capturing(SoState* state) {
   return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))
       ->capturing_;
+}
+
+bool ShadowGroupElement::peeling(SoState* state) {
+  return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->peeling_;
 }
 
 }  // namespace ivshadow

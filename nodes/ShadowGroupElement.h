@@ -11,9 +11,11 @@ class GroupShading;
 
 // What the enclosing SoTransparentShadowGroup is doing, carried in the traversal state (and so
 // per action and popped with the group's separator) instead of in process-wide variables: the
-// shading of the innermost group whose children are being drawn, and whether they are being
-// drawn into the capture targets of its RAYS lights. A SoPeelingSeparator below reads it to
-// shade its layers with that group's programs and maps, or to draw plainly during a capture.
+// shading of the innermost group whose children are being drawn, whether they are being
+// drawn into the capture targets of its RAYS lights, and whether a peeling above (of a group
+// or a SoPeelingSeparator) is drawing them. A SoPeelingSeparator below reads it to shade its
+// layers with that group's programs and maps, or to draw plainly during a capture or inside
+// a peeling (each pixel is peeled once, by the outermost).
 class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   typedef SoElement inherited;
   SO_ELEMENT_HEADER(ShadowGroupElement);
@@ -30,8 +32,10 @@ class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   // Set in a state the caller has pushed.
   static void setActiveGroup(SoState* state, GroupShading* group);
   static void setCapturing(SoState* state, bool capturing);
+  static void setPeeling(SoState* state, bool peeling);
   static GroupShading* activeGroup(SoState* state);
   static bool capturing(SoState* state);
+  static bool peeling(SoState* state);
 
  protected:
   ~ShadowGroupElement() override;
@@ -39,6 +43,7 @@ class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
  private:
   GroupShading* group_ = nullptr;
   bool capturing_ = false;
+  bool peeling_ = false;
 };
 
 }  // namespace ivshadow

@@ -55,6 +55,10 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_SET_SF_ENUM_TYPE(colorModel, ColorModel);
   SO_NODE_SET_SF_ENUM_TYPE(precision, Precision);
   SO_NODE_SET_SF_ENUM_TYPE(filter, Filter);
+  SO_NODE_ADD_FIELD(transparency, (PEELED));
+  SO_NODE_DEFINE_ENUM_VALUE(Transparency, PEELED);
+  SO_NODE_DEFINE_ENUM_VALUE(Transparency, COIN_BLENDING);
+  SO_NODE_SET_SF_ENUM_TYPE(transparency, Transparency);
 }
 
 SoTransparentShadowGroup::~SoTransparentShadowGroup() {
@@ -65,12 +69,19 @@ const ivshadow::DeepShadowStatistics& SoTransparentShadowGroup::getStatistics() 
   return impl_->statistics();
 }
 
+const ivshadow::PeelStatistics& SoTransparentShadowGroup::getPeelStatistics() const {
+  return impl_->peelStatistics();
+}
+
 void SoTransparentShadowGroup::GLRenderBelowPath(SoGLRenderAction* action) {
-  if (!isActive.getValue() || !impl_->render(action, false)) inherited::GLRenderBelowPath(action);
+  const bool peel = transparency.getValue() == PEELED;
+  if (!isActive.getValue() || !impl_->render(action, false, peel))
+    inherited::GLRenderBelowPath(action);
 }
 
 void SoTransparentShadowGroup::GLRenderInPath(SoGLRenderAction* action) {
-  if (!isActive.getValue() || !impl_->render(action, true)) inherited::GLRenderInPath(action);
+  const bool peel = transparency.getValue() == PEELED;
+  if (!isActive.getValue() || !impl_->render(action, true, peel)) inherited::GLRenderInPath(action);
 }
 
 void SoTransparentShadowGroup::notify(SoNotList* list) {

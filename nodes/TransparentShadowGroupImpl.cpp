@@ -3,11 +3,13 @@
 #include "callbacks/DeepShadowPass.h"
 #include "callbacks/GlCapabilities.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/PeelPass.h"
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
+#include "nodes/DepthPeeling.h"
 #include "nodes/MapMethod.h"
 #include "nodes/RayMethod.h"
 #include "nodes/ShadowGroupElement.h"
@@ -146,8 +148,44 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.mapsVersion = contents_.mapsVersion();
 }
 
-bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
+void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool inPath, bool peel,
+                                               Context& context) {
+  if (peel && !context.peelTried) {
+    context.peelTried = true;
+    std::string whyNot;
+    context.peel = PeelPass::create(whyNot);
+    if (!context.peel)
+      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                "transparency composited by Coin, without depth peeling: %s",
+                                whyNot.c_str());
+  }
+  if (!peel || !context.peel) {
+    peelStatistics_.passes = 0;
+    peelStatistics_.peelMs = 0.0;
+    peelStatistics_.gpuPeelMs = 0.0;
+    renderChildren_(action, inPath);
+    return;
+  }
+  // Dual peeling: fewer passes than front to back for the same layers, and cheaper per frame
+  // where it was measured (docs/PEELING.md, "Inside a group").
+  PeelOptions options;
+  options.dual = true;
+  peelSubgraph(
+      action, *context.peel, shading_, options,
+      [this, inPath](SoGLRenderAction* drawing) { renderChildren_(drawing, inPath); },
+      peelStatistics_);
+}
+
+bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
   SoState* state = action->getState();
+  // Inside a peeling (an enclosing peeling group's or a SoPeelingSeparator's) every pass has
+  // its variant of the enclosing shading bound; this group's own programs would write colours
+  // into the peel targets. Its children are drawn as a plain separator's, peeled and shaded
+  // with the rest.
+  if (ShadowGroupElement::peeling(state)) {
+    peelStatistics_.passes = 0;
+    return false;
+  }
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
     auto pass = DeepShadowPass::create(whyNot);
@@ -237,7 +275,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath) {
       SoGLShaderProgramElement::enable(state, FALSE);
     const bool timed = passTiming();
     if (timed) context.shadingTimer.start();
-    renderChildren_(action, inPath);
+    shadeChildren(action, inPath, peel, context);
     if (timed) {
       context.shadingTimer.stop();
       statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();  // waits for the GPU

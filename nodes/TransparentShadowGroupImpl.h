@@ -4,6 +4,7 @@
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/Export.h"
+#include "ivshadow/PeelStatistics.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
@@ -32,12 +33,14 @@ class SoSeparator;
 namespace ivshadow {
 
 class DeepShadowPass;
+class PeelPass;
 class RayMethod;
 
 // The work behind SoTransparentShadowGroup: per GL context, keeps each deep shadow light's
 // map (MapMethod) or traced shadows (RayCasters, the captures) up to date with what the
 // subgraph holds (GroupContents), and renders the children with the group's shading
-// (GroupShading), which a SoPeelingSeparator below uses for its layers.
+// (GroupShading), which a SoPeelingSeparator below uses for its layers. With `peel` the
+// children's transparent surfaces are composited in exact depth order (peelSubgraph).
 class TransparentShadowGroupImpl {
  public:
   // Draws the owner's children (once or, for peeling, several times).
@@ -48,11 +51,12 @@ class TransparentShadowGroupImpl {
   TransparentShadowGroupImpl(const TransparentShadowGroupImpl&) = delete;
   TransparentShadowGroupImpl& operator=(const TransparentShadowGroupImpl&) = delete;
 
-  // Renders the group with shadows; returns false when this context cannot (the caller then
-  // renders it as a plain separator).
-  bool render(SoGLRenderAction* action, bool inPath);
+  // Renders the group with shadows, its transparent surfaces peeled when `peel`; returns
+  // false when this context cannot (the caller then renders it as a plain separator).
+  bool render(SoGLRenderAction* action, bool inPath, bool peel);
   void changed(SoNotList* list);
   const DeepShadowStatistics& statistics() const { return statistics_; }
+  const PeelStatistics& peelStatistics() const { return peelStatistics_; }
 
  private:
   struct Context {
@@ -63,17 +67,22 @@ class TransparentShadowGroupImpl {
     bool softwareRenderer = false;
     std::string renderer;
     std::unique_ptr<RayMethod> rays;
+    std::unique_ptr<PeelPass> peel;  // made on the first peeled frame
+    bool peelTried = false;          // made, or failed with a warning
     GlPassTimer buildTimer;
     GlPassTimer shadingTimer;
   };
 
   void buildMaps(SoGLRenderAction* action, Context& context);
+  // Draws the children in the shading pass: peeled, or as Coin blends them.
+  void shadeChildren(SoGLRenderAction* action, bool inPath, bool peel, Context& context);
   SoSeparator* owner_;
   ChildrenRenderer renderChildren_;
   GroupContents contents_;
   GroupShading shading_;
   PerContext<Context> contexts_;
   DeepShadowStatistics statistics_;
+  PeelStatistics peelStatistics_;
   RayCasters rayCasters_;
   std::set<const SoLight*> methodLogged_;  // lights whose AUTO choice was said
 };

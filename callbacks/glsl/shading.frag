@@ -1,13 +1,23 @@
 // The camera pass of SoTransparentShadowGroup (after lighting.glsl). Variant
-// IVSHADOW_OPAQUE_ONLY is SoPeelingSeparator's opaque pass: it keeps only fully opaque
-// fragments, the transparent ones being left to the peel passes (peel.frag).
+// IVSHADOW_OPAQUE_ONLY is depth peeling's opaque pass: it keeps only fully opaque
+// fragments, the transparent ones being left to the peel passes (peel.frag), and raises the
+// progress flag when it leaves one: a view without any needs no peel pass.
+
+#ifdef IVSHADOW_OPAQUE_ONLY
+layout(std430, binding = IVSHADOW_PEEL_PROGRESS_BINDING) buffer PeelProgress {
+  uint transparentFragments;  // some fragment was left to the peel passes
+};
+#endif
 
 void main() {
   vec4 texel = coin_texunit0_model != kTextureNone ? texture(textureMap0, gl_TexCoord[0].st)
                                                    : vec4(1.0);
   vec4 colour = shade(texel);
 #ifdef IVSHADOW_OPAQUE_ONLY
-  if (!isOpaque(colour.a)) discard;
+  if (!isOpaque(colour.a)) {
+    transparentFragments = 1u;
+    discard;
+  }
 #endif
   gl_FragData[0] = colour;
 }

@@ -6,7 +6,8 @@ class SoNode;
 
 namespace ivshadow {
 
-// What the last frame of one SoPeelingSeparator cost.
+// What the last frame of one SoPeelingSeparator, or of a peeling SoTransparentShadowGroup,
+// cost.
 struct PeelStatistics {
   int passes = 0;          // peel passes, the depth-range pass included (not the opaque pass)
   double peelMs = 0.0;     // wall time of the peel passes and compositing (waits for each pass)
@@ -14,7 +15,8 @@ struct PeelStatistics {
   int frames = 0;          // frames peeled since the node was created
 };
 
-// The last frame of every SoPeelingSeparator under `root`, summed.
+// The last frame of every SoPeelingSeparator and SoTransparentShadowGroup under `root`,
+// summed.
 IVSHADOW_API PeelStatistics collectPeelStatistics(SoNode* root);
 
 }  // namespace ivshadow

@@ -11,6 +11,7 @@
 namespace ivshadow {
 class TransparentShadowGroupImpl;
 struct DeepShadowStatistics;
+struct PeelStatistics;
 }  // namespace ivshadow
 
 /*!
@@ -43,6 +44,17 @@ struct DeepShadowStatistics;
   coordinates, so transforms above move both. A change above the group is seen in the next
   frame (see docs/DEEP_SHADOWS.md, "State inherited from above the group").
 
+  Transparent surfaces in the subgraph are composited in exact per-pixel depth order by
+  default (transparency PEELED): the children are drawn once for the opaque surfaces and
+  then peeled two layers per pass (dual depth peeling, as SoPeelingSeparator's DUAL), every
+  layer shaded with the group's shadows, whatever Coin's transparency type. A frame whose
+  view shows no transparent fragment draws the children once, as Coin would. A
+  SoPeelingSeparator inside a peeling group draws its children as part of the group's
+  peeling (one peeling per pixel: its own fields do not apply there), and so does a group
+  inside a peeling (shaded by the enclosing group's or separator's shading). COIN_BLENDING
+  leaves transparency to Coin (the action's transparency type, in traversal order), as
+  before.
+
   FILE FORMAT/DEFAULTS:
   \code
     TransparentShadowGroup {
@@ -51,6 +63,8 @@ struct DeepShadowStatistics;
         renderCulling AUTO
         pickCulling AUTO
         isActive TRUE            # FALSE renders the children like a plain SoSeparator
+        transparency PEELED      # PEELED: transparent surfaces in exact depth order per
+                                 #   pixel; COIN_BLENDING: Coin's transparency type
         castingLights ALL_LIGHTS # ALL_LIGHTS or DEEP_SHADOW_LIGHTS
         # The shadows of the ordinary lights (SoDeepShadowLight nodes use their own fields):
         method AUTO              # AUTO, MAP or RAYS
@@ -73,12 +87,18 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   static void initClass();
   SoTransparentShadowGroup();
 
+  enum Transparency {
+    PEELED,        //!< exact per-pixel depth order, by dual depth peeling
+    COIN_BLENDING  //!< Coin's transparency type (order-dependent)
+  };
+
   enum CastingLights {
     ALL_LIGHTS,         //!< every light turned on in the subgraph casts
     DEEP_SHADOW_LIGHTS  //!< only SoDeepShadowLight nodes cast; other lights only light
   };
 
   SoSFBool isActive;
+  SoSFEnum transparency;
   SoSFEnum castingLights;
   SoSFEnum method;
   SoSFInt32 resolution;
@@ -93,6 +113,8 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   //! What the last render in any context did: per light, layers used per face, map bytes,
   //! build time, and how many times the maps were rebuilt since the group was created.
   const ivshadow::DeepShadowStatistics& getStatistics() const;
+  //! Passes and time of the last frame's peeling in any context (transparency PEELED).
+  const ivshadow::PeelStatistics& getPeelStatistics() const;
 
   void GLRenderBelowPath(SoGLRenderAction* action) override;
   void GLRenderInPath(SoGLRenderAction* action) override;

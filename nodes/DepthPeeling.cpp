@@ -1,0 +1,107 @@
+#include "nodes/DepthPeeling.h"
+
+#include "callbacks/PeelPass.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/PeelStatistics.h"
+#include "ivshadow/SoPeelingSeparator.h"
+#include "nodes/GroupShading.h"
+#include "nodes/ShadowGroupElement.h"
+#include "nodes/TransparencyOverride.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/elements/SoCacheElement.h>
+#include <Inventor/elements/SoDepthBufferElement.h>
+#include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoPolygonOffsetElement.h>
+#include <Inventor/elements/SoShapeStyleElement.h>
+#include <Inventor/elements/SoViewportRegionElement.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace ivshadow {
+
+void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
+                  const PeelOptions& options, const std::function<void(SoGLRenderAction*)>& draw,
+                  PeelStatistics& statistics) {
+  SoState* state = action->getState();
+  // Each pass sets its own uniforms and targets; no cache above may replay one of them.
+  SoCacheElement::invalidate(state);
+
+  state->push();
+  // The opaque pass discards transparent fragments; drawn at once, none is delayed. Blending
+  // is on for the shapes Coin finds transparent: those the program draws are discarded
+  // anyway, and a transparent shape that SoShadowStyle keeps from being SHADOWED (drawn by
+  // Coin without the program) is blended as under Coin's BLEND rather than drawn opaque.
+  overrideTransparencyType(state, SoGLRenderAction::BLEND);
+  // A peeling separator or group below draws its children plainly: they are peeled here.
+  ShadowGroupElement::setPeeling(state, true);
+  const bool opaqueBound = shading.bind(action, ShadingVariant::OpaqueOnly) != nullptr;
+  // The opaque pass notes whether it discarded a transparent fragment: without one there is
+  // nothing to peel, and the view costs what Coin's own drawing costs.
+  if (opaqueBound) pass.beginOpaque();
+  draw(action);
+  const bool transparentSeen = opaqueBound && pass.endOpaque();
+  state->pop();
+  // Without the opaque variant (Coin has said why) the plain pass drew everything.
+  if (!opaqueBound) return;
+
+  const auto start = std::chrono::steady_clock::now();
+  const int cap = options.maxPasses > 0
+                      ? std::min(options.maxPasses, SoPeelingSeparator::kMaxPasses)
+                      : SoPeelingSeparator::kMaxPasses;
+  int passes = 0;
+  if (transparentSeen || !options.earlyTermination) {
+    const SbViewportRegion& region = SoViewportRegionElement::get(state);
+    const SbVec2s origin = region.getViewportOriginPixels();
+    const SbVec2s size = region.getViewportSizePixels();
+    pass.begin(origin[0], origin[1], size[0], size[1]);
+    state->push();
+    // Drawn at once with blending on, which the peel passes turn into MAX blending.
+    overrideTransparencyType(state, SoGLRenderAction::BLEND);
+    ShadowGroupElement::setPeeling(state, true);
+    // Every shape must draw with a peel variant: a shape drawn by Coin's fixed function would
+    // write its colour into the depth range and accumulation targets. SoShadowStyle switches
+    // the program off (for shapes it keeps from being SHADOWED) only while the shadows flag
+    // is up, so it is lowered for the peel passes; such shapes were drawn by Coin in the
+    // opaque pass, and only their transparent surfaces are peeled, with the group's shading.
+    SoShapeStyleElement::setShadowsRendering(state, FALSE);
+    // Against the opaque pass's depth: only what lies in front of it is peeled, and the
+    // early depth test of the peel program skips the rest before shading.
+    SoDepthBufferElement::set(state, TRUE, FALSE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
+    // A shape drawn in the opaque pass by Coin's fixed function (one SoShadowStyle keeps from
+    // being SHADOWED) comes out a few ulps nearer when the program draws it again, and would
+    // be peeled over itself. The peel passes push every surface back by about kSameLayer
+    // (16 steps of the 32-bit float depth near 0.5), so a surface's own opaque depth hides
+    // it; every peel pass moves a surface alike, so layers still compare as before.
+    SoPolygonOffsetElement::set(state, nullptr, 0.0f, 16.0f, SoPolygonOffsetElement::FILLED, TRUE);
+    for (;;) {
+      const UniformLocations* peelProgram =
+          shading.bind(action, passes == 0    ? ShadingVariant::PeelInit
+                               : options.dual ? ShadingVariant::PeelDual
+                                              : ShadingVariant::PeelFrontToBack);
+      // A peel variant did not build (Coin has said why): the passes done so far stand.
+      if (peelProgram == nullptr) break;
+      pass.startPass(passes);
+      pass.setPeelUniforms(*peelProgram);
+      draw(action);
+      const bool deeper = pass.finishPass(passes, options.dual);
+      ++passes;
+      if (passes >= cap || (options.earlyTermination && !deeper)) break;
+    }
+    state->pop();
+    pass.end(passes);
+  }
+  // The passes drew with blending, buffers and targets Coin did not choose; the scopes
+  // restored GL, and Coin must not trust what it believes it last sent.
+  SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
+
+  statistics.passes = passes;
+  statistics.gpuPeelMs = passTiming() && passes > 0 ? pass.gpuMs() : 0.0;
+  statistics.peelMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ++statistics.frames;
+}
+
+}  // namespace ivshadow

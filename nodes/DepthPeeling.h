@@ -1,0 +1,32 @@
+#pragma once
+
+#include <functional>
+
+class SoGLRenderAction;
+
+namespace ivshadow {
+
+class GroupShading;
+class PeelPass;
+struct PeelStatistics;
+
+// How a subgraph is peeled: SoPeelingSeparator's fields, or the choice of a peeling
+// SoTransparentShadowGroup.
+struct PeelOptions {
+  bool dual = true;              // nearest and farthest layer per pass, else nearest only
+  int maxPasses = 0;             // 0: until nothing is left (SoPeelingSeparator::kMaxPasses)
+  bool earlyTermination = true;  // stop when a pass found nothing deeper
+};
+
+// Draws a subgraph's opaque surfaces into the framebuffer, then peels its transparent ones
+// and composites them over it in exact per-pixel depth order (docs/PEELING.md), each pass
+// shaded by a variant of `shading`, whose frame the caller has begun. `draw` draws the
+// subgraph once, as a plain separator would. With early termination, a view in which the
+// opaque pass met no transparent fragment is finished after that pass (no peel pass). The
+// last frame's passes and times go into `statistics`. Used by SoPeelingSeparator and by
+// SoTransparentShadowGroup's default transparency.
+void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
+                  const PeelOptions& options, const std::function<void(SoGLRenderAction*)>& draw,
+                  PeelStatistics& statistics);
+
+}  // namespace ivshadow
