@@ -64,6 +64,18 @@ void PeelPass::allocate(int width, int height) {
                             0);
 }
 
+namespace {
+
+// Coin draws small shapes between glBegin and glEnd; Mesa keeps such vertices in its own
+// buffer and hands them to the rasteriser at its next flush, which reading a buffer back does
+// not cause: the progress flag was read before those shapes were drawn, so a lone transparent
+// IndexedFaceSet of four vertices raised no flag and vanished. glFlush submits them first.
+void submitImmediateMode() {
+  glFlush();
+}
+
+}  // namespace
+
 void PeelPass::beginOpaque() {
   // Only the storage binding changes: the opaque pass draws where and how Coin chose.
   savedOpaque_ = std::make_unique<GlStateScope>(GlStateScope::kStorageBuffers);
@@ -74,6 +86,7 @@ void PeelPass::beginOpaque() {
 
 bool PeelPass::endOpaque() {
   GLuint seen = 0u;
+  submitImmediateMode();
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(progress_.get(), 0, sizeof(seen), &seen);
   savedOpaque_.reset();
@@ -145,6 +158,7 @@ bool PeelPass::finishPass(int pass, bool dual) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   GLuint deeper = 0u;
+  submitImmediateMode();
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(progress_.get(), 0, sizeof(deeper), &deeper);
   return deeper != 0u;

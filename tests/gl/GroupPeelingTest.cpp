@@ -179,6 +179,41 @@ TEST(GroupPeeling, CrossingPanesAreExactOnBothSidesWithoutAPeelingSeparator) {
   EXPECT_NEAR(exactComposite({a, b})[1] - coinBlend({a, b})[1], 63.75, 1e-9);
 }
 
+// A lone half-transparent red pane as an IndexedFaceSet of four coordinates, which Coin draws
+// between glBegin and glEnd (below its vertex-buffer limit): Mesa hands such vertices to the
+// rasteriser only at its next flush, and the opaque pass's progress flag used to be read
+// before that, so the pane raised no flag, no peel pass ran and it vanished. Exact: alpha 0.5
+// of red over black, 127.5; black around it.
+const char* const kIndexedPane =
+    "    Material { diffuseColor 1 0 0 transparency 0.5 }\n"
+    "    Coordinate3 { point [ -0.8 -0.8 0, 0.8 -0.8 0, -0.8 0.8 0, 0.8 0.8 0 ] }\n"
+    "    IndexedFaceSet { coordIndex [ 0, 1, 3, -1, 0, 3, 2, -1 ] }\n";
+
+ExpectedImage indexedPanePicture() {
+  return [](int px, int py) {
+    Expectation e;
+    const auto [x, y] = scenePoint(px, py);
+    const double extent = std::max(std::abs(x), std::abs(y));
+    if (std::abs(extent - 0.8) < 2 * kPixel) return e;  // the pane's edge
+    e.checked = true;
+    if (extent < 0.8) e.rgb = {127.5, 0.0, 0.0};
+    return e;
+  };
+}
+
+TEST(GroupPeeling, ASmallIndexedFaceSetDrawnImmediatelyIsPeeledToo) {
+  const Rendered grouped = render(groupScene("", kIndexedPane));
+  EXPECT_GE(grouped.group.passes, 1);
+  std::string failure = compareWithExpectation(grouped.image, indexedPanePicture(), kExact);
+  EXPECT_TRUE(failure.empty()) << failure;
+  // And in a SoPeelingSeparator outside any group.
+  const Rendered separated = render(
+      groupScene("isActive FALSE", std::string("PeelingSeparator {\n") + kIndexedPane + "}\n"));
+  EXPECT_GE(separated.separators.passes, 1);
+  failure = compareWithExpectation(separated.image, indexedPanePicture(), kExact);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
 TEST(GroupPeeling, CrossingPanesUnderCoinBlendingKeepCoinsOrder) {
   const Rendered rendered = render(groupScene("transparency COIN_BLENDING", crossingPanes()));
   const std::string failure =
