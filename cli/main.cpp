@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
   app.footer(footer(kOverview));
   app.set_version_flag("--version", std::string("ivshadow ") + ivshadow::version());
   app.require_subcommand(1);
+  ivshadow::useProjectErrorFormat(app);
 
   ivshadow::RenderOptions render;
   CLI::App* renderCommand =

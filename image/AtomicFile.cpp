@@ -87,6 +87,19 @@ void AtomicFile::checkWritable(const std::string& path, const std::string& what)
   if (::access(directory.c_str(), W_OK) != 0) {
     throw InputError(path + ": error: cannot write " + what + ": " + std::strerror(errno));
   }
+  // The file is written under its temporary name first, which is longer: both must fit the
+  // directory's file system (ENAMETOOLONG after the work would lose it).
+  const long nameMax = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  const std::size_t temporaryLength =
+      std::filesystem::path(temporaryNameFor(target.string())).filename().string().size();
+  if (nameMax > 0 && temporaryLength > std::size_t(nameMax)) {
+    const std::size_t longest =
+        std::size_t(nameMax) - (temporaryLength - target.filename().string().size());
+    throw InputError(path + ": error: cannot write " + what + ": its name has " +
+                     std::to_string(target.filename().string().size()) +
+                     " characters, more than the " + std::to_string(longest) +
+                     " that can be written there");
+  }
 }
 
 void AtomicFile::checkNotInput(const std::string& path, const std::string& input,

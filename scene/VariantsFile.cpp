@@ -163,9 +163,16 @@ std::vector<Variant> parseVariants(const std::string& text, const std::string& p
   }
   if (variants.empty()) fail(path, line, "no variants (expected \"variant NAME\" or \"sweep\")");
   std::set<std::string> names;
-  for (const Variant& variant : variants)
+  for (const Variant& variant : variants) {
     if (!names.insert(variant.name).second)
       fail(path, variant.line, "a second variant named \"" + variant.name + "\"");
+    // A variant's name names its output files (NAME.png, NAME.log and their temporary names),
+    // which file systems limit to 255 bytes.
+    if (variant.name.size() > kMaxVariantName)
+      fail(path, variant.line,
+           "variant name of " + std::to_string(variant.name.size()) + " characters; at most " +
+               std::to_string(kMaxVariantName) + ", since it names the output files");
+  }
   return variants;
 }
 

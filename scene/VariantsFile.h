@@ -1,9 +1,14 @@
 #pragma once
 
+#include <cstddef>
+
 #include <string>
 #include <vector>
 
 namespace ivshadow {
+
+// The longest variant name (sweep names included): it names the output files.
+constexpr std::size_t kMaxVariantName = 200;
 
 // One scripted variant of a scene: a name and the field assignments it makes.
 struct Variant {

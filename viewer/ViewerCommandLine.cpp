@@ -4,6 +4,15 @@
 
 namespace ivshadow {
 
+void useProjectErrorFormat(CLI::App& app) {
+  app.failure_message([](const CLI::App* failed, const CLI::Error& error) {
+    std::string command = failed->get_name();
+    for (const CLI::App* sub : failed->get_subcommands()) command += " " + sub->get_name();
+    return failed->get_name() + ": error: " + error.what() + "\nRun \"" + command +
+           " --help\" for the options.\n";
+  });
+}
+
 void addViewerOptions(CLI::App& app, ViewerOptions& options) {
   app.add_option("scene", options.scene, "Open Inventor scene file (.iv)");
   app.add_option("--screenshot", options.screenshot,

@@ -8,6 +8,7 @@ int main(int argc, char** argv) {
                "ivshadow-viewer"};
   ivshadow::ViewerOptions options;
   ivshadow::addViewerOptions(app, options);
+  ivshadow::useProjectErrorFormat(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

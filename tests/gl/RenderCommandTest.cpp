@@ -74,6 +74,18 @@ TEST(RenderCommand, StatsJsonHasTheDocumentedKeys) {
 // IVSHADOW_GL_MEMORY_LIMIT at 100 MB) is halved until it fits, with one warning naming the
 // light and the field, and the picture is the one that resolution gives: not a dark or grey
 // one with exit 0. The build's peak at 2048 with 6 coloured layers is some 7 GB.
+// Errors of the command line itself read as every other error of the tools, naming the
+// command whose --help lists the options.
+TEST(RenderCommand, CommandLineErrorsReadAsTheToolsOtherErrors) {
+  const test::ProcessResult missing = run({test::ivshadowExe(), "render", "-o", "x.png"});
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_EQ(missing.err.rfind("ivshadow: error: scene is required\n", 0), 0u) << missing.err;
+  EXPECT_NE(missing.err.find("Run \"ivshadow render --help\""), std::string::npos) << missing.err;
+  const test::ProcessResult viewer = run({test::viewerExe(), "--size"});
+  EXPECT_EQ(viewer.exitCode, 2);
+  EXPECT_EQ(viewer.err.rfind("ivshadow-viewer: error: --size", 0), 0u) << viewer.err;
+}
+
 TEST(RenderCommand, AMapTooLargeForGlMemoryIsBuiltSmallerWithOneWarning) {
   const std::string dir = test::outputDir();
   const std::vector<std::string> common = {

@@ -34,6 +34,19 @@ TEST(AtomicFile, ASymbolicLinkStaysALinkAndItsTargetIsReplaced) {
 }
 
 // Run as root (as CI runs) a rename over /dev/null replaced the device with a regular file.
+// A name the file system cannot take (its temporary name included: a dot, ".tmp" and the
+// process id more) is refused before any work, as bad input, rather than failing after it.
+TEST(AtomicFile, ANameTooLongForTheFileSystemIsRefusedBeforeTheWork) {
+  const std::string dir = test::outputDir();
+  const std::string tooLong = dir + "/" + std::string(300, 'a') + ".png";
+  const std::string error =
+      test::inputErrorOf([&] { AtomicFile::checkWritable(tooLong, "the image"); });
+  EXPECT_NE(error.find("its name has 304 characters, more than the"), std::string::npos) << error;
+  // 200 characters fit (NAME_MAX is 255 on Linux's file systems).
+  const std::string fits = dir + "/" + std::string(196, 'b') + ".png";
+  EXPECT_EQ(test::inputErrorOf([&] { AtomicFile::checkWritable(fits, "the image"); }), "");
+}
+
 TEST(AtomicFile, DevicesAreWrittenInPlaceNeverReplaced) {
   AtomicFile::checkWritable("/dev/null", "the image");
   writeTextFileAtomically("/dev/null", "discarded");

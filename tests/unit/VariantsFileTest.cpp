@@ -1,5 +1,6 @@
 #include "scene/InputError.h"
 #include "scene/VariantsFile.h"
+#include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -29,6 +30,21 @@ TEST(VariantsFile, VariantsWithAssignmentsAndComments) {
   EXPECT_EQ(texts(variants[1]),
             (std::vector<std::string>{"Glass.diffuseColor=1 0 0", "Lamp.location=0 0 3"}));
   EXPECT_EQ(variants[1].assignments[1].line, 6);
+}
+
+TEST(VariantsFile, ANameTooLongForAnOutputFileIsRefusedWithItsLine) {
+  // 200 characters name NAME.png and the rest; 201 would not leave room on every file system
+  // for the temporary names.
+  EXPECT_EQ(parseVariants("variant " + std::string(kMaxVariantName, 'v') + "\n", "v.variants")
+                .front()
+                .name.size(),
+            kMaxVariantName);
+  const std::string error = test::inputErrorOf([] {
+    parseVariants("variant short\nvariant " + std::string(5000, 'v') + "\n", "v.variants");
+  });
+  EXPECT_NE(error.find("v.variants:2: error: variant name of 5000 characters; at most 200"),
+            std::string::npos)
+      << error;
 }
 
 TEST(VariantsFile, ListSweepWithSharedAssignments) {
