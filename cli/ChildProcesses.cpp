@@ -1,6 +1,7 @@
 #include "cli/ChildProcesses.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -50,6 +51,10 @@ ChildProcesses::Finished ChildProcesses::waitAny() {
     running_.erase(found);
     return finished;
   }
+}
+
+void ChildProcesses::signalAll(int signal) const {
+  for (const Running& child : running_) kill(child.pid, signal);
 }
 
 std::string currentExecutable() {

@@ -21,6 +21,8 @@ class ChildProcesses {
   void start(int id, const std::vector<std::string>& arguments, const std::string& stderrPath);
   // Waits for any running child to end.
   Finished waitAny();
+  // Sends `signal` to every running child.
+  void signalAll(int signal) const;
 
  private:
   struct Running {

@@ -1,5 +1,7 @@
 #include "cli/ReferenceCommand.h"
 
+#include "cli/InterruptGuard.h"
+
 #include "cli/ExitStatus.h"
 #include "cli/ProgressBar.h"
 #include "cli/RenderMemory.h"
@@ -27,21 +29,12 @@
 #include <iostream>
 
 namespace ivshadow {
-namespace {
-
-std::atomic<bool> interrupted{false};
-
-extern "C" void onInterrupt(int) {
-  interrupted.store(true);
-}
-
-}  // namespace
 
 int runReference(const ReferenceCommandOptions& options) {
   // From the start: Ctrl-C while the scene loads stops the render as soon as it begins, so
   // the user always gets the same answer (exit 130, nothing written).
-  interrupted = false;
-  auto previous = std::signal(SIGINT, onInterrupt);
+  const InterruptGuard guard;
+  std::atomic<bool>& interrupted = InterruptGuard::flag();
   const int status = withExitStatus([&] {
     if (options.threads < 0 || options.threads > 1024)
       throw InputError("--threads " + std::to_string(options.threads) +
@@ -109,7 +102,6 @@ int runReference(const ReferenceCommandOptions& options) {
               << " triangles, " << result->shadowRays << " shadow rays, " << ms << " ms)\n";
     return 0;
   });
-  std::signal(SIGINT, previous);
   return status;
 }
 

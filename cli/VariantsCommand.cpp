@@ -2,6 +2,7 @@
 
 #include "cli/ChildProcesses.h"
 #include "cli/ExitStatus.h"
+#include "cli/InterruptGuard.h"
 #include "cli/ProgressBar.h"
 #include "cli/RenderMemory.h"
 #include "image/AtomicFile.h"
@@ -15,6 +16,8 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <nlohmann/json.hpp>
 
+#include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -204,9 +207,23 @@ void writeReports(const VariantsOptions& options, const std::vector<Variant>& va
   writeTextFileAtomically(options.outputDir + "/index.html", html.str());
 }
 
+// Files a render killed while writing leaves: its output's temporary (AtomicFile's
+// ".NAME.png.tmpPID") in the output directory.
+void removeTemporaries(const std::string& dir, const std::string& name) {
+  std::error_code ec;
+  const std::string prefix = "." + name + ".png.tmp";
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.path().filename().string().rfind(prefix, 0) == 0)
+      std::filesystem::remove(entry.path(), ec);
+}
+
 }  // namespace
 
 int runVariants(const VariantsOptions& options) {
+  // Ctrl-C (or SIGTERM) stops starting renders, interrupts the running ones, cleans up their
+  // scratch files and writes no report: exit 130, the variants finished before it kept.
+  const InterruptGuard guard;
+  const std::atomic<bool>& interrupted = InterruptGuard::flag();
   return withExitStatus([&] {
     const ImageSize size = ImageSize::parse(options.size, "--size");
     if (options.frames < 1)
@@ -233,13 +250,20 @@ int runVariants(const VariantsOptions& options) {
     std::vector<Outcome> outcomes(variants.size());
     ChildProcesses children(options.jobs);
     std::size_t next = 0;
-    int finished = 0;
+    int finished = 0, rendered = 0;
     const int total = int(variants.size());
     auto scratch = [&](std::size_t i, const char* what) {
       return options.outputDir + "/." + variants[i].name + what;
     };
-    while (next < variants.size() || !children.empty()) {
-      while (next < variants.size() && !children.full()) {
+    bool stopping = false;
+    while ((next < variants.size() && !interrupted) || !children.empty()) {
+      if (interrupted && !stopping) {
+        // The terminal sent Ctrl-C to the renders too; a signal sent to this process alone
+        // reaches them here.
+        stopping = true;
+        children.signalAll(SIGINT);
+      }
+      while (next < variants.size() && !children.full() && !interrupted) {
         std::vector<std::string> command = {self,
                                             "render",
                                             options.base,
@@ -274,7 +298,14 @@ int runVariants(const VariantsOptions& options) {
       }
       std::filesystem::remove(scratch(i, ".stats.json"), made);
       std::filesystem::remove(scratch(i, ".log"), made);
+      if (done.exitCode != 0) removeTemporaries(options.outputDir, variants[i].name);
+      if (done.exitCode == 0) ++rendered;
       bar.update(++finished, total, variants[i].name);
+    }
+    if (interrupted) {
+      std::cerr << "ivshadow: interrupted: " << rendered << " of " << total
+                << " variants rendered to " << options.outputDir << "; no report written\n";
+      return 130;
     }
 
     writeReports(options, variants, outcomes);

@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace ivshadow {
 namespace {
@@ -114,6 +117,44 @@ TEST(VariantsCommand, ACrossedSweepRendersTheGridWithColumnsOfEachMethod) {
     EXPECT_EQ(caption.find("rays traced in") != std::string::npos, rays) << caption;
     EXPECT_EQ(caption.find("map built in") != std::string::npos, !rays) << caption;
   }
+}
+
+// Ctrl-C (SIGINT to the command alone here; a terminal sends it to the renders too) stops the
+// run: no render is started after it, the running ones are interrupted, and nothing is left
+// of them (no .NAME.log, .NAME.stats.json or temporary picture), no report is written, exit
+// 130. Variants finished before it keep their pictures.
+TEST(VariantsCommand, AnInterruptedRunLeavesNoScratchFilesAndNoReport) {
+  const std::string dir = test::outputDir();
+  const std::string file = dir + "/many.variants";
+  std::ofstream(file) << "sweep light Lamp.intensity = 0.1 .. 1.0 step 0.1\n";
+  const std::string out = dir + "/out";
+  const int pid = test::startProcess(
+      {test::ivshadowExe(), "variants", test::scenesDir() + "/coloured_shadows.iv", file, "-o", out,
+       "--size", "160x120", "--jobs", "2"},
+      {}, dir + "/variants.out", dir + "/variants.err");
+  ASSERT_GT(pid, 0);
+  // Some renders are under way once their logs exist.
+  for (int i = 0; i < 200; ++i) {
+    bool started = false;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(out, ec))
+      started = started || entry.path().extension() == ".log";
+    if (started) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(pid, SIGINT);
+  EXPECT_EQ(test::waitForProcess(pid), 130);
+  EXPECT_NE(readText(dir + "/variants.err").find("ivshadow: interrupted: "), std::string::npos)
+      << readText(dir + "/variants.err");
+  int pictures = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_NE(name[0], '.') << "left behind: " << name;
+    EXPECT_NE(name, "variants.csv");
+    EXPECT_NE(name, "index.html");
+    pictures += entry.path().extension() == ".png" ? 1 : 0;
+  }
+  EXPECT_LT(pictures, 10) << "the run was not interrupted";
 }
 
 TEST(VariantsCommand, ABadVariantsFileStopsBeforeRendering) {
