@@ -121,14 +121,7 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
                    (std::uint64_t(6 * scratchLayers(request)) * bytesPerLayerTexel(request) +
                     2u * (4u + 16u) + 4u) +
                bytes_;
-  scratchDepth_.reset();
-  scratchVisibility_.reset();
-  for (int i = 0; i < 2; ++i) {
-    peelDepth_[i].reset();
-    peelVisibility_[i].reset();
-  }
-  depthBuffer_.reset();
-  framebuffer_.reset();
+  releaseScratch();
 }
 
 std::uint64_t DeepShadowMap::peakBytesFor(const MapRequest& request) {
@@ -252,6 +245,11 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
 void DeepShadowMap::releaseAll() {
   depth_.reset();
   visibility_.reset();
+  releaseScratch();
+  bytes_ = peakBytes_ = 0;
+}
+
+void DeepShadowMap::releaseScratch() {
   scratchDepth_.reset();
   scratchVisibility_.reset();
   for (int i = 0; i < 2; ++i) {
@@ -260,7 +258,6 @@ void DeepShadowMap::releaseAll() {
   }
   depthBuffer_.reset();
   framebuffer_.reset();
-  bytes_ = peakBytes_ = 0;
 }
 
 void DeepShadowMap::bind(int depthUnit, int visibilityUnit) const {

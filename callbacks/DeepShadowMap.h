@@ -58,6 +58,7 @@ class DeepShadowMap {
   void allocateScratch(const MapRequest& request);
   void keepUsedLayers(const MapRequest& request, MapBuildResult& result);
   void releaseAll();
+  void releaseScratch();  // what only a build needs
 
   GlTexture depth_;
   GlTexture visibility_;

@@ -88,9 +88,9 @@ std::vector<FieldSpec> fieldsOfType(SoType type, std::vector<FieldSpec> first) {
 }
 
 const std::vector<FieldSpec>& groupFields() {
-  static const std::vector<FieldSpec> fields =
-      fieldsOfType(SoTransparentShadowGroup::getClassTypeId(),
-                   {{kMethod, "isActive", {}}, {kMethod, "castingLights", {}}});
+  static const std::vector<FieldSpec> fields = fieldsOfType(
+      SoTransparentShadowGroup::getClassTypeId(),
+      {{kMethod, "isActive", {}}, {kMethod, "transparency", {}}, {kMethod, "castingLights", {}}});
   return fields;
 }
 
