@@ -14,35 +14,8 @@
 namespace ivshadow {
 namespace {
 
-glm::vec3 faceVector(const FaceVectors& vectors, int face) {
-  const auto& v = vectors[std::size_t(face)];
-  return {v[0], v[1], v[2]};
-}
-
 // Empty layers hold this distance, so a lookup walking the layers stops at them.
 constexpr float kNoSurface = std::numeric_limits<float>::max();
-
-// View of face `face` from `light` followed by a 90-degree projection that maps distance
-// `near` to depth 1 and `far` to 0 (reversed depth with glClipControl's zero-to-one range:
-// floating-point depth then keeps its precision over near/far ratios of 1e6 and more).
-glm::mat4 faceViewProjection(int face, const glm::vec3& light, float near, float far) {
-  const glm::vec3 axis = faceVector(kFaceAxis, face), right = faceVector(kFaceRight, face),
-                  up = faceVector(kFaceUp, face);
-  glm::mat4 view(1.0f);
-  for (int column = 0; column < 3; ++column) {
-    view[column][0] = right[column];
-    view[column][1] = up[column];
-    view[column][2] = -axis[column];
-  }
-  view[3] = glm::vec4(-glm::dot(right, light), -glm::dot(up, light), glm::dot(axis, light), 1.0f);
-  glm::mat4 projection(0.0f);
-  projection[0][0] = 1.0f;
-  projection[1][1] = 1.0f;
-  projection[2][2] = near / (far - near);
-  projection[2][3] = -1.0f;
-  projection[3][2] = near * far / (far - near);
-  return projection * view;
-}
 
 void configureNearest(GLuint texture) {
   glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -72,12 +45,16 @@ int scratchLayers(const MapRequest& request) {
   return request.layers + 1;
 }
 
+int scratchLayersInAll(const MapRequest& request) {
+  return request.frame.faceCount * scratchLayers(request);
+}
+
 }  // namespace
 
 void DeepShadowMap::allocateScratch(const MapRequest& request) {
   const int size = request.resolution;
-  scratchDepth_ = makeArray(GL_R32F, size, 6 * scratchLayers(request));
-  scratchVisibility_ = makeArray(visibilityFormat(request), size, 6 * scratchLayers(request));
+  scratchDepth_ = makeArray(GL_R32F, size, scratchLayersInAll(request));
+  scratchVisibility_ = makeArray(visibilityFormat(request), size, scratchLayersInAll(request));
   for (int i = 0; i < 2; ++i) {
     peelDepth_[i] = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(peelDepth_[i].get(), 1, GL_R32F, size, size);
@@ -98,7 +75,7 @@ void DeepShadowMap::allocateScratch(const MapRequest& request) {
 
 void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& result) {
   int total = 0;
-  for (int face = 0; face < 6; ++face) {
+  for (int face = 0; face < request.frame.faceCount; ++face) {
     result.firstLayer[std::size_t(face)] = total;
     total += result.layersUsed[std::size_t(face)];
   }
@@ -106,7 +83,7 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
   // An empty map still binds one (never read) layer, so the sampler stays complete.
   depth_ = makeArray(GL_R32F, size, std::max(total, 1));
   visibility_ = makeArray(visibilityFormat(request), size, std::max(total, 1));
-  for (int face = 0; face < 6; ++face) {
+  for (int face = 0; face < request.frame.faceCount; ++face) {
     const int count = result.layersUsed[std::size_t(face)];
     if (count == 0) continue;
     const int from = face * scratchLayers(request), to = result.firstLayer[std::size_t(face)];
@@ -118,7 +95,7 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
   bytes_ = std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(std::max(total, 1)) *
            bytesPerLayerTexel(request);
   peakBytes_ = std::uint64_t(size) * std::uint64_t(size) *
-                   (std::uint64_t(6 * scratchLayers(request)) * bytesPerLayerTexel(request) +
+                   (std::uint64_t(scratchLayersInAll(request)) * bytesPerLayerTexel(request) +
                     2u * (4u + 16u) + 4u) +
                bytes_;
   releaseScratch();
@@ -128,7 +105,7 @@ std::uint64_t DeepShadowMap::peakBytesFor(const MapRequest& request) {
   const std::uint64_t texels =
       std::uint64_t(request.resolution) * std::uint64_t(request.resolution);
   const std::uint64_t scratch =
-      std::uint64_t(6 * scratchLayers(request)) * bytesPerLayerTexel(request);
+      std::uint64_t(scratchLayersInAll(request)) * bytesPerLayerTexel(request);
   return texels * (2u * scratch + 2u * (4u + 16u) + 4u);
 }
 
@@ -164,15 +141,13 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   program.setInt("uPreviousDepth", 0);
   program.setInt("uPreviousVisibility", 1);
   program.setInt("uColourModel", static_cast<int>(request.colourModel));
-  program.setVec3("uLightPosition", request.light);
   program.setInt("uOpaqueOnly", 0);
 
-  const glm::vec3 light(request.light[0], request.light[1], request.light[2]);
-  for (int face = 0; face < 6; ++face) {
-    const glm::mat4 viewProjection =
-        faceViewProjection(face, light, request.nearRadius, request.farRadius);
-    program.setMat4("uViewProjection", glm::value_ptr(viewProjection));
-    program.setInt("uFace", face);
+  for (int face = 0; face < request.frame.faceCount; ++face) {
+    const MapFace& view = request.frame.faces[std::size_t(face)];
+    program.setMat4("uViewProjection", glm::value_ptr(view.viewProjection));
+    program.setVec3("uDepthOrigin", glm::value_ptr(view.depthOrigin));
+    program.setVec3("uDepthAxis", glm::value_ptr(view.depthAxis));
     // Before the first layer nothing is peeled and all light arrives.
     glClearTexImage(peelDepth_[0].get(), 0, GL_RED, GL_FLOAT, nothingPeeled);
     glClearTexImage(peelVisibility_[0].get(), 0, GL_RGBA, GL_FLOAT, clear);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
+#include "callbacks/MapFrame.h"
 #include "scene/ShadowTypes.h"
 
 #include <array>
@@ -13,9 +14,7 @@ class GlProgram;
 
 // What one light's map must hold.
 struct MapRequest {
-  float light[3] = {0.0f, 0.0f, 0.0f};  // light position in the casters' coordinates
-  float nearRadius = 0.01f;
-  float farRadius = 100.0f;
+  MapFrame frame;  // its faces, in the casters' coordinates
   int resolution = 512;
   int layers = 4;
   bool coloured = false;
@@ -25,15 +24,17 @@ struct MapRequest {
 
 struct MapBuildResult {
   bool outOfMemory = false;  // GL_OUT_OF_MEMORY during the build: the map holds nothing
-  // Layers stored per face: at most maxLayers, plus the closing layer (DeepShadowMap).
+  // Layers stored per face: at most maxLayers, plus the closing layer (DeepShadowMap). A
+  // one-face map (MapFrame) uses face 0 only.
   std::array<int, 6> layersUsed{};
   std::array<int, 6> passes{};
   std::array<int, 6> firstLayer{};  // where each face's layers start in the stored arrays
 };
 
-// One cube deep shadow map (seeds/000 §5): for each face and peeled layer, the distance of the
-// surface along the face axis (32-bit) and the visibility after it (1 or 3 channels, 16 or
-// 32 bits). Faces are peeled into scratch arrays of 6 x (maxLayers + 1) layers; afterwards only
+// One deep shadow map (seeds/000 §5), a cube or one face (MapFrame): for each face and peeled
+// layer, the distance of the surface along the face axis (32-bit) and the visibility after it
+// (1 or 3 channels, 16 or 32 bits). Faces are peeled into scratch arrays of faces x
+// (maxLayers + 1) layers; afterwards only
 // the layers that hold a surface are kept, face after face (layer k of face f is array layer
 // firstLayer[f] + k), and the scratch memory is released: a face without casters costs no
 // memory, and a scene with one transparent surface keeps two layers, not maxLayers. When a

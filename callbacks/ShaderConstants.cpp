@@ -33,6 +33,9 @@ std::string shaderConstantDefines() {
        << "#define IVSHADOW_FACE_UP " << faceArray(kFaceUp) << "\n"
        << "#define IVSHADOW_MAP_FLAGS_BINDING " << kMapFlagsBinding << "\n"
        << "#define IVSHADOW_PEEL_PROGRESS_BINDING " << kPeelProgressBinding << "\n"
+       << "#define IVSHADOW_MAP_CUBE " << int(MapProjection::Cube) << "\n"
+       << "#define IVSHADOW_MAP_PERSPECTIVE " << int(MapProjection::Perspective) << "\n"
+       << "#define IVSHADOW_MAP_ORTHOGRAPHIC " << int(MapProjection::Orthographic) << "\n"
        << "#define IVSHADOW_COLOUR_MONOCHROME " << int(ShadowColourModel::Monochrome) << "\n"
        << "#define IVSHADOW_COLOUR_SATURATE " << int(ShadowColourModel::Saturate) << "\n"
        << "#define IVSHADOW_COLOUR_POWER " << int(ShadowColourModel::Power) << "\n";

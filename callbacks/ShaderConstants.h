@@ -27,6 +27,17 @@ inline constexpr FaceVectors kFaceRight = {
 inline constexpr FaceVectors kFaceUp = {
     {{0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}}};
 
+// How a deep shadow map sees its casters: a point light's cube (six faces of kFaceAxis), one
+// perspective face along a spot light's axis that covers its cone, or one orthographic face
+// along a directional light. The map build and the lookup (lighting.glsl) both branch on it.
+enum class MapProjection : int { Cube = 0, Perspective = 1, Orthographic = 2 };
+
+// A spot light whose cone is at most this wide (half angle, radians) gets one perspective
+// face; a wider one the cube of a point light, since one face of more than 120 degrees
+// spends its texels at the rim (a texel at the axis covers 4 times less angle than at 60
+// degrees, 15 times less at 75).
+inline constexpr float kMaxSpotFaceHalfAngle = 1.04719755f;  // pi / 3
+
 // Shader storage binding points: the map build's "any / transparent fragment" flags and the
 // peel passes' "deeper layers left" flag.
 inline constexpr int kMapFlagsBinding = 0;

@@ -27,6 +27,9 @@ void ShadingUniforms::apply(const UniformLocations& locations) const {
   glProgramUniform3fv(program, at("uMapLightEye"), kMaxLights, mapLightEye.data());
   glProgramUniform4fv(program, at("uMapParams"), kMaxLights, mapParams.data());
   glProgramUniform1iv(program, at("uMapColoured"), kMaxLights, mapColoured.data());
+  glProgramUniform1iv(program, at("uMapProjection"), kMaxLights, mapProjection.data());
+  glProgramUniformMatrix4fv(program, at("uMapLookup"), kMaxLights, GL_FALSE, mapLookup.data());
+  glProgramUniform2fv(program, at("uMapTexelScale"), kMaxLights, mapTexelScale.data());
   glProgramUniform1iv(program, at("uMapFaceFirst"), 6 * kMaxLights, mapFaceFirst.data());
   glProgramUniform1iv(program, at("uMapFaceLayers"), 6 * kMaxLights, mapFaceLayers.data());
   glProgramUniform1iv(program, at("uMapRay"), kMaxLights, mapRay.data());

@@ -21,6 +21,11 @@ struct ShadingUniforms {
   std::array<float, 3 * kMaxLights> mapLightEye{};
   std::array<float, 4 * kMaxLights> mapParams{};
   std::array<int, kMaxLights> mapColoured{};
+  // Per slot, its map's MapFrame: projection (MapProjection), lookup matrix (column-major),
+  // texel scale.
+  std::array<int, kMaxLights> mapProjection{};
+  std::array<float, 16 * kMaxLights> mapLookup{};
+  std::array<float, 2 * kMaxLights> mapTexelScale{};
   std::array<int, 6 * kMaxLights> mapFaceFirst{};
   std::array<int, 6 * kMaxLights> mapFaceLayers{};
   // Per slot: the index of its RAYS light among the traced ones, -1 for a slot with a map.

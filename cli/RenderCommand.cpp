@@ -77,6 +77,8 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
                       {"resolution", light.resolution},
                       {"near_radius", light.nearRadius},
                       {"far_radius", light.farRadius},
+                      {"projection", light.projection},
+                      {"extent", light.extent},
                       {"method", light.method}});
     if (std::find(methods.begin(), methods.end(), light.method) == methods.end())
       methods.push_back(light.method);

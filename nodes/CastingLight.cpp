@@ -53,7 +53,16 @@ bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
       warnCannotCast(light, "cutOffAngle " + std::to_string(cutOff) + " is not in (0, pi/2]");
       return false;
     }
+    SbVec3f axis;
+    toGroup.multDirMatrix(spot.direction.getValue(), axis);
+    if (!usableDirection(axis)) {
+      warnCannotCast(light, "its direction is zero");
+      return false;
+    }
+    axis.normalize();
     out.kind = LightKind::Spot;
+    out.axis = axis;
+    out.cutOffAngle = cutOff;
     toGroup.multVecMatrix(spot.location.getValue(), out.position);
     return true;
   }

@@ -20,6 +20,10 @@ struct CastingLight {
   // In the coordinates of `toGroup` (the group's): a point or spot light's location; for a
   // directional light, the unit direction towards the light.
   SbVec3f position;
+  // A spot light's unit axis (the direction it shines in) in the same coordinates, and its
+  // cutOffAngle.
+  SbVec3f axis{0.0f, 0.0f, -1.0f};
+  float cutOffAngle = 0.0f;
 };
 
 // Whether `light` casts in `group` (its castingLights field, the light's on field, the light

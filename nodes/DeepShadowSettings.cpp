@@ -72,7 +72,9 @@ void readRadii(const Light& light, DeepShadowSettings& s) {
   }
 }
 
+// A group's ordinary lights and a directional light's map fit their range to the casters.
 void readRadii(const SoTransparentShadowGroup&, DeepShadowSettings&) {}
+void readRadii(const SoDeepShadowDirectionalLight&, DeepShadowSettings&) {}
 
 // SoDeepShadowLight and SoTransparentShadowGroup have the shadow fields under the same names.
 template <class Node>
@@ -118,13 +120,9 @@ DeepShadowSettings castingSettings(SoLight& light, SoTransparentShadowGroup& gro
     return resolveFields(static_cast<SoDeepShadowLight&>(light), maxTextureSize);
   if (light.isOfType(SoDeepShadowSpotLight::getClassTypeId()))
     return resolveFields(static_cast<SoDeepShadowSpotLight&>(light), maxTextureSize);
-  DeepShadowSettings s = resolveFields(group, maxTextureSize);
-  if (light.isOfType(SoDeepShadowDirectionalLight::getClassTypeId())) {
-    const auto& own = static_cast<SoDeepShadowDirectionalLight&>(light);
-    s.shadowColor = own.shadowColor.getValue();
-    s.colorModel = own.colorModel.getValue();
-  }
-  return s;
+  if (light.isOfType(SoDeepShadowDirectionalLight::getClassTypeId()))
+    return resolveFields(static_cast<SoDeepShadowDirectionalLight&>(light), maxTextureSize);
+  return resolveFields(group, maxTextureSize);
 }
 
 ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {

@@ -7,12 +7,16 @@
 #include "nodes/MapState.h"
 
 #include <Inventor/SbBox3f.h>
+#include <Inventor/SbViewVolume.h>
+#include <Inventor/elements/SoModelMatrixElement.h>
+#include <Inventor/elements/SoViewVolumeElement.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/nodes/SoNode.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -37,9 +41,109 @@ void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, flo
 
 }  // namespace
 
-void fitMapRange(MapState& map, const SbBox3f& casterBounds) {
+namespace {
+
+glm::vec3 toGlm(const SbVec3f& v) {
+  return {v[0], v[1], v[2]};
+}
+
+// The box of `points` in the coordinates of a face along `axis` (x: right, y: up, z: along
+// the axis; orthographicBasis).
+template <typename Points>
+void boundsAlong(const glm::vec3& axis, const Points& points, glm::vec3& low, glm::vec3& high) {
+  glm::vec3 right, up;
+  orthographicBasis(axis, right, up);
+  low = glm::vec3(std::numeric_limits<float>::max());
+  high = -low;
+  for (const SbVec3f& point : points) {
+    const glm::vec3 p = toGlm(point);
+    const glm::vec3 q(glm::dot(p, right), glm::dot(p, up), glm::dot(p, axis));
+    low = glm::min(low, q);
+    high = glm::max(high, q);
+  }
+}
+
+std::array<SbVec3f, 8> boxCorners(const SbBox3f& box) {
+  std::array<SbVec3f, 8> corners;
+  for (int i = 0; i < 8; ++i)
+    for (int k = 0; k < 3; ++k)
+      corners[std::size_t(i)][k] = (i >> k) & 1 ? box.getMax()[k] : box.getMin()[k];
+  return corners;
+}
+
+// A directional light's rectangle (x, y across the light): what the casters cover and the
+// view shows, and the casters' depth range along the light (z). No overlap: an empty
+// rectangle (low > high).
+void visibleCasterRectangle(const glm::vec3& axis, const SbBox3f& casterBounds,
+                            const ViewCorners& view, glm::vec3& low, glm::vec3& high) {
+  boundsAlong(axis, boxCorners(casterBounds), low, high);
+  glm::vec3 viewLow, viewHigh;
+  boundsAlong(axis, view, viewLow, viewHigh);
+  // A receiver the view shows and the casters that shadow it lie on one line along the
+  // light: only the view's footprint across the light matters, not its depth.
+  low.x = std::max(low.x, viewLow.x);
+  low.y = std::max(low.y, viewLow.y);
+  high.x = std::min(high.x, viewHigh.x);
+  high.y = std::min(high.y, viewHigh.y);
+}
+
+void fitDirectional(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view) {
+  const glm::vec3 axis = -toGlm(map.position);  // the way the light travels
+  glm::vec3 low(0.0f), high(0.0f);
+  if (!casterBounds.isEmpty()) {
+    visibleCasterRectangle(axis, casterBounds, view, low, high);
+    glm::vec3 castersLow, castersHigh;
+    boundsAlong(axis, boxCorners(casterBounds), castersLow, castersHigh);
+    if (low.x > high.x || low.y > high.y) {
+      // Nothing the view shows is shadowed: a map of no extent, drawn over nothing.
+      low = high = 0.5f * (castersLow + castersHigh);
+    } else {
+      // A margin of a quarter on each side, within the casters, so that a camera moving a
+      // little keeps the map (mapServesView).
+      const glm::vec3 margin = 0.25f * (high - low);
+      low = glm::max(low - margin, castersLow);
+      high = glm::min(high + margin, castersHigh);
+    }
+    // The casters' whole depth, a little more on either side so that none touches a plane.
+    const float pad =
+        0.01f * (castersHigh.z - castersLow.z) + 1e-4f * (1.0f + std::abs(castersHigh.z));
+    low.z = castersLow.z - pad;
+    high.z = castersHigh.z + pad;
+  }
+  map.coveredLow = low;
+  map.coveredHigh = high;
+  map.nearRadius = 0.0f;
+  map.farRadius = high.z - low.z;
+  map.frame = orthographicFrame(axis, low, high);
+}
+
+}  // namespace
+
+ViewCorners viewCorners(SoState* state) {
+  // The view volume is in world coordinates; the casters are in the group's.
+  const SbViewVolume& volume = SoViewVolumeElement::get(state);
+  SbMatrix affine, projection;
+  volume.getMatrices(affine, projection);
+  const SbMatrix groupToClip = SoModelMatrixElement::get(state) * affine * projection;
+  const SbMatrix clipToGroup = groupToClip.inverse();
+  ViewCorners corners;
+  for (int i = 0; i < 8; ++i) {
+    const SbVec3f ndc(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f);
+    clipToGroup.multVecMatrix(ndc, corners[std::size_t(i)]);
+  }
+  return corners;
+}
+
+void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view) {
+  if (map.kind == LightKind::Directional) {
+    fitDirectional(map, casterBounds, view);
+    return;
+  }
   float nearest = 0.0f, farthest = 1.0f;
   if (!casterBounds.isEmpty()) distanceRange(casterBounds, map.position, nearest, farthest);
+  const bool oneFace = map.kind == LightKind::Spot && map.cutOffAngle <= kMaxSpotFaceHalfAngle;
+  // A point in the cone lies at least cos(cutOffAngle) of its distance along the axis.
+  if (oneFace) nearest *= std::cos(map.cutOffAngle);
   // The map must reach past the farthest caster; the near plane may not cut off any of
   // them, and reversed floating-point depth keeps a 1e5 ratio precise.
   const float far = farthest > 0.0f ? farthest * 1.01f : 1.0f;
@@ -47,6 +151,31 @@ void fitMapRange(MapState& map, const SbBox3f& casterBounds) {
   map.nearRadius = map.settings.nearRadius > 0.0f ? map.settings.nearRadius
                                                   : std::max(nearest * 0.99f, far * 1e-5f);
   if (map.nearRadius >= map.farRadius) map.nearRadius = map.farRadius * 1e-5f;
+  if (oneFace) {
+    // One percent wider than the cone, so that the cone's rim and the filter's taps there
+    // fall inside the face.
+    const float halfAngle = std::atan(std::tan(map.cutOffAngle) * 1.01f);
+    map.frame = perspectiveFrame(toGlm(map.position), toGlm(map.axis), halfAngle, map.nearRadius,
+                                 map.farRadius);
+  } else {
+    map.frame = cubeFrame(toGlm(map.position), map.nearRadius, map.farRadius);
+  }
+}
+
+bool mapServesView(const MapState& map, const SbBox3f& casterBounds, const ViewCorners& view) {
+  if (map.kind != LightKind::Directional || casterBounds.isEmpty()) return true;
+  glm::vec3 low, high;
+  visibleCasterRectangle(-toGlm(map.position), casterBounds, view, low, high);
+  if (low.x > high.x || low.y > high.y) return true;  // nothing visible is shadowed
+  // Rounding: a rectangle fitted from the same view must serve it.
+  const glm::vec2 slack = 1e-4f * (glm::vec2(map.coveredHigh - map.coveredLow) + 1e-3f);
+  const bool inside = low.x >= map.coveredLow.x - slack.x && low.y >= map.coveredLow.y - slack.y &&
+                      high.x <= map.coveredHigh.x + slack.x &&
+                      high.y <= map.coveredHigh.y + slack.y;
+  const float needed = std::max(high.x - low.x, high.y - low.y);
+  const float covered =
+      std::max(map.coveredHigh.x - map.coveredLow.x, map.coveredHigh.y - map.coveredLow.y);
+  return inside && 3.0f * needed >= covered;
 }
 
 std::uint64_t mapMemoryBudget(bool softwareRenderer) {
@@ -71,9 +200,7 @@ std::uint64_t mapMemoryBudget(bool softwareRenderer) {
 void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLightStatistics& light,
                   const SoNode& lightNode, std::uint64_t budget) {
   MapRequest request;
-  for (int i = 0; i < 3; ++i) request.light[i] = map.position[i];
-  request.nearRadius = map.nearRadius;
-  request.farRadius = map.farRadius;
+  request.frame = map.frame;
   request.resolution = map.settings.resolution;
   request.layers = map.settings.maxLayers;
   request.coloured = map.coloured;
@@ -122,6 +249,11 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   light.bytes = pass.mapBytes(slot);
   light.peakBytes = pass.mapPeakBytes(slot);
   light.resolution = request.resolution;
+  light.projection = map.frame.projection == MapProjection::Cube          ? "CUBE"
+                     : map.frame.projection == MapProjection::Perspective ? "PERSPECTIVE"
+                                                                          : "ORTHOGRAPHIC";
+  if (map.frame.projection == MapProjection::Orthographic)
+    light.extent = {map.coveredHigh.x - map.coveredLow.x, map.coveredHigh.y - map.coveredLow.y};
   light.nearRadius = map.nearRadius;
   light.farRadius = map.farRadius;
 }

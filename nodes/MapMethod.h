@@ -1,9 +1,13 @@
 #pragma once
 
+#include <Inventor/SbVec3f.h>
+
+#include <array>
 #include <cstdint>
 
 class SbBox3f;
 class SoNode;
+class SoState;
 
 namespace ivshadow {
 
@@ -14,9 +18,22 @@ struct MapState;
 // The MAP method of one light slot (seeds/000 §5): the map's depth range, fitted to the casters
 // unless the light sets it, then the map itself.
 
-// Sets map.nearRadius and map.farRadius from the light's settings or, where they are not set,
-// from the casters' bounds seen from map.position.
-void fitMapRange(MapState& map, const SbBox3f& casterBounds);
+// The corners of what the camera can show (its view volume), in the coordinates of the
+// group being traversed in `state`.
+using ViewCorners = std::array<SbVec3f, 8>;
+ViewCorners viewCorners(SoState* state);
+
+// Sets the map's frame (MapFrame) and depth range for its light: a point light's cube, a
+// spot light's one perspective face over its cone (a cone wider than kMaxSpotFaceHalfAngle:
+// the cube), a directional light's orthographic face over the casters' bounds clipped to
+// `view`. The range comes from the light's settings or, where they are not set, from the
+// casters' bounds.
+void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view);
+
+// Whether a directional light's map fitted before still serves `view`: everything the view
+// shows of the casters lies inside it, and it is not over three times as wide as that (the
+// texels would be wasted). Other maps do not depend on the view.
+bool mapServesView(const MapState& map, const SbBox3f& casterBounds, const ViewCorners& view);
 
 // The memory a map build may take in the current context: what GL says it can give
 // (callbacks/GlMemoryBudget.h), capped by IVSHADOW_GL_MEMORY_LIMIT (bytes; a value that is

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlLimits.h"
+#include "callbacks/MapFrame.h"
 #include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
 
@@ -16,10 +17,17 @@ namespace ivshadow {
 struct MapState {
   LightKind kind = LightKind::Point;
   SbVec3f position;  // for a directional light: the unit direction towards it
+  SbVec3f axis;      // a spot light's (CastingLight)
+  float cutOffAngle = 0.0f;
   DeepShadowSettings settings;
   bool coloured = false;
-  float nearRadius = 0.0f;
+  float nearRadius = 0.0f;  // the map's depth range along its axes
   float farRadius = 0.0f;
+  MapFrame frame;  // the faces the map is built over (fitMapFrame)
+  // A directional light's map: the rectangle across the light it covers, coordinates along
+  // orthographicBasis (z: the depth range); fitted to the casters and what the view shows.
+  glm::vec3 coveredLow{0.0f};
+  glm::vec3 coveredHigh{0.0f};
   std::array<int, 6> faceFirst{};
   std::array<int, 6> faceLayers{};
   bool rays = false;  // method RAYS: no map, traced per pixel

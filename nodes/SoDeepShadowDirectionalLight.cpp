@@ -1,7 +1,7 @@
 #include "ivshadow/SoDeepShadowDirectionalLight.h"
 
 #include "ivshadow/SoDeepShadowLight.h"
-#include "nodes/DeepShadowEnums.h"
+#include "nodes/ShadowFields.h"
 
 SO_NODE_SOURCE(SoDeepShadowDirectionalLight);
 
@@ -18,11 +18,7 @@ void SoDeepShadowDirectionalLight::initClass() {
 
 SoDeepShadowDirectionalLight::SoDeepShadowDirectionalLight() {
   SO_NODE_CONSTRUCTOR(SoDeepShadowDirectionalLight);
-  SO_NODE_ADD_FIELD(shadowColor, (SoDeepShadowLight::AUTO));
-  SO_NODE_ADD_FIELD(colorModel, (SoDeepShadowLight::SATURATE));
-  if (SO_NODE_IS_FIRST_INSTANCE()) ivshadow::addDeepShadowEnumValues(fieldData);
-  SO_NODE_SET_SF_ENUM_TYPE(shadowColor, ShadowColor);
-  SO_NODE_SET_SF_ENUM_TYPE(colorModel, ColorModel);
+  IVSHADOW_ADD_SHADOW_FIELDS();
 }
 
 SoDeepShadowDirectionalLight::~SoDeepShadowDirectionalLight() = default;

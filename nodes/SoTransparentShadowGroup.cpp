@@ -1,7 +1,7 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 
 #include "ivshadow/SoDeepShadowLight.h"
-#include "nodes/DeepShadowEnums.h"
+#include "nodes/ShadowFields.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparentShadowGroupImpl.h"
 
@@ -36,25 +36,10 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_CONSTRUCTOR(SoTransparentShadowGroup);
   SO_NODE_ADD_FIELD(isActive, (TRUE));
   SO_NODE_ADD_FIELD(castingLights, (ALL_LIGHTS));
-  // The defaults of SoDeepShadowLight's fields of the same names.
-  SO_NODE_ADD_FIELD(method, (SoDeepShadowLight::AUTO_METHOD));
-  SO_NODE_ADD_FIELD(resolution, (512));
-  SO_NODE_ADD_FIELD(maxLayers, (4));
-  SO_NODE_ADD_FIELD(bias, (1.0f));
-  SO_NODE_ADD_FIELD(shadowColor, (SoDeepShadowLight::AUTO));
-  SO_NODE_ADD_FIELD(colorModel, (SoDeepShadowLight::SATURATE));
-  SO_NODE_ADD_FIELD(precision, (SoDeepShadowLight::FLOAT));
-  SO_NODE_ADD_FIELD(filter, (SoDeepShadowLight::NONE));
-  SO_NODE_ADD_FIELD(filterSize, (3));
+  IVSHADOW_ADD_SHADOW_FIELDS();
   SO_NODE_DEFINE_ENUM_VALUE(CastingLights, ALL_LIGHTS);
   SO_NODE_DEFINE_ENUM_VALUE(CastingLights, DEEP_SHADOW_LIGHTS);
   SO_NODE_SET_SF_ENUM_TYPE(castingLights, CastingLights);
-  if (SO_NODE_IS_FIRST_INSTANCE()) ivshadow::addDeepShadowEnumValues(fieldData);
-  SO_NODE_SET_SF_ENUM_TYPE(method, Method);
-  SO_NODE_SET_SF_ENUM_TYPE(shadowColor, ShadowColor);
-  SO_NODE_SET_SF_ENUM_TYPE(colorModel, ColorModel);
-  SO_NODE_SET_SF_ENUM_TYPE(precision, Precision);
-  SO_NODE_SET_SF_ENUM_TYPE(filter, Filter);
   SO_NODE_ADD_FIELD(transparency, (PEELED));
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, PEELED);
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, COIN_BLENDING);

@@ -64,75 +64,65 @@ void TransparentShadowGroupImpl::changed(SoNotList* list) {
   contents_.changed(list);
 }
 
+void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& context,
+                                           std::size_t slot, std::uint64_t memoryBudget) {
+  DeepShadowPass& pass = *context.pass;
+  const GroupContents::Light& entry = contents_.lights()[slot];
+  const SceneTriangles& casters = contents_.casters();
+  auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
+  MapState& map = context.maps[slot];
+  map = MapState{};
+  map.settings = castingSettings(*entry.light, group, pass.maxTextureSize());
+  SoGetMatrixAction matrixAction(action->getViewportRegion());
+  matrixAction.apply(entry.path.get());
+  CastingLight where;
+  castingLight(*entry.light, group, matrixAction.getMatrix(), where);
+  map.kind = where.kind;
+  map.position = where.position;
+  map.axis = where.axis;
+  map.cutOffAngle = where.cutOffAngle;
+  // Coin's SoShadowSpotLight bounds its shadow map by nearDistance and farDistance (-1:
+  // fitted): the map's range, the same meaning.
+  if (entry.light->isOfType(SoShadowSpotLight::getClassTypeId())) {
+    const auto& spot = static_cast<const SoShadowSpotLight&>(*entry.light);
+    map.settings.nearRadius = spot.nearDistance.getValue();
+    map.settings.farRadius = spot.farDistance.getValue();
+    if (!(map.settings.nearRadius < map.settings.farRadius) && map.settings.farRadius > 0.0f)
+      map.settings.nearRadius = map.settings.farRadius = -1.0f;
+  }
+  fitMapFrame(map, casters.bounds, viewCorners(action->getState()));
+  int method = map.settings.method;
+  if (method == SoDeepShadowLight::AUTO_METHOD) {
+    method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
+    if (methodLogged_.insert(entry.light).second)
+      SoDebugError::postInfo(entry.deep ? "SoDeepShadowLight" : "SoTransparentShadowGroup",
+                             "light %s: method AUTO uses %s on %s", lightName(*entry.light).c_str(),
+                             methodName(method), context.renderer.c_str());
+  }
+  if (method == SoDeepShadowLight::RAYS &&
+      !rayCasters_.ready(casters, contents_.castersVersion(), entry.light, lightName(*entry.light),
+                         "using its deep shadow map", statistics_))
+    method = SoDeepShadowLight::MAP;
+  map.rays = method == SoDeepShadowLight::RAYS;
+  map.model = castingColourModel(*entry.light, group, casters.hasColouredTransparent);
+  map.coloured = map.model != ShadowColourModel::Monochrome;
+  DeepShadowLightStatistics& light = statistics_.lights[slot];
+  light = DeepShadowLightStatistics{};
+  light.name = entry.light->getName().getString();
+  light.coloured = map.coloured;
+  light.method = methodName(method);
+  if (!map.rays) buildSlotMap(pass, int(slot), map, light, *entry.light, memoryBudget);
+}
+
 void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& context) {
   const auto start = std::chrono::steady_clock::now();
   context.buildTimer.start();
-  DeepShadowPass& pass = *context.pass;
-  const std::vector<GroupContents::Light>& lights = contents_.lights();
-  const SceneTriangles& casters = contents_.casters();
-  context.maps.assign(lights.size(), MapState{});
-  statistics_.lights.clear();
-  SoGetMatrixAction matrixAction(action->getViewportRegion());
+  const std::size_t lights = contents_.lights().size();
+  context.maps.assign(lights, MapState{});
+  statistics_.lights.assign(lights, DeepShadowLightStatistics{});
   const std::uint64_t memoryBudget = mapMemoryBudget(context.softwareRenderer);
-  auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
-  for (std::size_t slot = 0; slot < lights.size(); ++slot) {
-    const GroupContents::Light& entry = lights[slot];
-    MapState& map = context.maps[slot];
-    map.settings = castingSettings(*entry.light, group, pass.maxTextureSize());
-    matrixAction.apply(entry.path.get());
-    CastingLight where;
-    castingLight(*entry.light, group, matrixAction.getMatrix(), where);
-    map.kind = where.kind;
-    map.position = where.position;
-    // Coin's SoShadowSpotLight bounds its shadow map by nearDistance and farDistance (-1:
-    // fitted): the cube map's radii, the same meaning.
-    if (entry.light->isOfType(SoShadowSpotLight::getClassTypeId())) {
-      const auto& spot = static_cast<const SoShadowSpotLight&>(*entry.light);
-      map.settings.nearRadius = spot.nearDistance.getValue();
-      map.settings.farRadius = spot.farDistance.getValue();
-      if (!(map.settings.nearRadius < map.settings.farRadius) && map.settings.farRadius > 0.0f)
-        map.settings.nearRadius = map.settings.farRadius = -1.0f;
-    }
-    if (map.kind != LightKind::Directional) fitMapRange(map, casters.bounds);
-    int method = map.settings.method;
-    if (method == SoDeepShadowLight::AUTO_METHOD) {
-      method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
-      if (methodLogged_.insert(entry.light).second)
-        SoDebugError::postInfo(entry.deep ? "SoDeepShadowLight" : "SoTransparentShadowGroup",
-                               "light %s: method AUTO uses %s on %s",
-                               lightName(*entry.light).c_str(), methodName(method),
-                               context.renderer.c_str());
-    }
-    // No map is built for a directional light: its shadows are traced with either method.
-    if (map.kind == LightKind::Directional && method == SoDeepShadowLight::MAP) {
-      if (methodLogged_.insert(entry.light).second)
-        SoDebugError::postInfo("SoTransparentShadowGroup",
-                               "light %s: a directional light's shadows are traced (RAYS)",
-                               lightName(*entry.light).c_str());
-      method = SoDeepShadowLight::RAYS;
-    }
-    if (method == SoDeepShadowLight::RAYS &&
-        !rayCasters_.ready(casters, contents_.castersVersion(), entry.light,
-                           lightName(*entry.light),
-                           map.kind == LightKind::Directional ? "it lights without a shadow"
-                                                              : "using its deep shadow map",
-                           statistics_))
-      method = map.kind == LightKind::Directional ? -1 : SoDeepShadowLight::MAP;
-    map.rays = method == SoDeepShadowLight::RAYS;
-    map.model = castingColourModel(*entry.light, group, casters.hasColouredTransparent);
-    map.coloured = map.model != ShadowColourModel::Monochrome;
-    DeepShadowLightStatistics light;
-    light.name = entry.light->getName().getString();
-    light.coloured = map.coloured;
-    light.method = method < 0 ? "NONE" : methodName(method);
-    if (map.rays || method < 0) {
-      statistics_.lights.push_back(light);
-      continue;
-    }
-    buildSlotMap(pass, int(slot), map, light, *entry.light, memoryBudget);
-    statistics_.lights.push_back(light);
-  }
-  pass.keepSlots(int(lights.size()));
+  for (std::size_t slot = 0; slot < lights; ++slot) buildSlot(action, context, slot, memoryBudget);
+  context.pass->keepSlots(int(lights));
   // The build restored every GL state it changed; the lazy element is told anyway, since the
   // restored values are what GL holds and Coin must not skip sending its own.
   SoGLLazyElement::getInstance(action->getState())
@@ -146,6 +136,29 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   ++statistics_.rebuilds;
   statistics_.casterTriangles = int(contents_.casters().triangleCount());
   context.mapsVersion = contents_.mapsVersion();
+}
+
+void TransparentShadowGroupImpl::refitToView(SoGLRenderAction* action, Context& context) {
+  const ViewCorners view = viewCorners(action->getState());
+  const auto start = std::chrono::steady_clock::now();
+  bool rebuilt = false;
+  for (std::size_t slot = 0; slot < context.maps.size(); ++slot) {
+    const MapState& map = context.maps[slot];
+    if (map.rays || mapServesView(map, contents_.casters().bounds, view)) continue;
+    if (!rebuilt) context.buildTimer.start();
+    buildSlot(action, context, slot, mapMemoryBudget(context.softwareRenderer));
+    rebuilt = true;
+  }
+  if (!rebuilt) return;
+  SoGLLazyElement::getInstance(action->getState())
+      ->reset(action->getState(), SoLazyElement::ALL_MASK);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  statistics_.lastBuildMs = ms;
+  context.buildTimer.stop();
+  statistics_.gpuBuildMs = context.buildTimer.elapsedMs();
+  statistics_.totalBuildMs += ms;
+  ++statistics_.rebuilds;
 }
 
 void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool inPath, bool peel,
@@ -217,7 +230,10 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     context.pass->uploadCasters(casters);
     context.castersVersion = contents_.castersVersion();
   }
-  if (context.mapsVersion != contents_.mapsVersion()) buildMaps(action, context);
+  if (context.mapsVersion != contents_.mapsVersion())
+    buildMaps(action, context);
+  else
+    refitToView(action, context);
 
   state->push();
   ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits());
@@ -251,6 +267,11 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     uniforms->mapParams[slot * 4 + 2] = map.settings.bias;
     uniforms->mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
     uniforms->mapColoured[slot] = map.coloured ? 1 : 0;
+    uniforms->mapProjection[slot] = int(map.frame.projection);
+    for (int i = 0; i < 16; ++i)
+      uniforms->mapLookup[slot * 16 + std::size_t(i)] = (&map.frame.lookup[0][0])[i];
+    uniforms->mapTexelScale[slot * 2 + 0] = map.frame.texelScale.x;
+    uniforms->mapTexelScale[slot * 2 + 1] = map.frame.texelScale.y;
     if (map.rays) uniforms->mapRay[slot] = rayCount++;
   }
   shading_.apply();

@@ -74,6 +74,11 @@ class TransparentShadowGroupImpl {
   };
 
   void buildMaps(SoGLRenderAction* action, Context& context);
+  // Fits and builds slot `slot`'s map (or resolves it to RAYS), filling its statistics.
+  void buildSlot(SoGLRenderAction* action, Context& context, std::size_t slot,
+                 std::uint64_t memoryBudget);
+  // Rebuilds the maps of directional lights that no longer serve the view (mapServesView).
+  void refitToView(SoGLRenderAction* action, Context& context);
   // Draws the children in the shading pass: peeled, or as Coin blends them.
   void shadeChildren(SoGLRenderAction* action, bool inPath, bool peel, Context& context);
   SoSeparator* owner_;

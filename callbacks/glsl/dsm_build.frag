@@ -1,4 +1,4 @@
-// One peel of one cube face. The depth test keeps the nearest surface behind the previous
+// One peel of one face of a map (a cube's or a one-face map's, callbacks/MapFrame.h). The depth test keeps the nearest surface behind the previous
 // layer; this shader drops everything at or in front of that layer and multiplies the
 // visibility after it by the surface's transmittance (seeds/000 §5). With uOpaqueOnly (the
 // closing pass, when a face's layers run out with surfaces left behind them) only opaque
@@ -13,8 +13,10 @@ uniform sampler2D uTexture;
 uniform int uTextureModel;
 uniform vec3 uTextureBlendColour;
 uniform int uColourModel;
-uniform vec3 uLightPosition;
-uniform int uFace;
+// The distance stored is dot(p - uDepthOrigin, uDepthAxis): along the face's axis from the
+// light, or from the plane where a directional light's map begins.
+uniform vec3 uDepthOrigin;
+uniform vec3 uDepthAxis;
 uniform int uOpaqueOnly;
 
 layout(std430, binding = IVSHADOW_MAP_FLAGS_BINDING) buffer PeelFlags {
@@ -35,7 +37,7 @@ void main() {
   // A fully clear surface changes nothing; dropping it keeps it from using up a layer.
   if (colour.a <= 0.0) discard;
 
-  float depth = dot(vPosition - uLightPosition, kFaceAxis[uFace]);
+  float depth = dot(vPosition - uDepthOrigin, uDepthAxis);
   ivec2 texel = ivec2(gl_FragCoord.xy);
   if (depth <= texelFetch(uPreviousDepth, texel, 0).r) discard;
 

@@ -1,6 +1,6 @@
 // Coin's lighting (the fixed-function equations Coin programs through glLight/glMaterial)
 // evaluated per pixel, with each deep shadow light's contribution multiplied by the
-// visibility looked up in its cube deep shadow map: shade(), shared by the camera pass
+// visibility looked up in its deep shadow map (a cube, or one face): shade(), shared by the camera pass
 // (shading.frag) and the peel passes (peel.frag), which put their main() after it.
 const int kMaxLights = IVSHADOW_MAX_LIGHTS;
 
@@ -24,6 +24,12 @@ uniform vec3 uMapLight[kMaxLights];     // light position in the group's coordin
 uniform vec3 uMapLightEye[kMaxLights];  // ... and in eye coordinates
 // resolution, 1 for a directional light (uMapLight*: its direction), bias (texels), filter radius
 uniform vec4 uMapParams[kMaxLights];
+// How each map sees its casters (IVSHADOW_MAP_*, callbacks/MapFrame.h); for a one-face map the
+// group's coordinates to (x w, y w, depth, w); a texel's size at depth d, times the
+// resolution: uMapTexelScale.x * d + uMapTexelScale.y.
+uniform int uMapProjection[kMaxLights];
+uniform mat4 uMapLookup[kMaxLights];
+uniform vec2 uMapTexelScale[kMaxLights];
 uniform int uMapColoured[kMaxLights];
 uniform int uMapFaceFirst[kMaxLights * 6];   // array layer of each face's first layer
 uniform int uMapFaceLayers[kMaxLights * 6];  // layers stored for each face
@@ -72,15 +78,29 @@ vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
 }
 
 vec3 deepShadowVisibility(int slot, vec3 localPosition, float cosTheta) {
-  vec3 d = localPosition - uMapLight[slot];
-  int face = cubeFace(d);
-  float depth = dot(d, kFaceAxis[face]);
-  if (depth <= 0.0) return vec3(1.0);
-  vec2 ndc = vec2(dot(d, kFaceRight[face]), dot(d, kFaceUp[face])) / depth;
+  int face = 0;
+  float depth;
+  vec2 ndc;
+  if (uMapProjection[slot] == IVSHADOW_MAP_CUBE) {
+    vec3 d = localPosition - uMapLight[slot];
+    face = cubeFace(d);
+    depth = dot(d, kFaceAxis[face]);
+    if (depth <= 0.0) return vec3(1.0);
+    ndc = vec2(dot(d, kFaceRight[face]), dot(d, kFaceUp[face])) / depth;
+  } else {
+    vec4 mapped = uMapLookup[slot] * vec4(localPosition, 1.0);
+    // Behind a spot light, or beside the face: no caster of the map lies between the point
+    // and the light (a spot light's cone ends inside its face).
+    if (mapped.w <= 0.0) return vec3(1.0);
+    ndc = mapped.xy / mapped.w;
+    if (any(greaterThan(abs(ndc), vec2(1.0)))) return vec3(1.0);
+    depth = mapped.z;
+  }
   int resolution = int(uMapParams[slot].x);
   // Bias in texels of this face at the receiver's depth, growing with the slope of the
   // receiver as seen from the light so grazing receivers do not shadow themselves.
-  float texelSize = 2.0 * depth / float(resolution);
+  float texelSize = (uMapTexelScale[slot].x * max(depth, 0.0) + uMapTexelScale[slot].y) /
+                    float(resolution);
   float c = clamp(cosTheta, 1e-3, 1.0);
   float tanTheta = sqrt(max(1.0 - c * c, 0.0)) / c;
   float receiver = depth - uMapParams[slot].z * texelSize * (1.0 + min(tanTheta, 10.0));

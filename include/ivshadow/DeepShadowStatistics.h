@@ -14,6 +14,13 @@ struct DeepShadowLightStatistics {
   std::string name;                 // the light's DEF name, or "" when it has none
   std::array<int, 6> layersUsed{};  // peeled layers that held a surface, per cube face
   std::array<int, 6> passes{};      // peel passes run per face (early termination)
+  // How the map sees its casters: "CUBE" (a point light, a wide spot light), "PERSPECTIVE"
+  // (one face over a spot light's cone) or "ORTHOGRAPHIC" (one face across a directional
+  // light); a one-face map counts its layers and passes in face 0. "" without a map.
+  std::string projection;
+  // An orthographic map's width and height across the light, in the group's units: the
+  // casters' extent clipped to what the view shows.
+  std::array<float, 2> extent{};
   std::uint64_t bytes = 0;          // GPU memory the map keeps (only layers that are used)
   std::uint64_t peakBytes = 0;      // GPU memory while it was built (all maxLayers)
   bool coloured = false;            // three visibility channels rather than one

@@ -2,9 +2,14 @@
 // the edge of and outside its cone, with and without dropOffRate) and a DirectionalLight at an
 // oblique angle, each by the map (MAP), the traced rays (RAYS) and the CPU reference, against
 // pictures computed here from the geometry alone.
+#include "headless/OffscreenRenderer.h"
+#include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
+
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
 
@@ -18,8 +23,9 @@ namespace {
 
 // ShadowScene's set-up (a 2 x 2 white floor at z = 0 seen straight down, 100 pixels per unit
 // at 240 x 240, no ambient, no specular) with `lights` in place of its deep shadow light and a
-// red glass of half size `halfSize` at height 0.5.
-std::string sceneWith(const std::string& lights, const std::string& groupFields, double halfSize) {
+// red glass of half size `halfSize` at height 0.5, and `more` inside the group after them.
+std::string sceneWith(const std::string& lights, const std::string& groupFields, double halfSize,
+                      const std::string& more = "") {
   std::ostringstream iv;
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
      << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
@@ -32,7 +38,7 @@ std::string sceneWith(const std::string& lights, const std::string& groupFields,
      << "    Coordinate3 { point [ " << -halfSize << ' ' << -halfSize << " 0.5, " << halfSize << ' '
      << -halfSize << " 0.5, " << halfSize << ' ' << halfSize << " 0.5, " << -halfSize << ' '
      << halfSize << " 0.5 ] }\n"
-     << "    FaceSet { numVertices 4 }\n  }\n}\n";
+     << "    FaceSet { numVertices 4 }\n    " << more << "\n  }\n}\n";
   return iv.str();
 }
 
@@ -121,11 +127,11 @@ std::string methodName(const ::testing::TestParamInfo<Method>& info) {
 class LightTypes : public ::testing::TestWithParam<Method> {
  protected:
   void expectPicture(const std::string& lights, double s, const std::vector<LightTerm>& terms,
-                     const std::string& extraGroupFields = "") {
+                     const std::string& extraGroupFields = "", const std::string& more = "") {
     const std::string fields =
         std::string(GetParam() == Method::Map ? "method MAP" : "method RAYS") + " " +
         extraGroupFields;
-    const std::string text = sceneWith(lights, fields, s);
+    const std::string text = sceneWith(lights, fields, s, more);
     const Image image = GetParam() == Method::Reference ? referenceIv(text, ShadowScene::kSize)
                                                         : renderIv(text, ShadowScene::kSize);
     const std::string failure = compareWithExpectation(image, pictureOf(s, terms), kTolerance);
@@ -219,9 +225,126 @@ TEST_P(LightTypes, DeepShadowDirectionalLightCastsWithItsOwnFields) {
                 {obliqueLight(0.3, 1.0, 1.0, kGreyShadow)}, "shadowColor COLORED");
 }
 
+TEST_P(LightTypes, SpotConeWiderThanOneFaceCastsAsAPointLight) {
+  // cutOffAngle 1.2 (69 degrees, wider than kMaxSpotFaceHalfAngle): the map is a cube; the
+  // cone's rim (radius tan(1.2) = 2.6) lies beyond the floor, so all of it is lit.
+  expectPicture("SpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 1.2 }", 0.3,
+                {overheadLight(0.3, 1.0, 1.2, 0.0)});
+}
+
+TEST_P(LightTypes, DirectionalLightsMapCoversWhatTheViewShowsOfFarCasters) {
+  // A second glass 50 units away makes the casters' bounds 25 times the floor: a map over all
+  // of them would put 0.1 units (10 pixels) in a texel and blur the shadow's edges past the
+  // test's two-pixel margin.
+  expectPicture("DirectionalLight { direction 1 0 -1 }", 0.3, {obliqueLight(0.3, 1.0, 1.0)}, "",
+                "Translation { translation 50 0 0 } FaceSet { numVertices 4 }");
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, LightTypes,
                          ::testing::Values(Method::Map, Method::Rays, Method::Reference),
                          methodName);
+
+// The map of each light type: what it is and where its layers are (a one-face map peels face
+// 0 only, and with the one glass in front of the floor keeps two layers there).
+TEST(LightTypesMap, EachLightTypeHasTheMapItsShapeNeeds) {
+  struct Case {
+    std::string light, projection;
+  };
+  for (const Case& c :
+       {Case{"PointLight { location 0 0 1 }", "CUBE"},
+        Case{"SpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.7 }", "PERSPECTIVE"},
+        Case{"SpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 1.2 }", "CUBE"},
+        Case{"DirectionalLight { direction 1 0 -1 }", "ORTHOGRAPHIC"}}) {
+    SoNode* root = nullptr;
+    renderIv(sceneWith(c.light, "method MAP", 0.3), ShadowScene::kSize, &root);
+    const DeepShadowStatistics statistics = collectDeepShadowStatistics(root);
+    ASSERT_EQ(statistics.lights.size(), 1u) << c.light;
+    const DeepShadowLightStatistics& light = statistics.lights[0];
+    EXPECT_EQ(light.method, "MAP") << c.light;
+    EXPECT_EQ(light.projection, c.projection) << c.light;
+    if (c.projection != "CUBE") {
+      // The glass (a layer that lets light through), then the floor (opaque) behind it.
+      EXPECT_EQ(light.layersUsed[0], 2) << c.light;
+      for (std::size_t face = 1; face < 6; ++face) EXPECT_EQ(light.layersUsed[face], 0) << c.light;
+    }
+    root->unref();
+  }
+}
+
+// A DeepShadowDirectionalLight's own map fields over the group's.
+TEST(LightTypesMap, DeepShadowDirectionalLightsOwnMapFieldsWin) {
+  SoNode* root = nullptr;
+  renderIv(sceneWith("DeepShadowDirectionalLight { direction 1 0 -1 method MAP resolution 256 }",
+                     "method RAYS resolution 1024", 0.3),
+           ShadowScene::kSize, &root);
+  const DeepShadowStatistics statistics = collectDeepShadowStatistics(root);
+  ASSERT_EQ(statistics.lights.size(), 1u);
+  EXPECT_EQ(statistics.lights[0].method, "MAP");
+  EXPECT_EQ(statistics.lights[0].resolution, 256);
+  EXPECT_EQ(statistics.lights[0].projection, "ORTHOGRAPHIC");
+  root->unref();
+}
+
+// Light along (1, 0, -1)/sqrt(2), casters from x = -1 to 50.3: across the light (the plane
+// normal to it) the casters span x' = (x + z)/sqrt(2) in [-0.71, 35.9] and y in [-1, 1]. The
+// orthographic camera's box (x, y in [-1.2, 1.2], z from 4 down to -5) projects to x' in
+// [-4.38, 3.68], y in [-1.2, 1.2]. What the map must cover is the overlap, 4.38 by 2; it may
+// add a margin for a moving camera, but not the casters' 36.6 along x'.
+TEST(LightTypesMap, DirectionalMapIsTheCastersClippedToTheView) {
+  SoNode* root = nullptr;
+  renderIv(sceneWith("DirectionalLight { direction 1 0 -1 }", "method MAP", 0.3,
+                     "Translation { translation 50 0 0 } FaceSet { numVertices 4 }"),
+           ShadowScene::kSize, &root);
+  const DeepShadowStatistics statistics = collectDeepShadowStatistics(root);
+  ASSERT_EQ(statistics.lights.size(), 1u);
+  const std::array<float, 2> extent = statistics.lights[0].extent;
+  const float across = std::max(extent[0], extent[1]), along = std::min(extent[0], extent[1]);
+  EXPECT_GE(across, 4.38f - 0.01f);  // the overlap, to rounding
+  EXPECT_LE(across, 2.0f * 4.38f);
+  EXPECT_NEAR(along, 2.0f, 0.01f);  // y: the casters' own 2, within the view's 2.4
+  root->unref();
+}
+
+// The camera moves from the first floor to a second one 30 units along x: the directional
+// light's map, fitted to the first view, does not cover the second, and is fitted again; the
+// second picture is the same analytic one. A third frame from the same place builds nothing.
+TEST(LightTypesMap, DirectionalMapFollowsTheCameraToCastersItDidNotCover) {
+  const std::string text =
+      sceneWith("DirectionalLight { direction 1 0 -1 }", "method MAP", 0.3,
+                "Translation { translation 30 0 0 }"
+                " Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }"
+                " Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }"
+                " QuadMesh { verticesPerRow 2 verticesPerColumn 2 }"
+                " Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor 1 0 0"
+                " transparency 0.5 }"
+                " Coordinate3 { point [ -0.3 -0.3 0.5, 0.3 -0.3 0.5, 0.3 0.3 0.5, -0.3 0.3 0.5 ] }"
+                " FaceSet { numVertices 4 }");
+  SoSeparator* root = readIv(text);
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  const ExpectedImage expected = pictureOf(0.3, {obliqueLight(0.3, 1.0, 1.0)});
+  renderer->render(root);
+  std::string failure = compareWithExpectation(renderer->read(), expected, kTolerance);
+  EXPECT_TRUE(failure.empty()) << "first floor: " << failure;
+  const int before = collectDeepShadowStatistics(root).rebuilds;
+
+  SoCamera* camera = nullptr;
+  for (int i = 0; i < root->getNumChildren() && camera == nullptr; ++i)
+    if (root->getChild(i)->isOfType(SoCamera::getClassTypeId()))
+      camera = static_cast<SoCamera*>(root->getChild(i));
+  ASSERT_NE(camera, nullptr);
+  camera->position.setValue(30.0f, 0.0f, 5.0f);
+  renderer->render(root);
+  failure = compareWithExpectation(renderer->read(), expected, kTolerance);
+  EXPECT_TRUE(failure.empty()) << "second floor, 30 units along x: " << failure;
+  const int after = collectDeepShadowStatistics(root).rebuilds;
+  EXPECT_EQ(after, before + 1);
+
+  renderer->render(root);
+  EXPECT_EQ(collectDeepShadowStatistics(root).rebuilds, after);
+  root->unref();
+}
 
 // Lights that cannot cast light without a shadow, with one warning naming them; the picture is
 // still drawn (the floor fully lit by the other light).

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "ivshadow/SoDeepShadowLight.h"
+#include "nodes/DeepShadowEnums.h"
+
+// The shadow fields that SoDeepShadowLight, SoDeepShadowSpotLight, SoDeepShadowDirectionalLight
+// and SoTransparentShadowGroup share, with SoDeepShadowLight's defaults and enum types, added
+// in a node's constructor after SO_NODE_CONSTRUCTOR. A macro, because Coin's
+// SO_NODE_ADD_FIELD, which it wraps, works only in the scope of the node's constructor.
+#define IVSHADOW_ADD_SHADOW_FIELDS()                                               \
+  do {                                                                             \
+    SO_NODE_ADD_FIELD(method, (SoDeepShadowLight::AUTO_METHOD));                   \
+    SO_NODE_ADD_FIELD(resolution, (512));                                          \
+    SO_NODE_ADD_FIELD(maxLayers, (4));                                             \
+    SO_NODE_ADD_FIELD(bias, (1.0f));                                               \
+    SO_NODE_ADD_FIELD(shadowColor, (SoDeepShadowLight::AUTO));                     \
+    SO_NODE_ADD_FIELD(colorModel, (SoDeepShadowLight::SATURATE));                  \
+    SO_NODE_ADD_FIELD(precision, (SoDeepShadowLight::FLOAT));                      \
+    SO_NODE_ADD_FIELD(filter, (SoDeepShadowLight::NONE));                          \
+    SO_NODE_ADD_FIELD(filterSize, (3));                                            \
+    if (SO_NODE_IS_FIRST_INSTANCE()) ivshadow::addDeepShadowEnumValues(fieldData); \
+    SO_NODE_SET_SF_ENUM_TYPE(method, Method);                                      \
+    SO_NODE_SET_SF_ENUM_TYPE(shadowColor, ShadowColor);                            \
+    SO_NODE_SET_SF_ENUM_TYPE(colorModel, ColorModel);                              \
+    SO_NODE_SET_SF_ENUM_TYPE(precision, Precision);                                \
+    SO_NODE_SET_SF_ENUM_TYPE(filter, Filter);                                      \
+  } while (false)
