@@ -1,6 +1,8 @@
 #include "nodes/GroupShading.h"
 
+#include "callbacks/ShadingUniforms.h"
 #include "nodes/GroupContents.h"
+#include "nodes/TexGenWatchElement.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -20,6 +22,7 @@ ShadingUniforms* GroupShading::begin(SoGLRenderAction* action, int textureUnits)
   SoState* state = action->getState();
   camera_ = programs_.bind(action, ShadingVariant::Shade);
   if (camera_ == nullptr) return nullptr;
+  syncTexGen(state);
   uniforms_ = ShadingUniforms{};
   uniforms_.textureUnits = textureUnits;
   outsideLights_ = SoLightElement::getLights(state).getLength();
@@ -43,7 +46,30 @@ const UniformLocations* GroupShading::bind(SoGLRenderAction* action, ShadingVari
   if (camera_ == nullptr) return nullptr;
   const UniformLocations* program = programs_.bind(action, variant);
   if (program != nullptr) uniforms_.apply(*program);
+  syncTexGen(action->getState());
   return program;
+}
+
+void GroupShading::syncTexGen(SoState* state) {
+  syncTexGen(state, TexGenWatchElement::generatesTexCoords(state));
+}
+
+void GroupShading::syncTexGen(SoState* state, bool generated) {
+  // The common case, no function and no program told of one, costs no GL call.
+  if (!generated && texGen_.empty()) return;
+  // A SoShadowStyle that switched shading off leaves the fixed-function pipeline, which
+  // applies the functions itself.
+  const UniformLocations* program = programs_.current(state);
+  if (program == nullptr) return;
+  const TexGenModes modes = generated ? currentTexGenModes() : TexGenModes{};
+  const auto told = texGen_.find(program);
+  const TexGenModes before = told == texGen_.end() ? TexGenModes{} : told->second;
+  if (modes == before) return;
+  setTexGenModes(*program, modes);
+  if (modes == TexGenModes{})
+    texGen_.erase(program);
+  else
+    texGen_[program] = modes;
 }
 
 SbMatrix GroupShading::findLocalToEye(SoState* state) const {

@@ -1,9 +1,12 @@
 #pragma once
 
 #include "callbacks/ShadingUniforms.h"
+#include "callbacks/TexGenModes.h"
 #include "nodes/ShadingProgram.h"
 
 #include <Inventor/SbMatrix.h>
+
+#include <map>
 
 class SoGLRenderAction;
 class SoState;
@@ -37,6 +40,12 @@ class GroupShading {
   // when it did not build or outside a frame.
   const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
   void end() { camera_ = nullptr; }
+  // Tells the bound program how Coin's texture coordinate function in force generates
+  // texture coordinates (bind() calls it; TexGenWatchElement whenever the function changes,
+  // with `generated` read from the element that is or becomes the top: during a pop the
+  // state still holds the one going away).
+  void syncTexGen(SoState* state);
+  void syncTexGen(SoState* state, bool generated);
 
  private:
   SbMatrix findLocalToEye(SoState* state) const;
@@ -46,7 +55,9 @@ class GroupShading {
   ShadingProgram programs_;
   ShadingUniforms uniforms_;
   const UniformLocations* camera_ = nullptr;  // the camera pass, bound by begin()
-  int outsideLights_ = 0;                     // GL lights on before the group
+  // The uTexGen each program was given last; programs not in it hold 0 (GL's initial value).
+  std::map<const UniformLocations*, TexGenModes> texGen_;
+  int outsideLights_ = 0;  // GL lights on before the group
   SbMatrix localToEye_;
 };
 

@@ -78,6 +78,7 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   }
   shading_.apply();
   SoShapeStyleElement::setShadowsRendering(state, TRUE);
+  ShadowGroupElement::setShading(state, &shading_);
   peel(action, inPath, shading_);
   shading_.end();
   SoShapeStyleElement::setShadowsRendering(state, FALSE);

@@ -98,4 +98,15 @@ const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVa
   return &locations;
 }
 
+const UniformLocations* ShadingProgram::current(SoState* state) {
+  const unsigned int program = currentProgram();
+  if (program == 0) return nullptr;
+  auto* perContext = locations_.get(SoGLCacheContextElement::get(state), [] {
+    return std::make_unique<std::array<UniformLocations, kShadingVariants>>();
+  });
+  for (const UniformLocations& locations : *perContext)
+    if (locations.program() == program) return &locations;
+  return nullptr;
+}
+
 }  // namespace ivshadow

@@ -7,6 +7,7 @@
 #include <array>
 
 class SoGLRenderAction;
+class SoState;
 class SoShaderProgram;
 
 namespace ivshadow {
@@ -40,6 +41,9 @@ class ShadingProgram {
   // Binds `variant` in the action's current state (the caller pushes and pops it) and returns
   // its program and uniform locations, or null when it did not build (Coin has said why).
   const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
+  // The variant GL has current in the state's context, or null when the current program is
+  // none of them (a SoShadowStyle switched shading off, or a program of someone else's).
+  const UniformLocations* current(SoState* state);
 
  private:
   SoShaderProgram* node(ShadingVariant variant);

@@ -1,5 +1,7 @@
 #include "nodes/ShadowGroupElement.h"
 
+#include "nodes/TexGenWatchElement.h"
+
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/misc/SoState.h>
 
@@ -11,6 +13,8 @@ void ShadowGroupElement::initClass() {
   if (getClassTypeId() != SoType::badType()) return;
   SO_ELEMENT_INIT_CLASS(ShadowGroupElement, inherited);
   SO_ENABLE(SoGLRenderAction, ShadowGroupElement);
+  // The shapes below a group or a peeling separator need it (TexGenWatchElement.h).
+  TexGenWatchElement::initClass();
 }
 
 ShadowGroupElement::~ShadowGroupElement() = default;
@@ -18,6 +22,7 @@ ShadowGroupElement::~ShadowGroupElement() = default;
 void ShadowGroupElement::init(SoState* state) {
   inherited::init(state);
   group_ = nullptr;
+  shading_ = nullptr;
   capturing_ = false;
   peeling_ = false;
 }
@@ -26,18 +31,21 @@ void ShadowGroupElement::push(SoState* state) {
   inherited::push(state);
   const auto* previous = static_cast<const ShadowGroupElement*>(getNextInStack());
   group_ = previous->group_;
+  shading_ = previous->shading_;
   capturing_ = previous->capturing_;
   peeling_ = previous->peeling_;
 }
 
 SbBool ShadowGroupElement::matches(const SoElement* element) const {
   const auto* other = static_cast<const ShadowGroupElement*>(element);
-  return other->group_ == group_ && other->capturing_ == capturing_ && other->peeling_ == peeling_;
+  return other->group_ == group_ && other->shading_ == shading_ &&
+         other->capturing_ == capturing_ && other->peeling_ == peeling_;
 }
 
 SoElement* ShadowGroupElement::copyMatchInfo() const {
   auto* copy = static_cast<ShadowGroupElement*>(getTypeId().createInstance());
   copy->group_ = group_;
+  copy->shading_ = shading_;
   copy->capturing_ = capturing_;
   copy->peeling_ = peeling_;
   return copy;
@@ -45,6 +53,14 @@ SoElement* ShadowGroupElement::copyMatchInfo() const {
 
 void ShadowGroupElement::setActiveGroup(SoState* state, GroupShading* group) {
   static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->group_ = group;
+}
+
+void ShadowGroupElement::setShading(SoState* state, GroupShading* shading) {
+  static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->shading_ = shading;
+}
+
+GroupShading* ShadowGroupElement::shading(SoState* state) {
+  return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->shading_;
 }
 
 void ShadowGroupElement::setCapturing(SoState* state, bool capturing) {

@@ -33,7 +33,11 @@ class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   static void setActiveGroup(SoState* state, GroupShading* group);
   static void setCapturing(SoState* state, bool capturing);
   static void setPeeling(SoState* state, bool peeling);
+  // The shading whose programs draw the shapes below: the group's, or a SoPeelingSeparator's
+  // outside any group (TexGenWatchElement tells it of texture coordinate functions).
+  static void setShading(SoState* state, GroupShading* shading);
   static GroupShading* activeGroup(SoState* state);
+  static GroupShading* shading(SoState* state);
   static bool capturing(SoState* state);
   static bool peeling(SoState* state);
 
@@ -42,6 +46,7 @@ class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
 
  private:
   GroupShading* group_ = nullptr;
+  GroupShading* shading_ = nullptr;
   bool capturing_ = false;
   bool peeling_ = false;
 };

@@ -290,6 +290,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     // A peeling separator below shades its layers with this group's program and maps.
     ShadowGroupElement::setActiveGroup(state, &shading_);
+    ShadowGroupElement::setShading(state, &shading_);
     // A shadow style above the group that does not receive: its shapes are drawn as a
     // SoShadowStyle inside would draw them (shading off), until a style below turns it on.
     if (!(SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED))
