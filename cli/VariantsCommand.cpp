@@ -164,7 +164,14 @@ int runVariants(const VariantsOptions& options) {
     const VariantsPlan plan = VariantsPlan::make(options.base, options.variantsFile, options.size,
                                                  options.frames, std::move(parsed));
     const std::vector<Variant>& variants = plan.variants;
-    if (!options.slurmDir.empty()) return writeSlurmScripts(options, plan);
+    if (!options.slurmDir.empty()) {
+      // The scripts cover the whole sweep; a part of it is chosen per array task.
+      if (!options.shard.empty() || !options.only.empty() || options.list)
+        throw InputError(
+            "--slurm: error: writes the scripts of the whole sweep; it cannot be "
+            "combined with --shard, --only or --list");
+      return writeSlurmScripts(options, plan);
+    }
     if (options.list) {
       // One line a variant: its name, a tab, and the command that renders it alone, for GNU
       // parallel or any queue (docs/VARIANTS.md).

@@ -132,6 +132,14 @@ TEST(VariantsCommand, ABadShardOrVariantNameIsRefusedBeforeRendering) {
   EXPECT_NE(result.err.find("--only bright: error: " + variants + " has no variant of that name"),
             std::string::npos)
       << result.err;
+  std::vector<std::string> slurm = command;
+  slurm.insert(slurm.end(), {"--slurm", dir + "-jobs", "--shard", "0/2"});
+  const test::ProcessResult both = test::run(slurm);
+  EXPECT_EQ(both.exitCode, 2);
+  EXPECT_NE(both.err.find("--slurm: error: writes the scripts of the whole sweep"),
+            std::string::npos)
+      << both.err;
+  EXPECT_FALSE(test::fileExists(dir + "-jobs"));
   EXPECT_FALSE(test::fileExists(dir));
   const test::ProcessResult merge = test::run({test::ivshadowExe(), "variants-merge", dir});
   EXPECT_EQ(merge.exitCode, 2);

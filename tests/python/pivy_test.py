@@ -64,6 +64,19 @@ def main():
     if "unread" not in bare.stdout:
         fail("pivy read the nodes without the module: %r %r" % (bare.stdout, bare.stderr[-300:]))
 
+    # The module works imported after pivy too (it promotes the loaded libCoin to global).
+    after = subprocess.run(
+        [sys.executable, "-c",
+         "from pivy import coin\n"
+         "import ivshadow\n"
+         "i = coin.SoInput()\n"
+         "i.openFile(%r)\n"
+         "coin.SoDB.readAll(i)\n"
+         "print(coin.SoNode.getByName(coin.SbName('Lamp')).getTypeId().getName().getString())\n"
+         % coloured], capture_output=True, text=True)
+    if after.stdout.strip() != "DeepShadowLight":
+        fail("ivshadow imported after pivy: %r %r" % (after.stdout, after.stderr[-300:]))
+
     import ivshadow
     from pivy import coin
 
