@@ -164,6 +164,10 @@ int runVariants(const VariantsOptions& options) {
     const VariantsPlan plan = VariantsPlan::make(options.base, options.variantsFile, options.size,
                                                  options.frames, std::move(parsed));
     const std::vector<Variant>& variants = plan.variants;
+    if (options.slurmDir.empty() && (options.shards != 0 || options.limit != 0))
+      throw InputError(std::string(options.shards != 0 ? "--shards" : "--limit") +
+                       ": error: only for --slurm DIR (the array's tasks); a run of one part "
+                       "takes --shard K/N");
     if (!options.slurmDir.empty()) {
       // The scripts cover the whole sweep; a part of it is chosen per array task.
       if (!options.shard.empty() || !options.only.empty() || options.list)

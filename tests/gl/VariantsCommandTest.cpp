@@ -140,6 +140,12 @@ TEST(VariantsCommand, ABadShardOrVariantNameIsRefusedBeforeRendering) {
             std::string::npos)
       << both.err;
   EXPECT_FALSE(test::fileExists(dir + "-jobs"));
+  std::vector<std::string> shards = command;
+  shards.insert(shards.end(), {"--shards", "4"});
+  const test::ProcessResult alone = test::run(shards);
+  EXPECT_EQ(alone.exitCode, 2);
+  EXPECT_NE(alone.err.find("--shards: error: only for --slurm DIR"), std::string::npos)
+      << alone.err;
   EXPECT_FALSE(test::fileExists(dir));
   const test::ProcessResult merge = test::run({test::ivshadowExe(), "variants-merge", dir});
   EXPECT_EQ(merge.exitCode, 2);
