@@ -119,13 +119,16 @@ int writeSlurmScripts(const VariantsOptions& options, const VariantsPlan& plan) 
   std::error_code made;
   fs::create_directories(options.slurmDir, made);
   fs::create_directories(script.outputDir + "/manifests", made);
-  if (!fs::is_directory(options.slurmDir) || !fs::is_directory(script.outputDir + "/manifests"))
+  if (!fs::is_directory(options.slurmDir))
     throw InputError(options.slurmDir + ": error: cannot create the script directory");
-  // The plan as the tasks will write it, so --status counts every variant pending from now on.
-  VariantsPlan::make(fs::absolute(options.base).string(),
-                     fs::absolute(options.variantsFile).string(), options.size, options.frames,
-                     plan.variants)
-      .write(script.outputDir);
+  if (!fs::is_directory(script.outputDir + "/manifests"))
+    throw InputError(options.outputDir + ": error: cannot create the output directory");
+  // The plan as the tasks will write it (their paths are absolute; the hashes do not depend
+  // on paths), so --status counts every variant pending from now on.
+  VariantsPlan tasksPlan = plan;
+  tasksPlan.base = fs::absolute(options.base).string();
+  tasksPlan.variantsFile = fs::absolute(options.variantsFile).string();
+  tasksPlan.write(script.outputDir);
   const std::string submit = script.write(options.slurmDir);
   std::cout << "wrote " << options.slurmDir << "/variants.sbatch (a job array of " << shards
             << " tasks for " << variants << " variants) and " << options.slurmDir
