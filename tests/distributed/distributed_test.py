@@ -100,7 +100,33 @@ def local_run(ivshadow, base, sweep, work):
     rows = read_csv(local)
     if len(rows) < 13 or sum(row["status"] == "ok" for row in rows) < 12:
         fail("the local run rendered fewer than 12 variants: %s" % rows)
+    check_hashes(base, local)
     return local
+
+
+def fnv1a(parts):
+    """FNV-1a, 64 bits, over each part followed by the byte 0xff (docs/VARIANTS.md)."""
+    value = 14695981039346656037
+    for part in parts:
+        for byte in part + b"\xff":
+            value = ((value ^ byte) * 1099511628211) % (1 << 64)
+    return "%016x" % value
+
+
+def check_hashes(base, directory):
+    """The plan's hash of every variant, recomputed here from its documented definition: the
+    same on any machine, so shards elsewhere agree on what is done."""
+    with open(os.path.join(directory, "manifests", "plan.json")) as f:
+        plan = json.load(f)
+    with open(base, "rb") as f:
+        scene = f.read()
+    for variant in plan["variants"]:
+        parts = [scene, plan["size"].encode(), str(plan["frames"]).encode(),
+                 variant["name"].encode()]
+        parts += [a["text"].encode() for a in variant["assignments"]]
+        if fnv1a(parts) != variant["hash"]:
+            fail("variant %s: the plan's hash %s is not FNV-1a of its inputs (%s)" %
+                 (variant["name"], variant["hash"], fnv1a(parts)))
 
 
 def status_counts(ivshadow, directory):
