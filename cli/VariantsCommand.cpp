@@ -5,6 +5,11 @@
 #include "cli/InterruptGuard.h"
 #include "cli/ProgressBar.h"
 #include "cli/RenderMemory.h"
+#include "cli/SlurmScript.h"
+#include "cli/VariantManifest.h"
+#include "cli/VariantShard.h"
+#include "cli/VariantsMerge.h"
+#include "cli/VariantsPlan.h"
 #include "image/AtomicFile.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
@@ -14,25 +19,25 @@
 #include "scene/VariantsFile.h"
 
 #include <Inventor/nodes/SoSeparator.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
-#include <sstream>
 
 namespace ivshadow {
 namespace {
 
-struct Outcome {
-  bool done = false;
-  int exitCode = -1;
-  std::string error;  // the variant's error line, with its line in the variants file
-  nlohmann::json stats;
-};
+std::string hostName() {
+  char name[256] = {};
+  gethostname(name, sizeof name - 1);
+  return name;
+}
 
 std::string readFirstLine(const std::string& path) {
   std::ifstream in(path);
@@ -49,164 +54,6 @@ int lineOfFailure(const Variant& variant, const std::string& error) {
   return variant.line;
 }
 
-std::string htmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
-}
-
-std::string csvField(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-std::string assignmentsText(const Variant& variant) {
-  std::string text;
-  for (const Variant::Assignment& assignment : variant.assignments)
-    text += (text.empty() ? "" : "; ") + assignment.text;
-  return text;
-}
-
-double number(const nlohmann::json& stats, const char* key, const char* inner = nullptr) {
-  const nlohmann::json* value = &stats;
-  if (!value->contains(key)) return 0.0;
-  value = &(*value)[key];
-  if (inner) {
-    if (!value->contains(inner)) return 0.0;
-    value = &(*value)[inner];
-  }
-  return value->is_number() ? value->get<double>() : 0.0;
-}
-
-// Which shadow methods a render used, from its statistics: a map's build time and memory
-// mean nothing for a light whose shadows are traced, and the other way round.
-struct Methods {
-  bool map = false;
-  bool rays = false;
-};
-
-Methods methodsOf(const nlohmann::json& stats) {
-  Methods methods;
-  if (!stats.is_object() || !stats.contains("dsm_layers_used")) return methods;
-  for (const auto& light : stats["dsm_layers_used"]) {
-    const std::string method = light.value("method", std::string());
-    methods.map = methods.map || method == "MAP";
-    methods.rays = methods.rays || method == "RAYS";
-  }
-  return methods;
-}
-
-// "Lamp:0/2/2/0/0/5" per light that has a map, from the render's statistics.
-std::string layersText(const nlohmann::json& stats) {
-  std::string text;
-  if (!stats.is_object() || !stats.contains("dsm_layers_used")) return text;
-  for (const auto& light : stats["dsm_layers_used"]) {
-    if (light.value("method", std::string()) != "MAP") continue;
-    text += (text.empty() ? "" : " ") + light.value("light", std::string("light")) + ":";
-    bool first = true;
-    for (int used : light["faces"]) {
-      text += (first ? "" : "/") + std::to_string(used);
-      first = false;
-    }
-  }
-  return text;
-}
-
-std::string shadowMethod(const nlohmann::json& stats) {
-  if (!stats.is_object() || !stats.contains("passes")) return {};
-  return stats["passes"].value("shadow_method", std::string());
-}
-
-// A CSV number, or an empty field when the column does not apply to this render.
-std::string field(bool applies, double value) {
-  if (!applies) return {};
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-std::string csvLine(const Variant& variant, const Outcome& outcome, const std::string& image) {
-  const bool ok = outcome.exitCode == 0;
-  const nlohmann::json& stats = outcome.stats;
-  const Methods used = ok ? methodsOf(stats) : Methods{};
-  std::ostringstream csv;
-  csv << csvField(variant.name) << ',' << csvField(assignmentsText(variant)) << ','
-      << (ok ? "ok" : "failed") << ',' << shadowMethod(stats) << ','
-      << field(ok, number(stats, "frame_ms_median")) << ','
-      << field(used.map, number(stats, "passes", "dsm_build_ms")) << ','
-      << field(used.rays, number(stats, "passes", "rays_ms")) << ','
-      << field(used.rays, number(stats, "passes", "bvh_build_ms")) << ','
-      << field(ok, number(stats, "passes", "peel_ms")) << ','
-      << field(used.map, number(stats, "dsm_bytes")) << ','
-      << field(used.rays, number(stats, "bvh_bytes")) << ',' << csvField(layersText(stats)) << ','
-      << (ok ? csvField(image) : "\"\"") << '\n';
-  return csv.str();
-}
-
-// "12.0 ms a frame, map built in 2.2 ms, 40 KiB, rays traced in 31.0 ms, BVH 96 KiB": the
-// figures of the methods the render used.
-std::string captionFigures(const nlohmann::json& stats) {
-  const Methods used = methodsOf(stats);
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(1) << number(stats, "frame_ms_median") << " ms a frame";
-  if (used.map)
-    out << ", map built in " << number(stats, "passes", "dsm_build_ms") << " ms, "
-        << std::uint64_t(number(stats, "dsm_bytes")) / 1024 << " KiB";
-  if (used.rays)
-    out << ", rays traced in " << number(stats, "passes", "rays_ms") << " ms, BVH "
-        << std::uint64_t(number(stats, "bvh_bytes")) / 1024 << " KiB";
-  return out.str();
-}
-
-void writeReports(const VariantsOptions& options, const std::vector<Variant>& variants,
-                  const std::vector<Outcome>& outcomes) {
-  std::ostringstream csv;
-  // Columns of a method the variant did not use (a map's for traced lights, the rays' for
-  // mapped ones) are left empty rather than 0, which would read as "free".
-  csv << "variant,assignments,status,shadow_method,frame_ms_median,dsm_build_ms,rays_ms,"
-         "bvh_build_ms,peel_ms,dsm_bytes,bvh_bytes,dsm_layers_used,image\n";
-  std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Variants of "
-       << htmlEscape(options.base) << "</title>\n<style>body{font-family:sans-serif}"
-       << "figure{display:inline-block;margin:8px;width:260px;vertical-align:top}"
-       << "img{width:256px;border:1px solid #999}figcaption{font-size:12px}"
-       << ".failed{color:#a00}</style></head><body>\n<h1>Variants of " << htmlEscape(options.base)
-       << "</h1>\n";
-  for (std::size_t i = 0; i < variants.size(); ++i) {
-    const Variant& variant = variants[i];
-    const Outcome& outcome = outcomes[i];
-    const bool ok = outcome.exitCode == 0;
-    const std::string image = variant.name + ".png";
-    csv << csvLine(variant, outcome, image);
-    html << "<figure id=\"" << htmlEscape(variant.name) << "\">";
-    if (ok)
-      html << "<a href=\"" << htmlEscape(image) << "\"><img src=\"" << htmlEscape(image)
-           << "\" alt=\"" << htmlEscape(variant.name) << "\"></a>";
-    html << "<figcaption><b>" << htmlEscape(variant.name) << "</b><br>"
-         << htmlEscape(assignmentsText(variant)) << "<br>";
-    if (ok)
-      html << htmlEscape(captionFigures(outcome.stats));
-    else
-      html << "<span class=\"failed\">" << htmlEscape(outcome.error) << "</span>";
-    html << "</figcaption></figure>\n";
-  }
-  html << "</body></html>\n";
-  writeTextFileAtomically(options.outputDir + "/variants.csv", csv.str());
-  writeTextFileAtomically(options.outputDir + "/index.html", html.str());
-}
-
 // Files a render killed while writing leaves: its output's temporary (AtomicFile's
 // ".NAME.png.tmpPID") in the output directory.
 void removeTemporaries(const std::string& dir, const std::string& name) {
@@ -215,6 +62,82 @@ void removeTemporaries(const std::string& dir, const std::string& name) {
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
     if (entry.path().filename().string().rfind(prefix, 0) == 0)
       std::filesystem::remove(entry.path(), ec);
+}
+
+// The variants this run renders: those of its shard, and of those the ones --only names.
+std::vector<std::size_t> selectVariants(const VariantsOptions& options,
+                                        const std::vector<Variant>& variants) {
+  const VariantShard shard =
+      options.shard.empty() ? VariantShard{} : VariantShard::parse(options.shard);
+  for (const std::string& name : options.only) {
+    bool known = false;
+    for (const Variant& variant : variants) known = known || variant.name == name;
+    if (!known)
+      throw InputError("--only " + name + ": error: " + options.variantsFile +
+                       " has no variant of that name (--list lists them)");
+  }
+  std::vector<std::size_t> selected;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    bool named = options.only.empty();
+    for (const std::string& name : options.only) named = named || variants[i].name == name;
+    if (named && shard.contains(i)) selected.push_back(i);
+  }
+  return selected;
+}
+
+// The command that renders a part of this sweep: the same inputs and settings, so the same
+// plan and hashes, whichever machine runs it.
+std::vector<std::string> partCommand(const VariantsOptions& options, const std::string& base,
+                                     const std::string& variantsFile,
+                                     const std::string& outputDir) {
+  return {
+      currentExecutable(), "variants", base,         variantsFile, "-o",
+      outputDir,           "--size",   options.size, "--frames",   std::to_string(options.frames)};
+}
+
+int writeSlurmScripts(const VariantsOptions& options, const VariantsPlan& plan) {
+  namespace fs = std::filesystem;
+  const int variants = int(plan.variants.size());
+  if (options.shards < 0)
+    throw InputError("--shards " + std::to_string(options.shards) +
+                     ": error: expected a whole number of at least 1");
+  if (options.limit < 0)
+    throw InputError("--limit " + std::to_string(options.limit) +
+                     ": error: expected a whole number of at least 1 (0: no limit)");
+  // More tasks than variants would leave some with nothing to render.
+  const int shards = std::min(options.shards > 0 ? options.shards : 8, variants);
+  SlurmScript script;
+  script.outputDir = fs::absolute(options.outputDir).lexically_normal().string();
+  script.shardCommand = partCommand(options, fs::absolute(options.base).string(),
+                                    fs::absolute(options.variantsFile).string(), script.outputDir);
+  script.shardCommand.push_back("--jobs");
+  script.shardCommand.push_back(std::to_string(options.jobs));
+  script.mergeExecutable = currentExecutable();
+  script.shards = shards;
+  script.limit = options.limit;
+  script.cpusPerTask = options.jobs;
+  std::error_code made;
+  fs::create_directories(options.slurmDir, made);
+  fs::create_directories(script.outputDir + "/manifests", made);
+  if (!fs::is_directory(options.slurmDir))
+    throw InputError(options.slurmDir + ": error: cannot create the script directory");
+  if (!fs::is_directory(script.outputDir + "/manifests"))
+    throw InputError(options.outputDir + ": error: cannot create the output directory");
+  // The plan as the tasks will write it (their paths are absolute; the hashes do not depend
+  // on paths), so --status counts every variant pending from now on.
+  VariantsPlan tasksPlan = plan;
+  tasksPlan.base = fs::absolute(options.base).string();
+  tasksPlan.variantsFile = fs::absolute(options.variantsFile).string();
+  tasksPlan.write(script.outputDir);
+  const std::string submit = script.write(options.slurmDir);
+  std::cout << "wrote " << options.slurmDir << "/variants.sbatch (a job array of " << shards
+            << " tasks for " << variants << " variants) and " << options.slurmDir
+            << "/merge.sbatch\n"
+            << "submit both with:  sh " << submit << "\n"
+            << "progress:          "
+            << shellCommand({currentExecutable(), "variants-merge", "--status", script.outputDir})
+            << "\n";
+  return 0;
 }
 
 }  // namespace
@@ -237,69 +160,132 @@ int runVariants(const VariantsOptions& options) {
     MemoryBudget::check(size, {kFrameBytesPerPixel, kFrameFixedBytes},
                         "a render of the plainest variant", options.jobs,
                         MemoryBudget::available());
-    const std::vector<Variant> variants = readVariantsFile(options.variantsFile);
+    std::vector<Variant> parsed = readVariantsFile(options.variantsFile);
+    const std::vector<std::size_t> selected = selectVariants(options, parsed);
     init();
     loadScene(options.base);  // a broken base scene is one error, not one per variant
+    const VariantsPlan plan = VariantsPlan::make(options.base, options.variantsFile, options.size,
+                                                 options.frames, std::move(parsed));
+    const std::vector<Variant>& variants = plan.variants;
+    if (options.slurmDir.empty() && (options.shards != 0 || options.limit != 0))
+      throw InputError(std::string(options.shards != 0 ? "--shards" : "--limit") +
+                       ": error: only for --slurm DIR (the array's tasks); a run of one part "
+                       "takes --shard K/N");
+    if (!options.slurmDir.empty()) {
+      // The scripts cover the whole sweep; a part of it is chosen per array task.
+      if (!options.shard.empty() || !options.only.empty() || options.list)
+        throw InputError(
+            "--slurm: error: writes the scripts of the whole sweep; it cannot be "
+            "combined with --shard, --only or --list");
+      return writeSlurmScripts(options, plan);
+    }
+    if (options.list) {
+      // One line a variant: its name, a tab, and the command that renders it alone, for GNU
+      // parallel or any queue (docs/VARIANTS.md).
+      for (std::size_t i : selected) {
+        std::vector<std::string> command =
+            partCommand(options, options.base, options.variantsFile, options.outputDir);
+        command.push_back("--only");
+        command.push_back(variants[i].name);
+        std::cout << variants[i].name << '\t' << shellCommand(command) << '\n';
+      }
+      return 0;
+    }
     std::error_code made;
-    std::filesystem::create_directories(options.outputDir, made);
-    if (made || !std::filesystem::is_directory(options.outputDir))
+    std::filesystem::create_directories(options.outputDir + "/manifests", made);
+    if (made || !std::filesystem::is_directory(options.outputDir + "/manifests"))
       throw InputError(options.outputDir + ": error: cannot create the output directory");
+    plan.write(options.outputDir);
+
+    // A variant whose manifest is current and whose picture exists was rendered by an
+    // earlier run (or another shard); it is kept, not rendered again.
+    const SweepState before = SweepState::collect(plan, options.outputDir);
+    std::vector<std::size_t> todo;
+    for (std::size_t i : selected)
+      if (!before.outcomes[i].ok()) todo.push_back(i);
+    const int kept = int(selected.size() - todo.size());
 
     const std::string self = currentExecutable();
+    const std::string host = hostName();
     ProgressBar bar;
-    std::vector<Outcome> outcomes(variants.size());
     ChildProcesses children(options.jobs);
+    std::vector<std::chrono::steady_clock::time_point> started(variants.size());
     std::size_t next = 0;
-    int finished = 0, rendered = 0;
-    const int total = int(variants.size());
+    int finished = 0, rendered = 0, failed = 0, badInput = 0;
+    const int total = int(todo.size());
     auto scratch = [&](std::size_t i, const char* what) {
       return options.outputDir + "/." + variants[i].name + what;
     };
     bool stopping = false;
-    while ((next < variants.size() && !interrupted) || !children.empty()) {
+    while ((next < todo.size() && !interrupted) || !children.empty()) {
       if (interrupted && !stopping) {
         // The terminal sent Ctrl-C to the renders too; a signal sent to this process alone
         // reaches them here.
         stopping = true;
         children.signalAll(SIGINT);
       }
-      while (next < variants.size() && !children.full() && !interrupted) {
+      while (next < todo.size() && !children.full() && !interrupted) {
+        const std::size_t i = todo[next];
         std::vector<std::string> command = {self,
                                             "render",
                                             options.base,
                                             "-o",
-                                            options.outputDir + "/" + variants[next].name + ".png",
+                                            options.outputDir + "/" + variants[i].name + ".png",
                                             "--size",
                                             options.size,
                                             "--frames",
                                             std::to_string(options.frames),
                                             "--stats",
-                                            scratch(next, ".stats.json")};
-        for (const Variant::Assignment& assignment : variants[next].assignments) {
+                                            scratch(i, ".stats.json")};
+        for (const Variant::Assignment& assignment : variants[i].assignments) {
           command.push_back("--set");
           command.push_back(assignment.text);
         }
-        children.start(int(next), command, scratch(next, ".log"));
+        started[i] = std::chrono::steady_clock::now();
+        children.start(int(i), command, scratch(i, ".log"));
         ++next;
       }
       const ChildProcesses::Finished done = children.waitAny();
       const std::size_t i = std::size_t(done.id);
-      Outcome& outcome = outcomes[i];
-      outcome.done = true;
+      if (interrupted && done.exitCode != 0) {
+        // Interrupted, not failed: no manifest, so a rerun renders it.
+        std::filesystem::remove(scratch(i, ".stats.json"), made);
+        std::filesystem::remove(scratch(i, ".log"), made);
+        removeTemporaries(options.outputDir, variants[i].name);
+        continue;
+      }
+      VariantManifest outcome;
+      outcome.variant = variants[i].name;
+      for (const Variant::Assignment& assignment : variants[i].assignments)
+        outcome.assignments.push_back(assignment.text);
+      outcome.size = options.size;
+      outcome.frames = options.frames;
+      outcome.hash = plan.hashes[i];
+      outcome.host = host;
+      outcome.seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started[i]).count();
       outcome.exitCode = done.exitCode;
       if (done.exitCode == 0) {
         std::ifstream in(scratch(i, ".stats.json"));
         outcome.stats = nlohmann::json::parse(in, nullptr, false);
       } else {
         const std::string message = readFirstLine(scratch(i, ".log"));
+        const char* fallback =
+            done.exitCode == -1 ? "the render was killed by a signal" : "the render failed";
         outcome.error = options.variantsFile + ":" +
                         std::to_string(lineOfFailure(variants[i], message)) + ": error: variant " +
-                        variants[i].name + ": " + (message.empty() ? "the render failed" : message);
+                        variants[i].name + ": " + (message.empty() ? fallback : message);
       }
+      outcome.write(options.outputDir);
       std::filesystem::remove(scratch(i, ".stats.json"), made);
       std::filesystem::remove(scratch(i, ".log"), made);
       if (done.exitCode != 0) removeTemporaries(options.outputDir, variants[i].name);
-      if (done.exitCode == 0) ++rendered;
+      if (done.exitCode == 0) {
+        ++rendered;
+      } else {
+        ++failed;
+        badInput += done.exitCode == 2 ? 1 : 0;
+      }
       bar.update(++finished, total, variants[i].name);
     }
     if (interrupted) {
@@ -308,16 +294,26 @@ int runVariants(const VariantsOptions& options) {
       return 130;
     }
 
-    writeReports(options, variants, outcomes);
-    int failed = 0, badInput = 0;
-    for (const Outcome& outcome : outcomes) {
-      if (outcome.exitCode == 0) continue;
-      ++failed;
-      badInput += outcome.exitCode == 2 ? 1 : 0;
-      std::cerr << outcome.error << '\n';
+    const std::string keptText =
+        kept > 0 ? ", " + std::to_string(kept) + " kept from an earlier run" : std::string();
+    if (options.shard.empty() && options.only.empty()) {
+      // The whole sweep ran here: the reports, as variants-merge would write them.
+      const SweepState state = SweepState::collect(plan, options.outputDir);
+      reportSweep(plan, state, options.outputDir);
+      std::cout << "rendered " << state.done << " of " << variants.size() << " variants to "
+                << options.outputDir << " (variants.csv, index.html" << keptText << ")\n";
+      return state.exitStatus();
     }
-    std::cout << "rendered " << total - failed << " of " << total << " variants to "
-              << options.outputDir << " (variants.csv, index.html)\n";
+    // A part of a sweep: its errors now, the reports from variants-merge once all parts ran.
+    for (std::size_t i : todo) {
+      const std::optional<VariantManifest> manifest =
+          VariantManifest::read(options.outputDir, variants[i].name);
+      if (manifest && !manifest->ok()) std::cerr << manifest->error << '\n';
+    }
+    std::cout << "rendered " << rendered << " of " << total << " variants"
+              << (options.shard.empty() ? std::string() : " of shard " + options.shard) << " to "
+              << options.outputDir << keptText << "; `ivshadow variants-merge " << options.outputDir
+              << "` writes the reports\n";
     if (failed == 0) return 0;
     return badInput == failed ? 2 : 1;
   });

@@ -3,6 +3,7 @@
 #include "cli/RenderCommand.h"
 #include "cli/TradeCommand.h"
 #include "cli/VariantsCommand.h"
+#include "cli/VariantsMerge.h"
 #include "ivshadow/IvShadowInit.h"
 #include "viewer/ViewerApplication.h"
 #include "viewer/ViewerCommandLine.h"
@@ -41,7 +42,15 @@ const char* kVariantsExamples =
     R"(  ivshadow variants iv_scenes/coloured_shadows.iv iv_scenes/coloured_shadows.variants -o out/v
   ivshadow variants scene.iv grid.variants -o out/grid --size 320x240 --frames 1 --jobs 2
 A line "sweep grid Lamp.maxLayers = 1 .. 5 step 1 * Lamp.resolution = 128 | 256 | 512"
-renders the 5 x 3 crossed grid (docs/VARIANTS.md).)";
+renders the 5 x 3 crossed grid (docs/VARIANTS.md).
+On a cluster or with GNU parallel (docs/VARIANTS.md, "On a cluster"):
+  ivshadow variants scene.iv grid.variants -o out/grid --shard 0/4   # the first of 4 parts
+  ivshadow variants scene.iv grid.variants -o out/grid --list | cut -f2 | parallel -j2
+  ivshadow variants scene.iv grid.variants -o /shared/grid --slurm /shared/jobs --shards 4
+  ivshadow variants-merge out/grid)";
+
+const char* kMergeExamples = R"(  ivshadow variants-merge out/grid
+  ivshadow variants-merge --status out/grid)";
 
 const char* kReferenceExamples = R"(  ivshadow reference iv_scenes/coloured_shadows.iv -o exact.png
   ivshadow reference scene.iv -o exact.png --size 640x480 --pfm exact.pfm
@@ -116,6 +125,27 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   variantsCommand->add_option("--jobs,-j", variants.jobs, "Variants rendered at once")
       ->capture_default_str();
+  variantsCommand->add_option("--shard", variants.shard,
+                              "Render part K of N: the variants whose index is K modulo N");
+  variantsCommand->add_option("--only", variants.only, "Render only the variant NAME (repeatable)")
+      ->allow_extra_args(false);
+  variantsCommand->add_flag("--list", variants.list,
+                            "Print each variant's name, a tab and the command rendering it alone");
+  variantsCommand->add_option(
+      "--slurm", variants.slurmDir,
+      "Write Slurm job array and merge scripts to DIR instead of rendering");
+  variantsCommand->add_option("--shards", variants.shards,
+                              "--slurm: array tasks, one shard each (default 8)");
+  variantsCommand->add_option("--limit", variants.limit,
+                              "--slurm: array tasks running at once (default no limit)");
+
+  ivshadow::VariantsMergeOptions merge;
+  CLI::App* mergeCommand = app.add_subcommand(
+      "variants-merge", "Write variants.csv and index.html from the manifests of every shard");
+  mergeCommand->footer(footer(kMergeExamples));
+  mergeCommand->add_option("dir", merge.outputDir, "The sweep's output directory")->required();
+  mergeCommand->add_flag("--status", merge.statusOnly,
+                         "Only print the done, failed and pending counts");
 
   ivshadow::ReferenceCommandOptions reference;
   CLI::App* referenceCommand = app.add_subcommand(
@@ -193,6 +223,7 @@ int main(int argc, char** argv) {
   }
   if (renderCommand->parsed()) return ivshadow::runRender(render);
   if (variantsCommand->parsed()) return ivshadow::runVariants(variants);
+  if (mergeCommand->parsed()) return ivshadow::runVariantsMerge(merge);
   if (compareCommand->parsed()) return ivshadow::runCompare(compare);
   if (referenceCommand->parsed()) return ivshadow::runReference(reference);
   if (tradeCommand->parsed()) return ivshadow::runTrade(trade);

@@ -449,9 +449,10 @@ TEST(Ivshadow, EachCommandsHelpShowsItsOwnExamples) {
 TEST(Ivshadow, AnUnknownCommandIsNamedWithTheValidOnes) {
   const test::ProcessResult result = run({test::ivshadowExe(), "rendr", "scene.iv"});
   EXPECT_EQ(result.exitCode, 2);
-  EXPECT_EQ(result.err,
-            "ivshadow: error: unknown command 'rendr'; expected one of render, variants, "
-            "reference, trade, compare, view (ivshadow --help lists them)\n");
+  EXPECT_EQ(
+      result.err,
+      "ivshadow: error: unknown command 'rendr'; expected one of render, variants, variants-merge, "
+      "reference, trade, compare, view (ivshadow --help lists them)\n");
   const test::ProcessResult none = run({test::ivshadowExe()});
   EXPECT_EQ(none.exitCode, 2);
   EXPECT_NE(none.err.find("expected a command: render, variants"), std::string::npos) << none.err;

@@ -53,13 +53,105 @@ TEST(VariantsCommand, RendersEveryGoodVariantAndReportsTheBadOneWithItsLine) {
   const std::string html = readText(dir + "/index.html");
   EXPECT_NE(html.find("<img src=\"size-64.png\""), std::string::npos);
   EXPECT_NE(html.find("no field"), std::string::npos);
-  // Nothing but the images and the two reports is left behind.
+  // Nothing but the images, the two reports and the manifests is left behind.
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     (void)entry;
     ++files;
   }
-  EXPECT_EQ(files, 5);
+  EXPECT_EQ(files, 6);
+  int manifests = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir + "/manifests")) {
+    (void)entry;
+    ++manifests;
+  }
+  EXPECT_EQ(manifests, 5);  // one a variant, failed ones too, and the plan
+}
+
+// A rerun keeps what is done for the same inputs and renders the failed variant again; other
+// inputs (here the frame count, part of each variant's hash) make every manifest stale.
+TEST(VariantsCommand, ARerunKeepsCurrentVariantsAndRendersStaleOnes) {
+  const std::string dir = test::outputDir() + "/out";
+  const std::string variants =
+      std::string(IVSHADOW_SOURCE_DIR) + "/tests/variants/with_a_bad_variant.variants";
+  const std::vector<std::string> command = {test::ivshadowExe(),
+                                            "variants",
+                                            test::scenesDir() + "/coloured_shadows.iv",
+                                            variants,
+                                            "-o",
+                                            dir,
+                                            "--size",
+                                            "48x36",
+                                            "--frames",
+                                            "1"};
+  EXPECT_EQ(test::run(command).exitCode, 2);
+  const test::ProcessResult again = test::run(command);
+  EXPECT_EQ(again.exitCode, 2) << again.err;
+  EXPECT_NE(again.out.find("rendered 3 of 4 variants to " + dir +
+                           " (variants.csv, index.html, 3 kept from an earlier run)"),
+            std::string::npos)
+      << again.out;
+  EXPECT_NE(again.err.find("variant typo: "), std::string::npos) << again.err;
+  std::vector<std::string> stale = command;
+  stale.back() = "2";
+  const test::ProcessResult changed = test::run(stale);
+  EXPECT_EQ(changed.exitCode, 2) << changed.err;
+  EXPECT_EQ(changed.out.find("kept"), std::string::npos) << changed.out;
+  EXPECT_EQ(test::run({test::ivshadowExe(), "variants-merge", "--status", dir}).out,
+            dir + ": done 3, failed 1, pending 0 of 4 variants\n  " + variants +
+                ":7: error: variant typo: --set 'Lamp.colour=1 0 0': error: node 'Lamp' "
+                "(DeepShadowLight) has no field 'colour' (its fields: bias, color, colorModel, "
+                "farRadius, filter, filterSize, intensity, location, maxLayers, method, "
+                "nearRadius, on, precision, resolution, shadowColor)\n");
+}
+
+// --shard and --only name what is wrong with them before anything is rendered.
+TEST(VariantsCommand, ABadShardOrVariantNameIsRefusedBeforeRendering) {
+  const std::string dir = test::outputDir() + "/out";
+  const std::string variants =
+      std::string(IVSHADOW_SOURCE_DIR) + "/tests/variants/with_a_bad_variant.variants";
+  const std::vector<std::string> command = {test::ivshadowExe(),
+                                            "variants",
+                                            test::scenesDir() + "/coloured_shadows.iv",
+                                            variants,
+                                            "-o",
+                                            dir};
+  for (const char* shard : {"4/4", "1", "2/1", "0/0", "a/b"}) {
+    std::vector<std::string> bad = command;
+    bad.insert(bad.end(), {"--shard", shard});
+    const test::ProcessResult result = test::run(bad);
+    EXPECT_EQ(result.exitCode, 2) << shard;
+    EXPECT_NE(result.err.find(std::string("--shard ") + shard + ": error: expected K/N"),
+              std::string::npos)
+        << result.err;
+  }
+  std::vector<std::string> unknown = command;
+  unknown.insert(unknown.end(), {"--only", "bright"});
+  const test::ProcessResult result = test::run(unknown);
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.err.find("--only bright: error: " + variants + " has no variant of that name"),
+            std::string::npos)
+      << result.err;
+  std::vector<std::string> slurm = command;
+  slurm.insert(slurm.end(), {"--slurm", dir + "-jobs", "--shard", "0/2"});
+  const test::ProcessResult both = test::run(slurm);
+  EXPECT_EQ(both.exitCode, 2);
+  EXPECT_NE(both.err.find("--slurm: error: writes the scripts of the whole sweep"),
+            std::string::npos)
+      << both.err;
+  EXPECT_FALSE(test::fileExists(dir + "-jobs"));
+  std::vector<std::string> shards = command;
+  shards.insert(shards.end(), {"--shards", "4"});
+  const test::ProcessResult alone = test::run(shards);
+  EXPECT_EQ(alone.exitCode, 2);
+  EXPECT_NE(alone.err.find("--shards: error: only for --slurm DIR"), std::string::npos)
+      << alone.err;
+  EXPECT_FALSE(test::fileExists(dir));
+  const test::ProcessResult merge = test::run({test::ivshadowExe(), "variants-merge", dir});
+  EXPECT_EQ(merge.exitCode, 2);
+  EXPECT_NE(merge.err.find(dir + "/manifests/plan.json: error: no plan of a sweep here"),
+            std::string::npos)
+      << merge.err;
 }
 
 // Splits a CSV line at commas outside double quotes; quotes are dropped.

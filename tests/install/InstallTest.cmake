@@ -47,4 +47,28 @@ execute_process(COMMAND ${WORK_DIR}/pkgconfig_consumer OUTPUT_VARIABLE out RESUL
 if(NOT status EQUAL 0 OR NOT out MATCHES "TransparentShadowGroup with 2 children")
   message(FATAL_ERROR "the pkg-config consumer failed: ${out}")
 endif()
+
+# The Python module from the prefix: it loads the installed plugin (so Coin knows the nodes)
+# and runs the installed executable.
+execute_process(COMMAND ${PIVY_PYTHON} -c "import pivy" RESULT_VARIABLE has_pivy
+                OUTPUT_QUIET ERROR_QUIET)
+if(has_pivy EQUAL 0)
+  set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
+  execute_process(
+    COMMAND ${PIVY_PYTHON} -c "import os, ivshadow; from pivy import coin; assert not coin.SoType.fromName(coin.SbName('TransparentShadowGroup')).isBad(); print(ivshadow.__file__, os.path.realpath(ivshadow.library()), os.path.realpath(ivshadow.executable()), sep=chr(10))"
+    OUTPUT_VARIABLE python_out ERROR_VARIABLE python_err RESULT_VARIABLE status)
+  file(REAL_PATH ${prefix} real_prefix)
+  string(REPLACE "\n" ";" python_lines "${python_out}")
+  foreach(line IN LISTS python_lines)
+    if(line AND NOT line MATCHES "^${real_prefix}/")
+      message(FATAL_ERROR "the installed Python module uses ${line}, not the install's")
+    endif()
+  endforeach()
+  if(NOT status EQUAL 0 OR NOT python_out MATCHES "libivshadow")
+    message(FATAL_ERROR "import ivshadow from the install failed: ${python_out}${python_err}")
+  endif()
+  set(out "${out}; Python module ok")
+else()
+  message(STATUS "no pivy for ${PIVY_PYTHON}: the installed Python module is not imported")
+endif()
 message(STATUS "install, find_package and pkg-config: ${out}")
