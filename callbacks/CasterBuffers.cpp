@@ -70,6 +70,9 @@ void CasterBuffers::draw(const GlProgram& program, int textureUnit) const {
     } else {
       program.setInt("uTextureModel", 0);
     }
+    // Triangles are numbered across the batches, so that a program can tell two of them
+    // apart where they lie on each other (dsm_build.frag).
+    program.setInt("uFirstTriangle", batch.firstVertex / 3);
     glDrawArrays(GL_TRIANGLES, batch.firstVertex, batch.vertexCount);
   }
 }

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace ivshadow {
@@ -133,7 +134,11 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   glViewport(0, 0, request.resolution, request.resolution);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
+  // The fragment shader writes the distance it stores, scaled by a power of two into [0, 1)
+  // (exact: only the exponent changes), as the depth: the depth test then orders surfaces by
+  // exactly the distances the peel compares, and two surfaces at one distance tie in both.
+  glDepthFunc(GL_LESS);
+  const float depthScale = std::ldexp(1.0f, -std::ilogb(request.frame.farDepth) - 1);
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUseProgram(program.name());
@@ -142,6 +147,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   program.setInt("uPreviousVisibility", 1);
   program.setInt("uColourModel", static_cast<int>(request.colourModel));
   program.setInt("uOpaqueOnly", 0);
+  program.setFloat("uDepthScale", depthScale);
 
   for (int face = 0; face < request.frame.faceCount; ++face) {
     const MapFace& view = request.frame.faces[std::size_t(face)];
@@ -162,7 +168,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
       // A texel this pass leaves empty must stop the next pass too.
       glClearTexImage(peelDepth_[write].get(), 0, GL_RED, GL_FLOAT, noSurface);
-      const float farthest = 0.0f;
+      const float farthest = 1.0f;
       glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farthest);
       const GLuint zero[2] = {0u, 0u};
       glNamedBufferSubData(flagsBuffer, 0, sizeof(zero), zero);
@@ -192,7 +198,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
                                      closing);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
-      const float farthest = 0.0f;
+      const float farthest = 1.0f;
       glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farthest);
       const GLuint zero[2] = {0u, 0u};
       glNamedBufferSubData(flagsBuffer, 0, sizeof(zero), zero);

@@ -77,6 +77,9 @@ GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fr
 void GlProgram::setInt(const char* uniform, int value) const {
   glProgramUniform1i(program_.get(), location(uniform), value);
 }
+void GlProgram::setFloat(const char* uniform, float value) const {
+  glProgramUniform1f(program_.get(), location(uniform), value);
+}
 void GlProgram::setVec3(const char* uniform, const float* value) const {
   glProgramUniform3fv(program_.get(), location(uniform), 1, value);
 }

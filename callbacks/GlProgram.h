@@ -24,6 +24,7 @@ class IVSHADOW_INTERNAL GlProgram {
 
   int location(const char* uniform) const { return uniforms_[uniform]; }
   void setInt(const char* uniform, int value) const;
+  void setFloat(const char* uniform, float value) const;
   void setVec3(const char* uniform, const float* value) const;
   void setMat4(const char* uniform, const float* columnMajor) const;
 

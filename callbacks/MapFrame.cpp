@@ -82,6 +82,7 @@ MapFrame cubeFrame(const glm::vec3& light, float near, float far) {
                                                faceVector(kFaceUp, face));
   }
   frame.texelScale = {2.0f, 0.0f};
+  frame.farDepth = far;
   return frame;
 }
 
@@ -99,6 +100,7 @@ MapFrame perspectiveFrame(const glm::vec3& light, const glm::vec3& axis, float h
   f.viewProjection = perspectiveProjection(tanHalf, near, far) * viewMatrix(light, axis, right, up);
   frame.lookup = lookupMatrix(light, axis, right, up, tanHalf, tanHalf, true);
   frame.texelScale = {2.0f * tanHalf, 0.0f};
+  frame.farDepth = far;
   return frame;
 }
 
@@ -126,6 +128,7 @@ MapFrame orthographicFrame(const glm::vec3& axis, const glm::vec3& low, const gl
   f.viewProjection = projection * viewMatrix(origin, axis, right, up);
   frame.lookup = lookupMatrix(origin, axis, right, up, halfX, halfY, false);
   frame.texelScale = {0.0f, 2.0f * std::max(halfX, halfY)};
+  frame.farDepth = depth;
   return frame;
 }
 

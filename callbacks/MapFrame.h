@@ -29,6 +29,9 @@ struct MapFrame {
   // A texel's size at distance d along the axis, at resolution 1: texelScale.x * d +
   // texelScale.y (the lookup divides by the resolution). Sets the receiver's bias.
   glm::vec2 texelScale{2.0f, 0.0f};
+  // The largest distance the build stores (its far plane), which sets the power of two the
+  // build scales distances by to write them as depths (DeepShadowMap).
+  float farDepth = 1.0f;
 };
 
 // A point light at `light`: six 90-degree faces along kFaceAxis.

@@ -17,6 +17,12 @@ uniform int uColourModel;
 // light, or from the plane where a directional light's map begins.
 uniform vec3 uDepthOrigin;
 uniform vec3 uDepthAxis;
+// Written as the fragment's depth (scaled by this power of two, DeepShadowMap.cpp), so the
+// depth test orders by the same distances as the peel.
+uniform float uDepthScale;
+// The first triangle of this draw among all the casters' triangles: with gl_PrimitiveID it
+// numbers each triangle once.
+uniform int uFirstTriangle;
 uniform int uOpaqueOnly;
 
 layout(std430, binding = IVSHADOW_MAP_FLAGS_BINDING) buffer PeelFlags {
@@ -39,12 +45,20 @@ void main() {
 
   float depth = dot(vPosition - uDepthOrigin, uDepthAxis);
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  if (depth <= texelFetch(uPreviousDepth, texel, 0).r) discard;
+  // Layers go in order of (distance, triangle number): a surface lying exactly on the
+  // previous layer's (a cone's base on a cylinder's top) is the next layer when its triangle
+  // comes later, instead of being lost to the tie. Among the rest, the depth test keeps the
+  // nearest, and of equally near ones the first drawn, which is the lowest numbered.
+  float triangle = float(uFirstTriangle + gl_PrimitiveID);
+  vec4 previous = texelFetch(uPreviousVisibility, texel, 0);
+  float previousDepth = texelFetch(uPreviousDepth, texel, 0).r;
+  if (depth < previousDepth || (depth == previousDepth && triangle <= previous.a)) discard;
+  gl_FragDepth = depth * uDepthScale;
 
   if (uOpaqueOnly != 0 && !isOpaque(colour.a)) discard;
-  vec3 visibility = uOpaqueOnly != 0 ? vec3(0.0)
-                                     : texelFetch(uPreviousVisibility, texel, 0).rgb *
-                                           transmittance(clamp(colour, 0.0, 1.0), uColourModel);
+  vec3 visibility = uOpaqueOnly != 0
+                        ? vec3(0.0)
+                        : previous.rgb * transmittance(clamp(colour, 0.0, 1.0), uColourModel);
   anyFragment = 1u;
   // A surface that lets light through may have more surfaces behind it that matter.
   if (!isOpaque(colour.a)) transparentFragment = 1u;
@@ -52,5 +66,5 @@ void main() {
   oDepth = depth;
   oVisibility = vec4(visibility, 1.0);
   oPeelDepth = depth;
-  oPeelVisibility = vec4(visibility, 1.0);
+  oPeelVisibility = vec4(visibility, triangle);
 }

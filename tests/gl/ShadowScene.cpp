@@ -154,6 +154,14 @@ std::vector<AnalyticCase> analyticCases() {
   ShadowScene stacked;
   stacked.filters = {kRedGlass, kGreenGlass};
   add("StackedFiltersMultiply", stacked, ColourModel::Saturate);
+  // Two filters in one plane (a cone's base lying on a cylinder's top): both filter the light
+  // where they overlap. The map's layers used to lose one of two surfaces at exactly one
+  // distance (the depth test's tie), in texels scattered by rounding: streaks.
+  ShadowScene coincident;
+  Filter green = kGreenGlass;
+  green.height = kRedGlass.height;
+  coincident.filters = {kRedGlass, green};
+  add("CoincidentFiltersBothFilter", coincident, ColourModel::Saturate);
 
   ShadowScene opaque;
   Filter blocker = kRedGlass;
