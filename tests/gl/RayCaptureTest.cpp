@@ -17,6 +17,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -27,6 +30,10 @@ namespace {
 // 1e-3, a quarter step at most) rounded once to 8 bits: one step bounds it (as in
 // RayShadowTest).
 constexpr double kTolerance = 1.0;
+// Glass composited over the floor: the floor is rounded to 8 bits in the framebuffer before
+// the peeled glass layers go over it, and the result is rounded again; half a step more than
+// a single surface needs (the worst seen is 1.03).
+constexpr double kLayeredTolerance = 1.5;
 
 // The red and green glass over the floor, traced, with a translation before the floor's mesh
 // (DEF Lift) that moves the floor, a caster, without touching the lights or the camera.
@@ -151,6 +158,60 @@ TEST(RayCapture, AMovedCasterIsCapturedAgain) {
   const DeepShadowStatistics stats = r.frame();
   EXPECT_EQ(stats.rayCaptures, 2);
   expectAnalytic(r.renderer->read(), scene);
+}
+
+TEST(RayCapture, ALightTurnedOnIsTracedFromTheKeptCaptureIntoNewTextures) {
+  // Two traced lights at one place, half the intensity each, the second off in the first
+  // frame: turning it on changes only lights, so the kept capture is traced for both, and the
+  // shading textures, now sized for two lights, must be given the kept depths again. Their
+  // sum is the single light's analytic picture.
+  ShadowScene scene = tracedScene();
+  scene.lightCount = 2;
+  Rendering r(scene);
+  ASSERT_TRUE(r.ready());
+  auto* second = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp1"));
+  ASSERT_NE(second, nullptr);
+  second->on = FALSE;
+  DeepShadowStatistics stats = r.frame();
+  ASSERT_EQ(stats.lights.size(), 1u);
+  second->on = TRUE;
+  stats = r.frame();
+  ASSERT_EQ(stats.lights.size(), 2u);
+  EXPECT_EQ(stats.lights[1].method, "RAYS");
+  EXPECT_EQ(stats.rayFrames, 2);
+  EXPECT_EQ(stats.rayCaptures, 1);
+  const Image image = r.renderer->read();
+  expectAnalytic(image, scene);
+  // Where both glasses are seen over the floor each layer must find its own traced
+  // visibility through the kept depths: the red glass (height 0.5) is lit unshadowed, the
+  // green one (0.25) through the red, the floor through both. Composited front to back (the
+  // group peels exactly) at the opacity GL gets, 128/255 (Coin sends colours as 8-bit
+  // values), Lambert from the light 1 above the centre.
+  const std::array<double, 3> red = transmittance(kRedGlass, ColourModel::Saturate);
+  const std::array<double, 3> green = transmittance(kGreenGlass, ColourModel::Saturate);
+  const std::string failure = compareWithExpectation(
+      image,
+      [&](int x, int y) {
+        Expectation e;
+        const double px = -1.2 + (x + 0.5) / 100.0, py = 1.2 - (y + 0.5) / 100.0;
+        // Inside the red glass, clear of the shadow edges on the green glass and floor.
+        if (std::max(std::abs(px), std::abs(py)) > 0.25) return e;
+        const double r2 = px * px + py * py;
+        const double litRed = 255.0 * 0.5 / std::sqrt(0.25 + r2);
+        const double litGreen = 255.0 * 0.75 / std::sqrt(0.5625 + r2);
+        const double litFloor = 255.0 / std::sqrt(1.0 + r2);
+        const double a = 128.0 / 255.0;
+        for (std::size_t c = 0; c < 3; ++c) {
+          const double floor = litFloor * red[c] * green[c];
+          const double greenGlass = litGreen * kGreenGlass.diffuse[c] * red[c];
+          const double redGlass = litRed * kRedGlass.diffuse[c];
+          e.rgb[c] = a * redGlass + (1.0 - a) * (a * greenGlass + (1.0 - a) * floor);
+        }
+        e.checked = true;
+        return e;
+      },
+      kLayeredTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
 }
 
 }  // namespace
