@@ -1,16 +1,21 @@
 // MAP against RAYS (SoDeepShadowLight::method) on the headless renderer: frame time with a
 // static scene and with the light moving every frame, at 1k / 100k / 1M triangles and
 // 640 x 480 / 1920 x 1080, and the casters' Embree build against triangles. Run:
-// build/bin/ivshadow_bench --benchmark_filter='MethodFrame|BvhBuild'. Times are wall clock,
-// GPU finished.
+// build/bin/ivshadow_bench --benchmark_filter='MethodFrame|BvhBuild'. RaysAgainstCoin puts
+// RAYS next to plain Coin (no shadows) in the same run: static, light moving, camera moving
+// (--benchmark_filter=RaysAgainstCoin), with the pass times of the last frame. Times are wall clock, GPU finished.
 #include "BenchScenes.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
+#include "ivshadow/PeelStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoPointLight.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <benchmark/benchmark.h>
@@ -27,7 +32,9 @@ struct Scene {
   SoSeparator* root = nullptr;
   SoDeepShadowLight* light = nullptr;
 
-  Scene(benchmark::State& state, int triangles, int width, int height, int method) {
+  // `shadows` None: plain Coin, `light` stays null and `method` is ignored.
+  Scene(benchmark::State& state, int triangles, int width, int height, int method,
+        Shadows shadows = Shadows::DeepShadowGroup) {
     ivshadow::init();
     std::string error;
     renderer = ivshadow::OffscreenRenderer::create(width, height, error);
@@ -35,9 +42,11 @@ struct Scene {
       state.SkipWithError(error.c_str());
       return;
     }
-    root = ivshadow::bench::sphereField(triangles, true, Shadows::DeepShadowGroup, width, height);
-    light = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
-    light->method = method;
+    root = ivshadow::bench::sphereField(triangles, true, shadows, width, height);
+    if (shadows == Shadows::DeepShadowGroup) {
+      light = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
+      light->method = method;
+    }
     renderer->render(root);  // programs, caches, the first map or BVH and trace
   }
   ~Scene() {
@@ -93,6 +102,56 @@ void BvhBuild(benchmark::State& state) {
       stats.casterTriangles > 0 ? double(stats.bvhBytes) / stats.casterTriangles : 0.0;
 }
 
+// Args: triangles, shadows (0 plain Coin; 1 RAYS, the group's default transparency PEELED;
+// 2 RAYS, transparency COIN_BLENDING, blended as plain Coin blends), motion (0 static, 1 light
+// moving, 2 camera moving), at 800 x 600. Plain Coin's light and camera move as RAYS's do, so
+// each ratio compares the same frames.
+void RaysAgainstCoin(benchmark::State& state) {
+  const int shadows = int(state.range(1));
+  Scene s(state, int(state.range(0)), 800, 600, SoDeepShadowLight::RAYS,
+          shadows != 0 ? Shadows::DeepShadowGroup : Shadows::None);
+  if (!s.renderer) return;
+  const int motion = int(state.range(2));
+  SoSearchAction search;
+  search.setType(SoTransparentShadowGroup::getClassTypeId());
+  search.apply(s.root);
+  if (shadows == 2) {
+    static_cast<SoTransparentShadowGroup*>(search.getPath()->getTail())->transparency =
+        SoTransparentShadowGroup::COIN_BLENDING;
+    s.renderer->render(s.root);  // the blending program variants
+  }
+  search.setType(SoCamera::getClassTypeId());
+  search.apply(s.root);
+  auto* camera = static_cast<SoCamera*>(search.getPath()->getTail());
+  search.setType(SoPointLight::getClassTypeId());  // a SoDeepShadowLight is one too
+  search.apply(s.root);
+  auto* light = static_cast<SoPointLight*>(search.getPath()->getTail());
+  const SbVec3f eye = camera->position.getValue();
+  const SbVec3f lamp = light->location.getValue();
+  int frame = 0;
+  for (auto _ : state) {
+    const float step = 0.05f * float(++frame % 7);
+    if (motion == 1) light->location.setValue(lamp + SbVec3f(step, 0.0f, 0.0f));
+    if (motion == 2) camera->position.setValue(eye + SbVec3f(step, 0.0f, 0.0f));
+    state.SetIterationTime(s.renderer->render(s.root).wallMs * 1e-3);
+  }
+  if (shadows != 0) {
+    // The last frame's parts: a static frame traces nothing and keeps the last trace's.
+    const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(s.root);
+    const ivshadow::PeelStatistics peel = ivshadow::collectPeelStatistics(s.root);
+    state.counters["triangles"] = stats.casterTriangles;
+    state.counters["capture_ms"] = stats.rayCaptureMs;
+    state.counters["trace_ms"] = stats.rayTraceMs;
+    state.counters["upload_ms"] = stats.raysMs - stats.rayCaptureMs - stats.rayTraceMs;
+    state.counters["layers"] = stats.rayLayers;
+    state.counters["peel_ms"] = peel.peelMs;
+    state.counters["peel_passes"] = peel.passes;
+  }
+  static const char* const kinds[3] = {"plain Coin", "RAYS PEELED", "RAYS COIN_BLENDING"};
+  static const char* const motions[3] = {" static", " light moving", " camera moving"};
+  state.SetLabel(std::string(kinds[shadows]) + motions[motion]);
+}
+
 void frames(benchmark::internal::Benchmark* b) {
   for (int triangles : {1000, 100000, 1000000})
     for (const auto& size : {std::pair<int, int>{640, 480}, std::pair<int, int>{1920, 1080}})
@@ -102,6 +161,11 @@ void frames(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(MethodFrame)->Apply(frames);
+BENCHMARK(RaysAgainstCoin)
+    ->ArgsProduct({{1000, 100000}, {0, 1, 2}, {0, 1, 2}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5);
 BENCHMARK(BvhBuild)
     ->Arg(1000)
     ->Arg(10000)

@@ -106,7 +106,8 @@ void RayShadowPass::endCapture() {
 }
 
 void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
-                           const std::vector<std::uint16_t>& visibility, int rays) {
+                           bool surfacesChanged, const std::vector<std::uint16_t>& visibility,
+                           int rays) {
   if (count == 0 || rays == 0) {
     uploadedLayers_ = 0;
     uploadedRays_ = 0;
@@ -129,6 +130,7 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
     }
     shadingWidth_ = width;
     shadingHeight_ = height;
+    surfacesChanged = true;  // new textures hold no depths yet
   }
   uploadedLayers_ = count;
   uploadedRays_ = rays;
@@ -136,7 +138,7 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
   // Each layer's window depth (1 where nothing is traced), from the alpha of its positions.
   std::vector<float>& depth = depthScratch_;
   depth.resize(std::size_t(width) * std::size_t(height));
-  for (int l = 0; l < count; ++l) {
+  for (int l = 0; surfacesChanged && l < count; ++l) {
     const SurfaceLayer& layer = layers[std::size_t(l)];
     for (std::size_t i = 0; i < depth.size(); ++i)
       depth[i] = layer.traced(i) ? layer.position[i * 4 + 3] : 1.0f;

@@ -40,8 +40,9 @@ class RayShadowPass {
   void endCapture();
 
   // Uploads the captured depths of the first `count` layers and the visibility of `rays`
-  // lights for the shading pass.
-  void upload(const std::vector<SurfaceLayer>& layers, int count,
+  // lights for the shading pass. `surfacesChanged` false: the layers are the ones uploaded
+  // last (only the lights moved), whose depths the textures still hold.
+  void upload(const std::vector<SurfaceLayer>& layers, int count, bool surfacesChanged,
               const std::vector<std::uint16_t>& visibility, int rays);
   int layers() const { return uploadedLayers_; }
   // Binds the shading textures until the returned scope ends.

@@ -95,6 +95,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["passes"]["bvh_build_ms"] = shadows.bvhBuildMs;
   stats["rays_traced"] = shadows.raysTraced;
   stats["ray_frames"] = shadows.rayFrames;
+  stats["ray_captures"] = shadows.rayCaptures;
   stats["bvh_bytes"] = shadows.bvhBytes;
   stats["bvh_builds"] = shadows.bvhBuilds;
   stats["bvh_refits"] = shadows.bvhRefits;

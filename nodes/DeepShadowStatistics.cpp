@@ -40,6 +40,7 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.raysTraced += stats.raysTraced;
     total.bvhBytes += stats.bvhBytes;
     total.rayFrames += stats.rayFrames;
+    total.rayCaptures += stats.rayCaptures;
     total.bvhBuilds += stats.bvhBuilds;
     total.bvhRefits += stats.bvhRefits;
   });

@@ -38,19 +38,61 @@ void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
   const SbVec2s size = region.getViewportSizePixels();
   TraceKey key;
   key.mapsVersion = contents.mapsVersion();
-  key.viewVersion = contents.viewVersion();
-  key.viewport = {origin[0], origin[1], size[0], size[1]};
+  key.capture.castersVersion = contents.castersVersion();
+  key.capture.viewVersion = contents.viewVersion();
+  key.capture.viewport = {origin[0], origin[1], size[0], size[1]};
   const SbMatrix* matrices[3] = {&SoViewingMatrixElement::get(state),
                                  &SoProjectionMatrixElement::get(state),
                                  &SoModelMatrixElement::get(state)};
   for (int m = 0; m < 3; ++m)
     for (int i = 0; i < 16; ++i)
-      key.matrices[std::size_t(m * 16 + i)] = (*matrices[m])[i / 4][i % 4];
+      key.capture.matrices[std::size_t(m * 16 + i)] = (*matrices[m])[i / 4][i % 4];
   // Nothing that the traced shadows depend on changed: the last trace still holds.
   if (traceValid_ && key == traced_) return;
   const auto start = std::chrono::steady_clock::now();
-  RayShadowPass& rays = *pass_;
+  // Only lights changed: the camera sees the same surfaces, which are traced again as they
+  // were captured.
+  const bool recapture = !traceValid_ || !(key.capture == traced_.capture);
+  if (recapture) capture(action, contents, shading, renderChildren, inPath, statistics);
+  const auto captured = std::chrono::steady_clock::now();
 
+  std::vector<RayLight> lights;
+  for (const MapState& map : maps) {
+    if (!map.rays) continue;
+    RayLight light;
+    for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
+    light.directional = map.kind == LightKind::Directional;
+    light.model = map.model;
+    lights.push_back(light);
+  }
+  const std::size_t traced =
+      casters.scene()
+          ? traceScreenShadows(*casters.scene(), surfaces_, capturedLayers_, lights, visibility_)
+          : 0;
+  const auto tracedAt = std::chrono::steady_clock::now();
+  pass_->upload(surfaces_, int(capturedLayers_), recapture, visibility_,
+                visibility_.empty() ? 0 : int(lights.size()));
+  traced_ = key;
+  traceValid_ = true;
+  statistics.raysTraced = traced;
+  statistics.rayLayers = int(capturedLayers_);
+  statistics.rayCaptureMs =
+      recapture ? std::chrono::duration<double, std::milli>(captured - start).count() : 0.0;
+  statistics.rayTraceMs = std::chrono::duration<double, std::milli>(tracedAt - captured).count();
+  statistics.raysMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ++statistics.rayFrames;
+  if (recapture) ++statistics.rayCaptures;
+}
+
+void RayMethod::capture(SoGLRenderAction* action, const GroupContents& contents,
+                        GroupShading& shading, const ChildrenRenderer& renderChildren,
+                        bool inPath, DeepShadowStatistics& statistics) {
+  SoState* state = action->getState();
+  const SbViewportRegion& region = SoViewportRegionElement::get(state);
+  const SbVec2s origin = region.getViewportOriginPixels();
+  const SbVec2s size = region.getViewportSizePixels();
+  RayShadowPass& rays = *pass_;
   std::vector<SurfaceLayer>& layers = surfaces_;
   std::size_t layerCount = 0;
   state->push();
@@ -92,30 +134,7 @@ void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
   // trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 
-  const auto captured = std::chrono::steady_clock::now();
-  std::vector<RayLight> lights;
-  for (const MapState& map : maps) {
-    if (!map.rays) continue;
-    RayLight light;
-    for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
-    light.directional = map.kind == LightKind::Directional;
-    light.model = map.model;
-    lights.push_back(light);
-  }
-  const std::size_t traced = casters.scene() ? traceScreenShadows(*casters.scene(), layers,
-                                                                  layerCount, lights, visibility_)
-                                             : 0;
-  const auto tracedAt = std::chrono::steady_clock::now();
-  rays.upload(layers, int(layerCount), visibility_, visibility_.empty() ? 0 : int(lights.size()));
-  traced_ = key;
-  traceValid_ = true;
-  statistics.raysTraced = traced;
-  statistics.rayLayers = int(layerCount);
-  statistics.rayCaptureMs = std::chrono::duration<double, std::milli>(captured - start).count();
-  statistics.rayTraceMs = std::chrono::duration<double, std::milli>(tracedAt - captured).count();
-  statistics.raysMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  ++statistics.rayFrames;
+  capturedLayers_ = layerCount;
 }
 
 }  // namespace ivshadow

@@ -43,13 +43,15 @@ struct DeepShadowStatistics {
   int casterTriangles = 0;
   // The RAYS method (lights that trace shadow rays instead of keeping a map).
   double raysMs = 0.0;           // last trace: capture passes, tracing and upload, wall time
-  double rayCaptureMs = 0.0;     // ... of which the capture traversals and read-backs
+  double rayCaptureMs = 0.0;     // ... of which the capture traversals and read-backs (0 when
+                                 //     it traced the surfaces captured before: a moved light)
   double rayTraceMs = 0.0;       // ... the rays on the CPU
   int rayLayers = 0;             // surface layers captured in the last trace
   double bvhBuildMs = 0.0;       // last build of the casters' Embree scene
   std::uint64_t raysTraced = 0;  // last trace
   std::uint64_t bvhBytes = 0;    // what Embree holds for the casters
   int rayFrames = 0;             // frames that traced (others reused an unchanged trace)
+  int rayCaptures = 0;           // frames that captured the visible surfaces for their trace
   int bvhBuilds = 0;             // times the casters' Embree scene was built
   int bvhRefits = 0;             // times it was refitted instead (the same triangles moved)
 };
