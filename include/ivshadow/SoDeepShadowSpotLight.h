@@ -12,7 +12,8 @@
   A spot light with its own shadow fields: inside a SoTransparentShadowGroup it casts with
   these instead of the group's (docs/LIGHTS.md), as SoDeepShadowLight does for a point light.
   Outside a group it is a SoSpotLight. The fields mean what SoDeepShadowLight's of the same
-  names mean; the map is a cube map at the location, of which only the cone is lit.
+  names mean; the map is one perspective face over the cone (a cone wider than 60 degrees:
+  a cube map at the location, of which only the cone is lit).
 
   FILE FORMAT/DEFAULTS:
   \code
