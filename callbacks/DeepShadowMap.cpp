@@ -138,6 +138,9 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   // (exact: only the exponent changes), as the depth: the depth test then orders surfaces by
   // exactly the distances the peel compares, and two surfaces at one distance tie in both.
   glDepthFunc(GL_LESS);
+  // A SoDepthBuffer range above the group would clamp the written depths, and ties there
+  // would lose layers: the build's depths use the whole range.
+  glDepthRange(0.0, 1.0);
   const float depthScale = std::ldexp(1.0f, -std::ilogb(request.frame.farDepth) - 1);
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

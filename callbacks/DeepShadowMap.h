@@ -24,6 +24,7 @@ struct MapRequest {
 
 struct MapBuildResult {
   bool outOfMemory = false;  // GL_OUT_OF_MEMORY during the build: the map holds nothing
+  bool noProgram = false;    // the map program did not link (DeepShadowPass): nothing built
   // Layers stored per face: at most maxLayers, plus the closing layer (DeepShadowMap). A
   // one-face map (MapFrame) uses face 0 only.
   std::array<int, 6> layersUsed{};

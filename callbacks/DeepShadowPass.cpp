@@ -34,12 +34,6 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
     return nullptr;
   }
   std::unique_ptr<DeepShadowPass> pass(new DeepShadowPass);
-  pass->program_ = GlProgram::link(composeShader(glsl::kDsmBuildVert),
-                                   composeShader(glsl::kDsmBuildFrag), whyNot);
-  if (!pass->program_) {
-    whyNot = "the deep shadow map program failed: " + whyNot;
-    return nullptr;
-  }
   pass->maxTextureSize_ = textureSize;
   pass->textureUnits_ = units;
   pass->flags_ = createBuffer();
@@ -52,7 +46,24 @@ void DeepShadowPass::uploadCasters(const SceneTriangles& triangles) {
   casters_.upload(triangles);
 }
 
+bool DeepShadowPass::linkProgram() {
+  // Linked at the first map build, not with the pass: a group whose lights all trace (RAYS,
+  // the default on software renderers) never compiles it, which is a good part of a first
+  // frame on a machine without a shader cache.
+  if (program_ || !programError_.empty()) return bool(program_);
+  std::string why;
+  program_ =
+      GlProgram::link(composeShader(glsl::kDsmBuildVert), composeShader(glsl::kDsmBuildFrag), why);
+  if (!program_) programError_ = "the deep shadow map program failed: " + why;
+  return bool(program_);
+}
+
 MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
+  if (!linkProgram()) {
+    MapBuildResult none;
+    none.noProgram = true;
+    return none;
+  }
   if (int(maps_.size()) <= slot) maps_.resize(std::size_t(slot) + 1);
   auto& map = maps_[std::size_t(slot)];
   if (!map) map = std::make_unique<DeepShadowMap>();

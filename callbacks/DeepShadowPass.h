@@ -21,8 +21,8 @@ class DeepShadowPass {
  public:
   static constexpr int kMaxSlots = kMaxGlLights;  // one per GL light
 
-  // Checks what the current context offers and builds the program; null with the reason in
-  // `whyNot` when the context cannot run the pass.
+  // Checks what the current context offers; null with the reason in `whyNot` when the
+  // context cannot run the pass. The map program is linked at the first build.
   static std::unique_ptr<DeepShadowPass> create(std::string& whyNot);
 
   int maxTextureSize() const { return maxTextureSize_; }
@@ -34,8 +34,10 @@ class DeepShadowPass {
   int rayUnit(int i) const { return firstRayUnit(textureUnits_) + i; }
 
   void uploadCasters(const SceneTriangles& triangles);
-  // Builds slot `slot`'s map, saving and restoring the GL state it changes.
+  // Builds slot `slot`'s map, saving and restoring the GL state it changes. Where the map
+  // program does not link, nothing is built (MapBuildResult::noProgram, programError()).
   MapBuildResult build(int slot, const MapRequest& request);
+  const std::string& programError() const { return programError_; }
   std::uint64_t mapBytes(int slot) const;
   std::uint64_t mapPeakBytes(int slot) const;
   // Drops the maps of slots >= `count` (their lights are gone).
@@ -47,10 +49,12 @@ class DeepShadowPass {
 
  private:
   DeepShadowPass() = default;
+  bool linkProgram();
 
   int maxTextureSize_ = 0;
   int textureUnits_ = 0;  // GL_MAX_TEXTURE_IMAGE_UNITS
   GlProgram program_;
+  std::string programError_;  // why program_ did not link; empty before the first try
   GlBuffer flags_;
   CasterBuffers casters_;
   std::vector<std::unique_ptr<DeepShadowMap>> maps_;

@@ -75,6 +75,7 @@ GlStateScope::GlStateScope(unsigned int changes, const Textures& textures) : cha
   if (changes_ & kDepth) {
     depthFunc_ = glInteger(GL_DEPTH_FUNC);
     glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
+    glGetDoublev(GL_DEPTH_RANGE, depthRange_.data());
   }
   if (changes_ & kColourMask) glGetBooleanv(GL_COLOR_WRITEMASK, colourMask_.data());
   if (changes_ & kClipControl) {
@@ -117,6 +118,7 @@ GlStateScope::~GlStateScope() {
   if (changes_ & kDepth) {
     glDepthMask(depthMask_);
     glDepthFunc(GLenum(depthFunc_));
+    glDepthRange(depthRange_[0], depthRange_[1]);
   }
   if (changes_ & kBlendFunction) {
     glBlendFuncSeparate(GLenum(blendFunc_[0]), GLenum(blendFunc_[1]), GLenum(blendFunc_[2]),

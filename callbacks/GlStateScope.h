@@ -22,7 +22,7 @@ class IVSHADOW_INTERNAL GlStateScope {
     kVertexArray = 1u << 3,
     kStorageBuffers = 1u << 4,  // generic and indexed (0, 1) shader storage bindings
     kBlendFunction = 1u << 5,   // blend functions and equations
-    kDepth = 1u << 6,           // depth function and write mask
+    kDepth = 1u << 6,           // depth function, write mask and range
     kColourMask = 1u << 7,
     kClipControl = 1u << 8,
     // Blending, depth test, culling and every other per-fragment or clipping switch Coin may
@@ -63,6 +63,7 @@ class IVSHADOW_INTERNAL GlStateScope {
   int activeTexture_ = 0;
   int depthFunc_ = 0;
   unsigned char depthMask_ = 1;
+  std::array<double, 2> depthRange_{0.0, 1.0};
   std::array<unsigned char, 4> colourMask_{};
   std::array<int, 4> blendFunc_{};
   std::array<int, 2> blendEquation_{};

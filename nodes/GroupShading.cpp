@@ -56,20 +56,10 @@ void GroupShading::syncTexGen(SoState* state) {
 
 void GroupShading::syncTexGen(SoState* state, bool generated) {
   // The common case, no function and no program told of one, costs no GL call.
-  if (!generated && texGen_.empty()) return;
-  // A SoShadowStyle that switched shading off leaves the fixed-function pipeline, which
-  // applies the functions itself.
-  const UniformLocations* program = programs_.current(state);
-  if (program == nullptr) return;
-  const TexGenModes modes = generated ? currentTexGenModes() : TexGenModes{};
-  const auto told = texGen_.find(program);
-  const TexGenModes before = told == texGen_.end() ? TexGenModes{} : told->second;
-  if (modes == before) return;
-  setTexGenModes(*program, modes);
-  if (modes == TexGenModes{})
-    texGen_.erase(program);
-  else
-    texGen_[program] = modes;
+  if (!generated && !programs_.anyTexGen(state)) return;
+  // Every variant, not only the one bound: a SoShadowStyle switches the program off and on
+  // again without a bind, and a variant bound later must not draw with old modes.
+  programs_.sendTexGen(state, generated ? currentTexGenModes() : TexGenModes{});
 }
 
 SbMatrix GroupShading::findLocalToEye(SoState* state) const {

@@ -1,12 +1,9 @@
 #pragma once
 
 #include "callbacks/ShadingUniforms.h"
-#include "callbacks/TexGenModes.h"
 #include "nodes/ShadingProgram.h"
 
 #include <Inventor/SbMatrix.h>
-
-#include <map>
 
 class SoGLRenderAction;
 class SoState;
@@ -55,9 +52,7 @@ class GroupShading {
   ShadingProgram programs_;
   ShadingUniforms uniforms_;
   const UniformLocations* camera_ = nullptr;  // the camera pass, bound by begin()
-  // The uTexGen each program was given last; programs not in it hold 0 (GL's initial value).
-  std::map<const UniformLocations*, TexGenModes> texGen_;
-  int outsideLights_ = 0;  // GL lights on before the group
+  int outsideLights_ = 0;                     // GL lights on before the group
   SbMatrix localToEye_;
 };
 

@@ -7,9 +7,8 @@
 #include "nodes/MapState.h"
 
 #include <Inventor/SbBox3f.h>
+#include <Inventor/SbMatrix.h>
 #include <Inventor/SbViewVolume.h>
-#include <Inventor/elements/SoModelMatrixElement.h>
-#include <Inventor/elements/SoViewVolumeElement.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/nodes/SoNode.h>
 
@@ -23,15 +22,19 @@
 namespace ivshadow {
 namespace {
 
-// Distance from `point` to the box (0 inside) and to its farthest corner.
-void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, float& farthest) {
+// Distance from `point` to the box (0 inside), the largest of its distances along the axes
+// (the nearest a cube face's axial depth can be) and the distance to its farthest corner.
+void distanceRange(const SbBox3f& box, const SbVec3f& point, float& nearest, float& nearestAxial,
+                   float& farthest) {
   const SbVec3f& low = box.getMin();
   const SbVec3f& high = box.getMax();
   float inside = 0.0f, outside = 0.0f;
+  nearestAxial = 0.0f;
   for (int i = 0; i < 3; ++i) {
     const float below = std::max(low[i] - point[i], 0.0f);
     const float above = std::max(point[i] - high[i], 0.0f);
     inside += (below + above) * (below + above);
+    nearestAxial = std::max(nearestAxial, below + above);
     const float corner = std::max(std::fabs(point[i] - low[i]), std::fabs(point[i] - high[i]));
     outside += corner * corner;
   }
@@ -119,12 +122,10 @@ void fitDirectional(MapState& map, const SbBox3f& casterBounds, const ViewCorner
 
 }  // namespace
 
-ViewCorners viewCorners(SoState* state) {
-  // The view volume is in world coordinates; the casters are in the group's.
-  const SbViewVolume& volume = SoViewVolumeElement::get(state);
+ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld) {
   SbMatrix affine, projection;
   volume.getMatrices(affine, projection);
-  const SbMatrix groupToClip = SoModelMatrixElement::get(state) * affine * projection;
+  const SbMatrix groupToClip = groupToWorld * affine * projection;
   const SbMatrix clipToGroup = groupToClip.inverse();
   ViewCorners corners;
   for (int i = 0; i < 8; ++i) {
@@ -139,11 +140,15 @@ void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& 
     fitDirectional(map, casterBounds, view);
     return;
   }
-  float nearest = 0.0f, farthest = 1.0f;
-  if (!casterBounds.isEmpty()) distanceRange(casterBounds, map.position, nearest, farthest);
+  float nearest = 0.0f, nearestAxial = 0.0f, farthest = 1.0f;
+  if (!casterBounds.isEmpty())
+    distanceRange(casterBounds, map.position, nearest, nearestAxial, farthest);
   const bool oneFace = map.kind == LightKind::Spot && map.cutOffAngle <= kMaxSpotFaceHalfAngle;
-  // A point in the cone lies at least cos(cutOffAngle) of its distance along the axis.
-  if (oneFace) nearest *= std::cos(map.cutOffAngle);
+  // The near plane clips by depth along the face's axis. A point in a spot light's cone lies
+  // at least cos(cutOffAngle) of its distance along the axis; a cube face's depth of a point
+  // is its largest coordinate from the light, which over the box is at least the largest gap
+  // along an axis (a box corner seen diagonally lies 1/sqrt(3) of its distance along each).
+  nearest = oneFace ? nearest * std::cos(map.cutOffAngle) : nearestAxial;
   // The map must reach past the farthest caster; the near plane may not cut off any of
   // them, and reversed floating-point depth keeps a 1e5 ratio precise.
   const float far = farthest > 0.0f ? farthest * 1.01f : 1.0f;
@@ -211,6 +216,19 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     request.resolution /= 2;
   const int fitted = request.resolution;
   MapBuildResult built = pass.build(slot, request);
+  if (built.noProgram) {
+    // Once per process: the program is the same for every light and group.
+    static bool warned = false;
+    if (!warned)
+      SoDebugError::postWarning("SoTransparentShadowGroup",
+                                "%s; lights with method MAP light "
+                                "without a shadow",
+                                pass.programError().c_str());
+    warned = true;
+    map.faceLayers = {};
+    light.resolution = 0;
+    return;
+  }
   while (built.outOfMemory && request.resolution > 1) {
     request.resolution /= 2;
     built = pass.build(slot, request);

@@ -7,7 +7,8 @@
 
 class SbBox3f;
 class SoNode;
-class SoState;
+class SbMatrix;
+class SbViewVolume;
 
 namespace ivshadow {
 
@@ -18,10 +19,10 @@ struct MapState;
 // The MAP method of one light slot (seeds/000 §5): the map's depth range, fitted to the casters
 // unless the light sets it, then the map itself.
 
-// The corners of what the camera can show (its view volume), in the coordinates of the
-// group being traversed in `state`.
+// The corners of what the camera can show: `volume` (in world coordinates) in the group's
+// coordinates, `groupToWorld` mapping those to world coordinates.
 using ViewCorners = std::array<SbVec3f, 8>;
-ViewCorners viewCorners(SoState* state);
+ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld);
 
 // Sets the map's frame (MapFrame) and depth range for its light: a point light's cube, a
 // spot light's one perspective face over its cone (a cone wider than kMaxSpotFaceHalfAngle:

@@ -89,24 +89,43 @@ const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVa
   // this program's uniforms with them, at the next shape.
   SoGLLazyElement::getInstance(action->getState())
       ->reset(action->getState(), SoLazyElement::LIGHT_MODEL_MASK | SoLazyElement::TWOSIDE_MASK);
-  auto* perContext = locations_.get(SoGLCacheContextElement::get(action->getState()), [] {
-    return std::make_unique<std::array<UniformLocations, kShadingVariants>>();
-  });
-  UniformLocations& locations = (*perContext)[std::size_t(variant)];
-  // Coin links a variant once per context; a new name means it linked it anew.
-  if (locations.program() != program) locations = UniformLocations(program);
+  Linked& context = linked(action->getState());
+  UniformLocations& locations = context.locations[std::size_t(variant)];
+  // Coin links a variant once per context; a new name means it linked it anew, with every
+  // uniform at 0.
+  if (locations.program() != program) {
+    locations = UniformLocations(program);
+    context.texGen[std::size_t(variant)] = TexGenModes{};
+  }
   return &locations;
+}
+
+ShadingProgram::Linked& ShadingProgram::linked(SoState* state) {
+  return *linked_.get(SoGLCacheContextElement::get(state),
+                      [] { return std::make_unique<Linked>(); });
 }
 
 const UniformLocations* ShadingProgram::current(SoState* state) {
   const unsigned int program = currentProgram();
   if (program == 0) return nullptr;
-  auto* perContext = locations_.get(SoGLCacheContextElement::get(state), [] {
-    return std::make_unique<std::array<UniformLocations, kShadingVariants>>();
-  });
-  for (const UniformLocations& locations : *perContext)
+  for (const UniformLocations& locations : linked(state).locations)
     if (locations.program() == program) return &locations;
   return nullptr;
+}
+
+void ShadingProgram::sendTexGen(SoState* state, const TexGenModes& modes) {
+  Linked& context = linked(state);
+  for (std::size_t i = 0; i < context.locations.size(); ++i) {
+    if (context.locations[i].program() == 0 || context.texGen[i] == modes) continue;
+    setTexGenModes(context.locations[i], modes);
+    context.texGen[i] = modes;
+  }
+}
+
+bool ShadingProgram::anyTexGen(SoState* state) {
+  for (const TexGenModes& modes : linked(state).texGen)
+    if (modes != TexGenModes{}) return true;
+  return false;
 }
 
 }  // namespace ivshadow

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "callbacks/TexGenModes.h"
 #include "callbacks/UniformLocations.h"
 #include "nodes/PerContext.h"
 #include "scene/CoinRef.h"
@@ -44,12 +45,23 @@ class ShadingProgram {
   // The variant GL has current in the state's context, or null when the current program is
   // none of them (a SoShadowStyle switched shading off, or a program of someone else's).
   const UniformLocations* current(SoState* state);
+  // Sets uTexGen on every variant linked in the state's context (no binding needed), each
+  // only when it holds other modes; a variant linked anew starts from 0.
+  void sendTexGen(SoState* state, const TexGenModes& modes);
+  // Whether a variant in the state's context holds modes other than 0.
+  bool anyTexGen(SoState* state);
 
  private:
   SoShaderProgram* node(ShadingVariant variant);
 
   std::array<CoinRef<SoShaderProgram>, kShadingVariants> nodes_;
-  PerContext<std::array<UniformLocations, kShadingVariants>> locations_;
+  struct Linked {
+    std::array<UniformLocations, kShadingVariants> locations;
+    std::array<TexGenModes, kShadingVariants> texGen{};  // uTexGen as last sent
+  };
+  Linked& linked(SoState* state);
+
+  PerContext<Linked> linked_;
 };
 
 }  // namespace ivshadow

@@ -3,6 +3,7 @@
 #include "nodes/GroupShading.h"
 #include "nodes/ShadowGroupElement.h"
 
+#include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/misc/SoState.h>
 
 namespace ivshadow {
@@ -39,6 +40,11 @@ void TexGenWatchElement::setElt(const int unit, SoTexCoordTexgenCB* func, void* 
   inherited::setElt(unit, func, data);
   if (unit != 0) return;
   generated_ = func != nullptr;
+  // A render cache below a group would replay the function's GL state without this element
+  // seeing it, and the programs would keep the modes of before: no cache records one.
+  if (state_ != nullptr && state_->isElementEnabled(ShadowGroupElement::getClassStackIndex()) &&
+      ShadowGroupElement::shading(state_) != nullptr)
+    SoCacheElement::invalidate(state_);
   changed(state_, generated_);
 }
 

@@ -16,6 +16,7 @@
 #include "nodes/TransparencyOverride.h"
 
 #include <Inventor/SoPath.h>
+#include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetMatrixAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
@@ -28,9 +29,11 @@
 #include <Inventor/elements/SoModelMatrixElement.h>
 #include <Inventor/elements/SoProjectionMatrixElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
+#include <Inventor/elements/SoViewVolumeElement.h>
 #include <Inventor/elements/SoViewingMatrixElement.h>
 #include <Inventor/elements/SoViewportRegionElement.h>
 #include <Inventor/errors/SoDebugError.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
@@ -90,7 +93,7 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
     if (!(map.settings.nearRadius < map.settings.farRadius) && map.settings.farRadius > 0.0f)
       map.settings.nearRadius = map.settings.farRadius = -1.0f;
   }
-  fitMapFrame(map, casters.bounds, viewCorners(action->getState()));
+  fitMapFrame(map, casters.bounds, view(action));
   int method = map.settings.method;
   if (method == SoDeepShadowLight::AUTO_METHOD) {
     method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
@@ -111,7 +114,14 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
   light.name = entry.light->getName().getString();
   light.coloured = map.coloured;
   light.method = methodName(method);
-  if (!map.rays) buildSlotMap(pass, int(slot), map, light, *entry.light, memoryBudget);
+  if (map.rays) return;
+  // The casters go to GL memory for a map only: a group whose lights all trace keeps them in
+  // Embree alone.
+  if (context.castersVersion != contents_.castersVersion()) {
+    pass.uploadCasters(casters);
+    context.castersVersion = contents_.castersVersion();
+  }
+  buildSlotMap(pass, int(slot), map, light, *entry.light, memoryBudget);
 }
 
 void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& context) {
@@ -138,13 +148,31 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.mapsVersion = contents_.mapsVersion();
 }
 
+ViewCorners TransparentShadowGroupImpl::view(SoGLRenderAction* action) const {
+  SoState* state = action->getState();
+  if (!contents_.cameraPath())
+    return viewCorners(SoViewVolumeElement::get(state), SoModelMatrixElement::get(state));
+  // The camera's view volume in the coordinates of its path's head, the group.
+  SbViewVolume volume = SoViewVolumeElement::get(state);
+  SoCallbackAction camera(action->getViewportRegion());
+  camera.addPostCallback(
+      SoCamera::getClassTypeId(),
+      [](void* data, SoCallbackAction* a, const SoNode*) {
+        *static_cast<SbViewVolume*>(data) = a->getViewVolume();
+        return SoCallbackAction::CONTINUE;
+      },
+      &volume);
+  camera.apply(contents_.cameraPath());
+  return viewCorners(volume, SbMatrix::identity());
+}
+
 void TransparentShadowGroupImpl::refitToView(SoGLRenderAction* action, Context& context) {
-  const ViewCorners view = viewCorners(action->getState());
+  const ViewCorners corners = view(action);
   const auto start = std::chrono::steady_clock::now();
   bool rebuilt = false;
   for (std::size_t slot = 0; slot < context.maps.size(); ++slot) {
     const MapState& map = context.maps[slot];
-    if (map.rays || mapServesView(map, contents_.casters().bounds, view)) continue;
+    if (map.rays || mapServesView(map, contents_.casters().bounds, corners)) continue;
     if (!rebuilt) context.buildTimer.start();
     buildSlot(action, context, slot, mapMemoryBudget(context.softwareRenderer));
     rebuilt = true;
@@ -225,11 +253,6 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   SoCacheElement::invalidate(state);
 
   contents_.update(action);
-  const SceneTriangles& casters = contents_.casters();
-  if (context.castersVersion != contents_.castersVersion()) {
-    context.pass->uploadCasters(casters);
-    context.castersVersion = contents_.castersVersion();
-  }
   if (context.mapsVersion != contents_.mapsVersion())
     buildMaps(action, context);
   else
@@ -241,6 +264,9 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     state->pop();
     return false;
   }
+  // From here on, the RAYS captures included, texture coordinate functions below reach this
+  // shading (TexGenWatchElement).
+  ShadowGroupElement::setShading(state, &shading_);
   const SbMatrix& toEye = shading_.localToEye();
   uniforms->mapCount = int(std::min(contents_.lights().size(), context.maps.size()));
   int rayCount = 0;
@@ -290,7 +316,6 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     // A peeling separator below shades its layers with this group's program and maps.
     ShadowGroupElement::setActiveGroup(state, &shading_);
-    ShadowGroupElement::setShading(state, &shading_);
     // A shadow style above the group that does not receive: its shapes are drawn as a
     // SoShadowStyle inside would draw them (shading off), until a style below turns it on.
     if (!(SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED))

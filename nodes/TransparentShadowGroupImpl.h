@@ -9,6 +9,7 @@
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
 #include "nodes/MapState.h"
+#include "nodes/MapMethod.h"
 #include "nodes/PerContext.h"
 #include "nodes/RayCasters.h"
 
@@ -77,6 +78,9 @@ class TransparentShadowGroupImpl {
   // Fits and builds slot `slot`'s map (or resolves it to RAYS), filling its statistics.
   void buildSlot(SoGLRenderAction* action, Context& context, std::size_t slot,
                  std::uint64_t memoryBudget);
+  // What the camera can show, in the group's coordinates: the camera above the group's, or
+  // the one inside it (which is traversed after the maps are built).
+  ViewCorners view(SoGLRenderAction* action) const;
   // Rebuilds the maps of directional lights that no longer serve the view (mapServesView).
   void refitToView(SoGLRenderAction* action, Context& context);
   // Draws the children in the shading pass: peeled, or as Coin blends them.

@@ -49,7 +49,10 @@ void main() {
   // previous layer's (a cone's base on a cylinder's top) is the next layer when its triangle
   // comes later, instead of being lost to the tie. Among the rest, the depth test keeps the
   // nearest, and of equally near ones the first drawn, which is the lowest numbered.
-  float triangle = float(uFirstTriangle + gl_PrimitiveID);
+  // Stored as the bits of a positive normal float (the smallest exponent's bit added): such
+  // floats compare as their bits do, exactly for any count of triangles, and none is a
+  // denormal that could be flushed to zero.
+  float triangle = intBitsToFloat((uFirstTriangle + gl_PrimitiveID) + 0x00800000);
   vec4 previous = texelFetch(uPreviousVisibility, texel, 0);
   float previousDepth = texelFetch(uPreviousDepth, texel, 0).r;
   if (depth < previousDepth || (depth == previousDepth && triangle <= previous.a)) discard;

@@ -346,6 +346,35 @@ TEST(LightTypesMap, DirectionalMapFollowsTheCameraToCastersItDidNotCover) {
   root->unref();
 }
 
+// The file's own camera inside the group (as when a file is wrapped in a group unchanged),
+// looking at the second floor 30 units along x: the directional map is fitted to that camera,
+// traversed after the maps are built, not to the view volume in force where the group
+// begins (here Coin's default, a 2-unit box at the origin, which shows no caster of that floor).
+TEST(LightTypesMap, DirectionalMapFollowsACameraInsideTheGroup) {
+  std::string text =
+      sceneWith("DirectionalLight { direction 1 0 -1 }", "method MAP", 0.3,
+                "Translation { translation 30 0 0 }"
+                " Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }"
+                " Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }"
+                " QuadMesh { verticesPerRow 2 verticesPerColumn 2 }"
+                " Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor 1 0 0"
+                " transparency 0.5 }"
+                " Coordinate3 { point [ -0.3 -0.3 0.5, 0.3 -0.3 0.5, 0.3 0.3 0.5, -0.3 0.3 0.5 ] }"
+                " FaceSet { numVertices 4 }");
+  const std::string camera =
+      "OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }";
+  const std::size_t at = text.find(camera);
+  ASSERT_NE(at, std::string::npos);
+  text.erase(at, camera.size());
+  // After the group's fields, before its first child.
+  text.insert(text.find("DirectionalLight {"),
+              "OrthographicCamera { position 30 0 5 nearDistance 1 farDistance 10 height 2.4 } ");
+  const Image image = renderIv(text, ShadowScene::kSize);
+  const std::string failure =
+      compareWithExpectation(image, pictureOf(0.3, {obliqueLight(0.3, 1.0, 1.0)}), kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
 // Lights that cannot cast light without a shadow, with one warning naming them; the picture is
 // still drawn (the floor fully lit by the other light).
 TEST(LightTypesBadInput, SpotBeyondAHemisphereAndZeroDirectionLightWithoutAShadow) {

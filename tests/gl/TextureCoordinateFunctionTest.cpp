@@ -4,9 +4,12 @@
 // which compute the coordinates themselves (nodes/TexGenWatchElement.h). The answers here
 // are plain Coin's fixed-function pictures of the same shapes without a group (Coin's and
 // Mesa's code, none of the plugin's), and for the plane an analytic one.
+#include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "ivshadow/IvShadowInit.h"
 #include "tests/gl/ShadowScene.h"
+
+#include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
 
@@ -105,6 +108,33 @@ TEST(TextureCoordinateFunction, AFunctionEndsWithItsSeparator) {
 TEST(TextureCoordinateFunction, PeeledTransparentShapesUseTheFunctionToo) {
   expectSameAsPlainCoin(kTexture + "    Material { diffuseColor 1 1 1 transparency 0.5 }\n" +
                         kPlane + kQuad);
+}
+
+// A SoShadowStyle that does not receive switches the group's program off where the function
+// is set, and the next one switches it on again for the shape, without a bind.
+TEST(TextureCoordinateFunction, AShadowStyleBetweenTheFunctionAndTheShapeKeepsIt) {
+  expectSameAsPlainCoin(kTexture + "    ShadowStyle { style CASTS_SHADOW }\n" + kPlane +
+                        "    ShadowStyle { style CASTS_SHADOW_AND_SHADOWED }\n" + kQuad);
+}
+
+// Frames after the first, render caching on inside the group: the sixth frame is still plain
+// Coin's. (Measured: here Coin does not replay that separator's cache even without the
+// element's invalidation, since the group's passes change the state it depends on; the
+// invalidation in TexGenWatchElement::setElt is for caches that would replay.)
+TEST(TextureCoordinateFunction, RenderCachesInsideTheGroupKeepTheFunction) {
+  const std::string body =
+      kTexture + "    Separator { renderCaching ON\n" + kPlane + kQuad + "    }\n";
+  const Image plain = renderIv(sceneWith("Separator {", body), kSize);
+  init();
+  SoSeparator* root = readIv(sceneWith(kWrappers[0], body));
+  std::string error;
+  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  for (int frame = 0; frame < 6; ++frame) renderer->render(root);
+  const ImageComparison c =
+      ImageComparison::compare(renderer->read(), plain, "sixth frame", "plain Coin");
+  EXPECT_LE(c.all.shareAbove2, 0.005) << "largest error " << c.all.maxError;
+  root->unref();
 }
 
 }  // namespace
