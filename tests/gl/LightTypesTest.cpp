@@ -375,6 +375,53 @@ TEST(LightTypesMap, DirectionalMapFollowsACameraInsideTheGroup) {
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
+// A point light beside the corner of the casters' box: (1.3, 1.3, 0.8) against the box
+// [-1, 1]^2 x [0, 0.5], 0.52 from it but only 0.3 from it along each axis. A red glass fills
+// that corner (x, y in [0.6, 1] at height 0.5). A cube face clips by depth along its axis,
+// so the map's near plane must be below 0.3; at 0.99 of the distance (0.51) the part of the
+// glass within 0.51 along every axis (x, y above 0.79) was cut out of the map and its shadow
+// (on the floor for x, y above -0.07) was missing. The shadow: the glass scaled by 0.8 / 0.3
+// about the light's foot, x, y in [-0.567, 0.5].
+TEST(LightTypesMap, APointLightBesideTheCastersCornerKeepsTheCornerInItsMap) {
+  const std::string text =
+      "#Inventor V2.1 ascii\nSeparator {\n"
+      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+      "  TransparentShadowGroup { method MAP\n"
+      "    PointLight { location 1.3 1.3 0.8 }\n"
+      "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
+      "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"
+      "    QuadMesh { verticesPerRow 2 verticesPerColumn 2 }\n"
+      "    Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor 1 0 0"
+      " transparency 0.5 }\n"
+      "    Coordinate3 { point [ 0.6 0.6 0.5, 1 0.6 0.5, 1 1 0.5, 0.6 1 0.5 ] }\n"
+      "    FaceSet { numVertices 4 }\n  }\n}\n";
+  const Image image = renderIv(text, ShadowScene::kSize);
+  const auto expected = [](int px, int py) {
+    const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
+    Expectation e;
+    const double extent = std::max(std::abs(x), std::abs(y));
+    if (extent >= 1.0 + kMargin) {
+      e.checked = true;  // the black background
+      return e;
+    }
+    if (extent > 1.0 - kMargin) return e;
+    // The glass seen from the camera, and the shadow's edges.
+    if (std::min(x, y) > 0.6 - kMargin) return e;
+    const double low = 1.3 - 0.7 * 0.8 / 0.3, high = 1.3 - 0.3 * 0.8 / 0.3;
+    const bool xIn = x > low && x<high, yIn = y> low && y < high;
+    if ((std::abs(x - low) < kMargin || std::abs(x - high) < kMargin) && yIn) return e;
+    if ((std::abs(y - low) < kMargin || std::abs(y - high) < kMargin) && xIn) return e;
+    const double dx = x - 1.3, dy = y - 1.3;
+    const double term = 255.0 * 0.8 / std::sqrt(dx * dx + dy * dy + 0.64);  // Lambert
+    e.checked = true;
+    for (int c = 0; c < 3; ++c)
+      e.rgb[std::size_t(c)] = term * (xIn && yIn ? kRedShadow[std::size_t(c)] : 1.0);
+    return e;
+  };
+  const std::string failure = compareWithExpectation(image, expected, kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
 // Lights that cannot cast light without a shadow, with one warning naming them; the picture is
 // still drawn (the floor fully lit by the other light).
 TEST(LightTypesBadInput, SpotBeyondAHemisphereAndZeroDirectionLightWithoutAShadow) {
