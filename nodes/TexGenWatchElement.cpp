@@ -28,7 +28,10 @@ void TexGenWatchElement::init(SoState* state) {
 void TexGenWatchElement::push(SoState* state) {
   inherited::push(state);
   state_ = state;
-  generated_ = static_cast<const TexGenWatchElement*>(getNextInStack())->generated_;
+  // The element below may be Coin's own, in a state made before this one was registered.
+  const SoElement* below = getNextInStack();
+  generated_ = below->getTypeId().isDerivedFrom(getClassTypeId()) &&
+               static_cast<const TexGenWatchElement*>(below)->generated_;
 }
 
 void TexGenWatchElement::pop(SoState* state, const SoElement* prevTopElement) {

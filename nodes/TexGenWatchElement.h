@@ -16,7 +16,8 @@ namespace ivshadow {
 // (set by a node, or restored when a separator pops), tells the shading drawing the shapes
 // below a group or a peeling separator (GroupShading::syncTexGen). Elsewhere it only reads
 // one element. Registered by ShadowGroupElement::initClass; a state made before that keeps
-// Coin's element.
+// Coin's element (Coin makes the elements of a stack's deeper levels as they are first
+// pushed, so such a state may hold both kinds in one stack).
 class IVSHADOW_INTERNAL TexGenWatchElement : public SoGLMultiTextureCoordinateElement {
   typedef SoGLMultiTextureCoordinateElement inherited;
   SO_ELEMENT_HEADER(TexGenWatchElement);
