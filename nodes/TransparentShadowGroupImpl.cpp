@@ -68,7 +68,8 @@ void TransparentShadowGroupImpl::changed(SoNotList* list) {
 }
 
 void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& context,
-                                           std::size_t slot, std::uint64_t memoryBudget) {
+                                           std::size_t slot, std::uint64_t memoryBudget,
+                                           std::optional<ViewCorners>& view) {
   DeepShadowPass& pass = *context.pass;
   const GroupContents::Light& entry = contents_.lights()[slot];
   const SceneTriangles& casters = contents_.casters();
@@ -93,7 +94,10 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
     if (!(map.settings.nearRadius < map.settings.farRadius) && map.settings.farRadius > 0.0f)
       map.settings.nearRadius = map.settings.farRadius = -1.0f;
   }
-  fitMapFrame(map, casters.bounds, view(action));
+  // Only a directional map is fitted to the view; with a camera inside the group, computing it
+  // is a traversal of the camera's path.
+  if (map.kind == LightKind::Directional && !view) view = this->view(action);
+  fitMapFrame(map, casters.bounds, view.value_or(ViewCorners{}));
   int method = map.settings.method;
   if (method == SoDeepShadowLight::AUTO_METHOD) {
     method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
@@ -131,8 +135,17 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   context.maps.assign(lights, MapState{});
   statistics_.lights.assign(lights, DeepShadowLightStatistics{});
   const std::uint64_t memoryBudget = mapMemoryBudget(context.softwareRenderer);
-  for (std::size_t slot = 0; slot < lights; ++slot) buildSlot(action, context, slot, memoryBudget);
+  std::optional<ViewCorners> view;
+  for (std::size_t slot = 0; slot < lights; ++slot)
+    buildSlot(action, context, slot, memoryBudget, view);
   context.pass->keepSlots(int(lights));
+  finishBuild(action, context, start);
+  statistics_.casterTriangles = int(contents_.casters().triangleCount());
+  context.mapsVersion = contents_.mapsVersion();
+}
+
+void TransparentShadowGroupImpl::finishBuild(SoGLRenderAction* action, Context& context,
+                                             std::chrono::steady_clock::time_point start) {
   // The build restored every GL state it changed; the lazy element is told anyway, since the
   // restored values are what GL holds and Coin must not skip sending its own.
   SoGLLazyElement::getInstance(action->getState())
@@ -144,8 +157,6 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   statistics_.gpuBuildMs = context.buildTimer.elapsedMs();
   statistics_.totalBuildMs += ms;
   ++statistics_.rebuilds;
-  statistics_.casterTriangles = int(contents_.casters().triangleCount());
-  context.mapsVersion = contents_.mapsVersion();
 }
 
 ViewCorners TransparentShadowGroupImpl::view(SoGLRenderAction* action) const {
@@ -167,26 +178,19 @@ ViewCorners TransparentShadowGroupImpl::view(SoGLRenderAction* action) const {
 }
 
 void TransparentShadowGroupImpl::refitToView(SoGLRenderAction* action, Context& context) {
-  const ViewCorners corners = view(action);
   const auto start = std::chrono::steady_clock::now();
+  std::optional<ViewCorners> view;
   bool rebuilt = false;
   for (std::size_t slot = 0; slot < context.maps.size(); ++slot) {
     const MapState& map = context.maps[slot];
-    if (map.rays || mapServesView(map, contents_.casters().bounds, corners)) continue;
+    if (map.rays || map.kind != LightKind::Directional) continue;
+    if (!view) view = this->view(action);
+    if (mapServesView(map, contents_.casters().bounds, *view)) continue;
     if (!rebuilt) context.buildTimer.start();
-    buildSlot(action, context, slot, mapMemoryBudget(context.softwareRenderer));
+    buildSlot(action, context, slot, mapMemoryBudget(context.softwareRenderer), view);
     rebuilt = true;
   }
-  if (!rebuilt) return;
-  SoGLLazyElement::getInstance(action->getState())
-      ->reset(action->getState(), SoLazyElement::ALL_MASK);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  statistics_.lastBuildMs = ms;
-  context.buildTimer.stop();
-  statistics_.gpuBuildMs = context.buildTimer.elapsedMs();
-  statistics_.totalBuildMs += ms;
-  ++statistics_.rebuilds;
+  if (rebuilt) finishBuild(action, context, start);
 }
 
 void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool inPath, bool peel,
@@ -291,7 +295,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
       uniforms->mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
     }
     uniforms->mapParams[slot * 4 + 2] = map.settings.bias;
-    uniforms->mapParams[slot * 4 + 3] = float(map.settings.filterRadius);
+    uniforms->mapParams[slot * 4 + 3] = float(map.settings.filterWidth);
     uniforms->mapColoured[slot] = map.coloured ? 1 : 0;
     uniforms->mapProjection[slot] = int(map.frame.projection);
     for (int i = 0; i < 16; ++i)

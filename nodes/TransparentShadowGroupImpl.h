@@ -8,8 +8,8 @@
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
-#include "nodes/MapState.h"
 #include "nodes/MapMethod.h"
+#include "nodes/MapState.h"
 #include "nodes/PerContext.h"
 #include "nodes/RayCasters.h"
 
@@ -17,9 +17,11 @@
 #include <Inventor/SbVec3f.h>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -76,8 +78,13 @@ class TransparentShadowGroupImpl {
 
   void buildMaps(SoGLRenderAction* action, Context& context);
   // Fits and builds slot `slot`'s map (or resolves it to RAYS), filling its statistics.
+  // `view` is the view of this build, computed by the first directional light that needs it.
   void buildSlot(SoGLRenderAction* action, Context& context, std::size_t slot,
-                 std::uint64_t memoryBudget);
+                 std::uint64_t memoryBudget, std::optional<ViewCorners>& view);
+  // The bookkeeping that ends every build, whole or a refit: Coin's lazy state, the timers
+  // and the statistics.
+  void finishBuild(SoGLRenderAction* action, Context& context,
+                   std::chrono::steady_clock::time_point start);
   // What the camera can show, in the group's coordinates: the camera above the group's, or
   // the one inside it (which is traversed after the maps are built).
   ViewCorners view(SoGLRenderAction* action) const;

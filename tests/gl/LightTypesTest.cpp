@@ -305,20 +305,26 @@ TEST(LightTypesMap, DirectionalMapIsTheCastersClippedToTheView) {
   root->unref();
 }
 
+// The directional scene of sceneWith, and a copy of its floor and glass 30 units along x: a
+// second floor that a map fitted to the first view does not cover.
+std::string twoFloorScene() {
+  return sceneWith(
+      "DirectionalLight { direction 1 0 -1 }", "method MAP", 0.3,
+      "Translation { translation 30 0 0 }"
+      " Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }"
+      " Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }"
+      " QuadMesh { verticesPerRow 2 verticesPerColumn 2 }"
+      " Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor 1 0 0"
+      " transparency 0.5 }"
+      " Coordinate3 { point [ -0.3 -0.3 0.5, 0.3 -0.3 0.5, 0.3 0.3 0.5, -0.3 0.3 0.5 ] }"
+      " FaceSet { numVertices 4 }");
+}
+
 // The camera moves from the first floor to a second one 30 units along x: the directional
 // light's map, fitted to the first view, does not cover the second, and is fitted again; the
 // second picture is the same analytic one. A third frame from the same place builds nothing.
 TEST(LightTypesMap, DirectionalMapFollowsTheCameraToCastersItDidNotCover) {
-  const std::string text =
-      sceneWith("DirectionalLight { direction 1 0 -1 }", "method MAP", 0.3,
-                "Translation { translation 30 0 0 }"
-                " Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }"
-                " Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }"
-                " QuadMesh { verticesPerRow 2 verticesPerColumn 2 }"
-                " Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor 1 0 0"
-                " transparency 0.5 }"
-                " Coordinate3 { point [ -0.3 -0.3 0.5, 0.3 -0.3 0.5, 0.3 0.3 0.5, -0.3 0.3 0.5 ] }"
-                " FaceSet { numVertices 4 }");
+  const std::string text = twoFloorScene();
   SoSeparator* root = readIv(text);
   std::string error;
   auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
@@ -351,16 +357,7 @@ TEST(LightTypesMap, DirectionalMapFollowsTheCameraToCastersItDidNotCover) {
 // traversed after the maps are built, not to the view volume in force where the group
 // begins (here Coin's default, a 2-unit box at the origin, which shows no caster of that floor).
 TEST(LightTypesMap, DirectionalMapFollowsACameraInsideTheGroup) {
-  std::string text =
-      sceneWith("DirectionalLight { direction 1 0 -1 }", "method MAP", 0.3,
-                "Translation { translation 30 0 0 }"
-                " Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }"
-                " Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }"
-                " QuadMesh { verticesPerRow 2 verticesPerColumn 2 }"
-                " Material { ambientColor 0 0 0 specularColor 0 0 0 diffuseColor 1 0 0"
-                " transparency 0.5 }"
-                " Coordinate3 { point [ -0.3 -0.3 0.5, 0.3 -0.3 0.5, 0.3 0.3 0.5, -0.3 0.3 0.5 ] }"
-                " FaceSet { numVertices 4 }");
+  std::string text = twoFloorScene();
   const std::string camera =
       "OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }";
   const std::size_t at = text.find(camera);
