@@ -5,5 +5,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 for scene in coloured_shadows peeled_glasses chapel; do
-  build/bin/ivshadow trade "iv_scenes/$scene.iv" -o "docs/trade/$scene" --size 400x300 --frames 5
+  build/bin/ivshadow trade "iv_scenes/$scene.iv" -o "docs/trade/$scene" --size 400x300 --frames 5 \
+    --precision float
 done

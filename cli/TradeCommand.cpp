@@ -103,7 +103,7 @@ int runTrade(const TradeOptions& options) {
         throw InputError("--layers " + std::to_string(l) + ": error: expected 1 .. " +
                          std::to_string(kMaxMapLayers));
     checkList(options.precisions, {"half", "float"}, "--precision");
-    checkList(options.filters, {"none", "pcf"}, "--filter");
+    checkList(options.filters, {"none", "bilinear", "pcf"}, "--filter");
     checkList(options.methods, {"map", "rays"}, "--method");
     const bool maps = std::count(options.methods.begin(), options.methods.end(), "map") > 0;
     const bool rays = std::count(options.methods.begin(), options.methods.end(), "rays") > 0;
@@ -142,7 +142,8 @@ int runTrade(const TradeOptions& options) {
         for (const std::string& precision : options.precisions)
           for (const std::string& filter : options.filters)
             settings.push_back(Setting{std::to_string(resolution) + " " + std::to_string(layers) +
-                                           "L " + precision + (filter == "pcf" ? " pcf" : ""),
+                                           "L " + precision +
+                                           (filter == "none" ? "" : " " + filter),
                                        false, resolution, layers, precision, filter});
     const int total = int(settings.size()) + 2;
     ProgressBar bar;
@@ -187,8 +188,10 @@ int runTrade(const TradeOptions& options) {
         light->maxLayers.setValue(setting.layers);
         light->precision.setValue(setting.precision == "half" ? SoDeepShadowLight::HALF
                                                               : SoDeepShadowLight::FLOAT);
-        light->filter.setValue(setting.filter == "pcf" ? SoDeepShadowLight::PCF
-                                                       : SoDeepShadowLight::NONE);
+        // bilinear: PCF over one texel; pcf: over filterSize's default, 3 x 3.
+        light->filter.setValue(setting.filter == "none" ? SoDeepShadowLight::NONE
+                                                        : SoDeepShadowLight::PCF);
+        light->filterSize.setValue(setting.filter == "bilinear" ? 1 : 3);
       }
       Row row;
       row.setting = setting;

@@ -12,7 +12,7 @@ struct TradeOptions {
   std::vector<int> resolutions{256, 512, 1024};
   std::vector<int> layers{1, 2, 4, 8};
   std::vector<std::string> precisions{"half", "float"};
-  std::vector<std::string> filters{"none", "pcf"};
+  std::vector<std::string> filters{"none", "bilinear", "pcf"};
   std::vector<std::string> methods{"map", "rays"};  // rays: one setting, exact
   int frames = 5;
 };

@@ -5,6 +5,7 @@
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/ShadowFields.h"
 
 #include <Inventor/errors/SoDebugError.h>
 
@@ -84,7 +85,7 @@ DeepShadowSettings resolveFields(Node& light, int maxTextureSize) {
       clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
   s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, kMaxMapLayers);
   readRadii(light, s);
-  s.bias = finiteOr(light, "bias", light.bias.getValue(), 1.0f);
+  s.bias = finiteOr(light, "bias", light.bias.getValue(), kDefaultMapBias);
   if (s.bias < 0.0f) {
     warnOnce(light, "bias", "is negative; using 0");
     s.bias = 0.0f;
@@ -93,12 +94,7 @@ DeepShadowSettings resolveFields(Node& light, int maxTextureSize) {
   s.colorModel = light.colorModel.getValue();
   s.halfPrecision = light.precision.getValue() == SoDeepShadowLight::HALF;
   if (light.filter.getValue() == SoDeepShadowLight::PCF) {
-    int size = clampInt(light, "filterSize", light.filterSize.getValue(), 1, 9);
-    if (size % 2 == 0) {
-      warnOnce(light, "filterSize", "is even; using " + std::to_string(size + 1));
-      ++size;
-    }
-    s.filterRadius = size / 2;
+    s.filterWidth = clampInt(light, "filterSize", light.filterSize.getValue(), 1, 9);
   }
   s.method = light.method.getValue();
   return s;

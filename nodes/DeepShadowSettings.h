@@ -21,7 +21,8 @@ struct DeepShadowSettings {
   int shadowColor = 0;  // SoDeepShadowLight::ShadowColor
   int colorModel = 0;   // SoDeepShadowLight::ColorModel
   bool halfPrecision = false;
-  int filterRadius = 0;  // 0 = nearest texel, r = (2r+1)^2 taps
+  // 0: the nearest texel; w: the mean over a w x w texel square (PCF, lighting.glsl)
+  int filterWidth = 0;
   int method = 0;        // SoDeepShadowLight::Method as set (AUTO not yet resolved)
 };
 

@@ -3,6 +3,14 @@
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/DeepShadowEnums.h"
 
+namespace ivshadow {
+// The map's depth offset towards the light, in texels at the receiver, beyond the receiver's
+// own plane (lighting.glsl). The lookup compares the stored surfaces with that plane, so the
+// offset covers only float rounding; a tenth of a texel was the most accurate on the bundled
+// scenes (docs/TRADEOFF.md, "Bias"), and light can leak only where a caster lies that close.
+constexpr float kDefaultMapBias = 0.1f;
+}  // namespace ivshadow
+
 // The shadow fields that SoDeepShadowLight, SoDeepShadowSpotLight, SoDeepShadowDirectionalLight
 // and SoTransparentShadowGroup share, with SoDeepShadowLight's defaults and enum types, added
 // in a node's constructor after SO_NODE_CONSTRUCTOR. A macro, because Coin's
@@ -12,7 +20,7 @@
     SO_NODE_ADD_FIELD(method, (SoDeepShadowLight::AUTO_METHOD));                   \
     SO_NODE_ADD_FIELD(resolution, (512));                                          \
     SO_NODE_ADD_FIELD(maxLayers, (4));                                             \
-    SO_NODE_ADD_FIELD(bias, (1.0f));                                               \
+    SO_NODE_ADD_FIELD(bias, (ivshadow::kDefaultMapBias));                           \
     SO_NODE_ADD_FIELD(shadowColor, (SoDeepShadowLight::AUTO));                     \
     SO_NODE_ADD_FIELD(colorModel, (SoDeepShadowLight::SATURATE));                  \
     SO_NODE_ADD_FIELD(precision, (SoDeepShadowLight::FLOAT));                      \

@@ -69,8 +69,8 @@ const std::vector<FieldSpec>& lightFields() {
       {kMap, "maxLayers", {1, kMaxMapLayers, 1, 0}},
       {kMap, "precision", {}},
       {kMap, "filter", {}},
-      {kMap, "filterSize", {1, 9, 2, 0}},
-      {kMap, "bias", {0.0, 100.0, 0.25, 2}},
+      {kMap, "filterSize", {1, 9, 1, 0}},
+      {kMap, "bias", {0.0, 100.0, 0.05, 2}},
   };
   return fields;
 }

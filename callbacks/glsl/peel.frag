@@ -61,6 +61,7 @@ void peel(vec4 texel, float alpha) {
 }
 
 void main() {
+  beginShading();
   vec4 texel = coin_texunit0_model != kTextureNone ? texture(textureMap0, gl_TexCoord[0].st)
                                                    : vec4(1.0);
   // The opacity alone decides what a peel pass does; most fragments need no shading.

@@ -10,6 +10,7 @@ layout(std430, binding = IVSHADOW_PEEL_PROGRESS_BINDING) buffer PeelProgress {
 #endif
 
 void main() {
+  beginShading();
   vec4 texel = coin_texunit0_model != kTextureNone ? texture(textureMap0, gl_TexCoord[0].st)
                                                    : vec4(1.0);
   vec4 colour = shade(texel);

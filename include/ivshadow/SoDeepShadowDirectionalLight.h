@@ -22,15 +22,15 @@
         intensity 1
         color 1 1 1
         direction 0 0 -1
-        method AUTO
-        resolution 512
-        maxLayers 4
-        bias 1
-        shadowColor AUTO     # AUTO, MONOCHROME or COLORED (SoDeepShadowLight::ShadowColor)
-        colorModel SATURATE  # SATURATE or POWER (SoDeepShadowLight::ColorModel)
-        precision FLOAT
-        filter NONE
-        filterSize 3
+        method AUTO          # AUTO, MAP (deep shadow map) or RAYS (exact, Embree on the CPU)
+        resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
+        maxLayers 4          # peeled layers per face, 1 .. 64
+        bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
+        shadowColor AUTO     # AUTO, MONOCHROME or COLORED
+        colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
+        precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
+        filter NONE          # NONE (the nearest texel) or PCF
+        filterSize 3         # PCF: the mean over filterSize x filterSize texels, 1 .. 9
     }
   \endcode
 */

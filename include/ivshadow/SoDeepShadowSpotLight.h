@@ -25,17 +25,17 @@
         direction 0 0 -1
         dropOffRate 0
         cutOffAngle 0.785398
-        resolution 512
-        maxLayers 4
-        nearRadius -1
-        farRadius -1
-        bias 1
-        shadowColor AUTO
-        colorModel SATURATE
-        precision FLOAT
-        filter NONE
-        filterSize 3
-        method AUTO
+        method AUTO          # AUTO, MAP (deep shadow map) or RAYS (exact, Embree on the CPU)
+        resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
+        maxLayers 4          # peeled layers per face, 1 .. 64
+        bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
+        shadowColor AUTO     # AUTO, MONOCHROME or COLORED
+        colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
+        precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
+        filter NONE          # NONE (the nearest texel) or PCF
+        filterSize 3         # PCF: the mean over filterSize x filterSize texels, 1 .. 9
+        nearRadius -1        # distances from the light covered by the map; -1 fits them
+        farRadius -1         #   to the bounding box of the group's shadow casters
     }
   \endcode
 */

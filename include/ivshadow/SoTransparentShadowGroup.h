@@ -24,12 +24,12 @@ struct PeelStatistics;
   with its own shadow fields; an ordinary SoPointLight, SoSpotLight or SoDirectionalLight
   (Coin's SoShadowSpotLight and SoShadowDirectionalLight included) casts with the group's
   fields below, which mean what the SoDeepShadowLight fields of the same names mean. Point and
-  spot lights get a cube deep shadow map (MAP) or shadow rays (RAYS) from their location (a
-  spot light lights only its cone, so only its cone shows a shadow); a directional light's
-  shadows are traced (RAYS) with either method. A light of zero direction, or a spot light
-  whose cutOffAngle is not in (0, pi/2], lights without a shadow, with one warning. At most
-  8 lights cast (the shading program's limit); further ones light without a shadow, with one
-  warning.
+  spot lights get a deep shadow map (MAP: a cube, or one perspective face over a spot light's
+  cone up to 60 degrees) or shadow rays (RAYS) from their location; a directional light gets
+  an orthographic map over the casters it can shade in view, or rays (docs/LIGHTS.md). A
+  light of zero direction, or a spot light whose cutOffAngle is not in (0, pi/2], lights
+  without a shadow, with one warning. At most 8 lights cast (the shading program's limit);
+  further ones light without a shadow, with one warning.
 
   The children are rendered with a per-pixel version of Coin's own lighting in which each
   casting light's contribution is multiplied by its visibility. SoShadowStyle is honoured as
@@ -63,19 +63,19 @@ struct PeelStatistics;
         renderCulling AUTO
         pickCulling AUTO
         isActive TRUE            # FALSE renders the children like a plain SoSeparator
-        transparency PEELED      # PEELED: transparent surfaces in exact depth order per
-                                 #   pixel; COIN_BLENDING: Coin's transparency type
         castingLights ALL_LIGHTS # ALL_LIGHTS or DEEP_SHADOW_LIGHTS
         # The shadows of the ordinary lights (SoDeepShadowLight nodes use their own fields):
-        method AUTO              # AUTO, MAP or RAYS
-        resolution 512           # cube face size in texels
-        maxLayers 4              # peeled layers per face, 1 .. 64
-        bias 1                   # in texels at the receiver
-        shadowColor AUTO         # AUTO, MONOCHROME or COLORED
-        colorModel SATURATE      # SATURATE or POWER
-        precision FLOAT          # FLOAT or HALF
-        filter NONE              # NONE or PCF
-        filterSize 3             # PCF kernel width in texels, odd, 1 .. 9
+        method AUTO          # AUTO, MAP (deep shadow map) or RAYS (exact, Embree on the CPU)
+        resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
+        maxLayers 4          # peeled layers per face, 1 .. 64
+        bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
+        shadowColor AUTO     # AUTO, MONOCHROME or COLORED
+        colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
+        precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
+        filter NONE          # NONE (the nearest texel) or PCF
+        filterSize 3         # PCF: the mean over filterSize x filterSize texels, 1 .. 9
+        transparency PEELED      # PEELED: transparent surfaces in exact depth order per
+                                 #   pixel; COIN_BLENDING: Coin's transparency type
     }
   \endcode
 */
