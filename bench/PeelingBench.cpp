@@ -1,6 +1,6 @@
 // Order-independent transparency cost and error against depth complexity: the plugin's
-// SoPeelingSeparator (DUAL, FRONT_TO_BACK) against Coin's SORTED_LAYERS_BLEND with as many
-// passes as there are layers, and plain BLEND. Run: build/bin/ivshadow_bench
+// SoPeelingSeparator (DUAL, FRONT_TO_BACK, FRAGMENT_LISTS) against Coin's SORTED_LAYERS_BLEND with
+// as many passes as there are layers, and plain BLEND. Run: build/bin/ivshadow_bench
 // --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
 // largest channel error (0..255) against the exact CPU compositing of tests/gl/PeelReference.
 #include "headless/OffscreenRenderer.h"
@@ -22,7 +22,7 @@ namespace {
 constexpr int kSize = 400;
 constexpr double kViewHeight = 2.4;
 
-enum Method { kBlend, kSortedLayers, kDual, kFrontToBack };
+enum Method { kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists };
 
 // `depth` coloured glass sheets stacked over an opaque floor, each tilted so that it cuts
 // its neighbours: every pixel of the centre sees `depth` transparent layers, in an order that
@@ -32,9 +32,10 @@ std::string stackText(int depth, Method method) {
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
      << "OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height " << kViewHeight
      << " }\nLightModel { model BASE_COLOR }\n"
-     << (method == kDual          ? "PeelingSeparator { method DUAL\n"
-         : method == kFrontToBack ? "PeelingSeparator { method FRONT_TO_BACK\n"
-                                  : "Separator {\n")
+     << (method == kDual            ? "PeelingSeparator { method DUAL\n"
+         : method == kFrontToBack   ? "PeelingSeparator { method FRONT_TO_BACK\n"
+         : method == kFragmentLists ? "PeelingSeparator { method FRAGMENT_LISTS\n"
+                                    : "Separator {\n")
      << "BaseColor { rgb 0.5 0.5 0.5 }\n"
      << "Coordinate3 { point [ -1.1 -1.1 -2, 1.1 -1.1 -2, 1.1 1.1 -2, -1.1 1.1 -2 ] }\n"
      << "FaceSet { numVertices 4 }\n";
@@ -94,13 +95,14 @@ void Peel(benchmark::State& state) {
   state.SetLabel(method == kBlend          ? "BLEND"
                  : method == kSortedLayers ? "SORTED_LAYERS_BLEND"
                  : method == kDual         ? "PeelingSeparator DUAL"
-                                           : "PeelingSeparator FRONT_TO_BACK");
+                 : method == kFrontToBack  ? "PeelingSeparator FRONT_TO_BACK"
+                                           : "PeelingSeparator FRAGMENT_LISTS");
   renderer.reset();
   root->unref();
 }
 
 void depths(benchmark::internal::Benchmark* b) {
-  for (int method : {kBlend, kSortedLayers, kDual, kFrontToBack})
+  for (int method : {kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists})
     for (int depth : {1, 2, 4, 8, 16}) b->Args({method, depth});
   b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(5);
 }

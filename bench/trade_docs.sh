@@ -4,7 +4,7 @@
 # machine after ./run build; takes about ten minutes on two cores with llvmpipe.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-for scene in coloured_shadows peeled_glasses chapel; do
+for scene in coloured_shadows peeled_glasses chapel bottles; do
   build/bin/ivshadow trade "iv_scenes/$scene.iv" -o "docs/trade/$scene" --size 400x300 --frames 5 \
     --precision float
 done

@@ -64,9 +64,19 @@ GlStateScope::GlStateScope(unsigned int changes, const Textures& textures) : cha
   if (changes_ & kVertexArray) vertexArray_ = glInteger(GL_VERTEX_ARRAY_BINDING);
   if (changes_ & kStorageBuffers) {
     storageBuffer_ = glInteger(GL_SHADER_STORAGE_BUFFER_BINDING);
-    for (GLuint i = 0; i < 2; ++i)
+    for (GLuint i = 0; i < GLuint(kStorageBindings); ++i)
       glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &storageBufferBindings_[i]);
   }
+  if (changes_ & kImageBindings)
+    for (GLuint i = 0; i < GLuint(kImageUnits); ++i) {
+      ImageBinding& image = images_[i];
+      glGetIntegeri_v(GL_IMAGE_BINDING_NAME, i, &image.texture);
+      glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, i, &image.level);
+      glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, i, &image.layered);
+      glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, i, &image.layer);
+      glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, i, &image.access);
+      glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, i, &image.format);
+    }
   if (changes_ & kBlendFunction) {
     blendFunc_ = {glInteger(GL_BLEND_SRC_RGB), glInteger(GL_BLEND_DST_RGB),
                   glInteger(GL_BLEND_SRC_ALPHA), glInteger(GL_BLEND_DST_ALPHA)};
@@ -126,10 +136,16 @@ GlStateScope::~GlStateScope() {
     glBlendEquationSeparate(GLenum(blendEquation_[0]), GLenum(blendEquation_[1]));
   }
   if (changes_ & kStorageBuffers) {
-    for (GLuint i = 0; i < 2; ++i)
+    for (GLuint i = 0; i < GLuint(kStorageBindings); ++i)
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, GLuint(storageBufferBindings_[i]));
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(storageBuffer_));
   }
+  if (changes_ & kImageBindings)
+    for (GLuint i = 0; i < GLuint(kImageUnits); ++i) {
+      const ImageBinding& image = images_[i];
+      glBindImageTexture(i, GLuint(image.texture), image.level, GLboolean(image.layered),
+                         image.layer, GLenum(image.access), GLenum(image.format));
+    }
   if (changes_ & kVertexArray) glBindVertexArray(GLuint(vertexArray_));
   if (changes_ & kProgram) glUseProgram(GLuint(program_));
   if (changes_ & kViewport) glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "callbacks/ShaderConstants.h"
 #include "ivshadow/Export.h"
 
 #include <array>
@@ -20,14 +21,16 @@ class IVSHADOW_INTERNAL GlStateScope {
     kViewport = 1u << 1,
     kProgram = 1u << 2,  // the program in use
     kVertexArray = 1u << 3,
-    kStorageBuffers = 1u << 4,  // generic and indexed (0, 1) shader storage bindings
-    kBlendFunction = 1u << 5,   // blend functions and equations
-    kDepth = 1u << 6,           // depth function, write mask and range
+    // generic and indexed (0 .. kStorageBindings - 1) shader storage bindings
+    kStorageBuffers = 1u << 4,
+    kBlendFunction = 1u << 5,  // blend functions and equations
+    kDepth = 1u << 6,          // depth function, write mask and range
     kColourMask = 1u << 7,
     kClipControl = 1u << 8,
     // Blending, depth test, culling and every other per-fragment or clipping switch Coin may
     // have left on, and the polygon mode: what disableFragmentTests() changes.
     kFragmentTests = 1u << 9,
+    kImageBindings = 1u << 10,  // image units 0 .. kImageUnits - 1 (ShaderConstants.h)
   };
   struct Textures {
     std::vector<int> units;             // units the pass binds textures on
@@ -59,7 +62,11 @@ class IVSHADOW_INTERNAL GlStateScope {
   int program_ = 0;
   int vertexArray_ = 0;
   int storageBuffer_ = 0;
-  std::array<int, 2> storageBufferBindings_{};
+  std::array<int, kStorageBindings> storageBufferBindings_{};
+  struct ImageBinding {
+    int texture, level, layered, layer, access, format;
+  };
+  std::array<ImageBinding, kImageUnits> images_{};
   int activeTexture_ = 0;
   int depthFunc_ = 0;
   unsigned char depthMask_ = 1;

@@ -1,6 +1,7 @@
 #include "callbacks/PeelPass.h"
 
 #include "GlslSources.h"
+#include "callbacks/FragmentListPass.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/UniformLocations.h"
@@ -189,6 +190,14 @@ void PeelPass::end(int passes) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   saved_.reset();
   timer_.stop();
+}
+
+FragmentListPass* PeelPass::fragmentLists(std::string& whyNot) {
+  if (!listsTried_) {
+    listsTried_ = true;
+    lists_ = FragmentListPass::create(whyNot);
+  }
+  return lists_.get();
 }
 
 void PeelPass::setPeelUniforms(const UniformLocations& program) const {

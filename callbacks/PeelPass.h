@@ -10,6 +10,7 @@
 
 namespace ivshadow {
 
+class FragmentListPass;
 class GlStateScope;
 class UniformLocations;
 
@@ -55,6 +56,10 @@ class PeelPass {
   // Sets the texture units of a peel variant of the shading program (peel.frag).
   void setPeelUniforms(const UniformLocations& program) const;
 
+  // This context's fragment lists, made at the first call; null when they cannot be made
+  // (`whyNot` says why, at that first call only).
+  FragmentListPass* fragmentLists(std::string& whyNot);
+
  private:
   PeelPass() = default;
   void allocate(int width, int height);
@@ -78,6 +83,8 @@ class PeelPass {
   int textureUnits_ = 0;
   int firstUnit_ = 0;
   GlPassTimer timer_;
+  std::unique_ptr<FragmentListPass> lists_;
+  bool listsTried_ = false;
 };
 
 }  // namespace ivshadow

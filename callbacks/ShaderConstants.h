@@ -38,10 +38,23 @@ enum class MapProjection : int { Cube = 0, Perspective = 1, Orthographic = 2 };
 // degrees, 15 times less at 75).
 inline constexpr float kMaxSpotFaceHalfAngle = 1.04719755f;  // pi / 3
 
-// Shader storage binding points: the map build's "any / transparent fragment" flags and the
-// peel passes' "deeper layers left" flag.
+// Shader storage binding points: the map build's "any / transparent fragment" flags, the
+// peel passes' "deeper layers left" flag and the fragment lists (FragmentListPass); the
+// storage bindings the passes use, 0 .. kStorageBindings - 1 (GlStateScope restores them).
 inline constexpr int kMapFlagsBinding = 0;
 inline constexpr int kPeelProgressBinding = 1;
+inline constexpr int kFragmentListBinding = 2;
+inline constexpr int kStorageBindings = 3;
+// Image units of the fragment lists: each pixel's first fragment and its count (GlStateScope
+// restores units 0 .. kImageUnits - 1).
+inline constexpr int kFragmentHeadsUnit = 0;
+inline constexpr int kFragmentCountsUnit = 1;
+inline constexpr int kImageUnits = 2;
+// Fragments a pixel's list may hold: the resolve sorts them in registers. A view with more
+// transparent surfaces in one pixel is peeled instead (docs/PEELING.md).
+inline constexpr int kMaxFragmentsPerPixel = 32;
+// Bytes a fragment takes in the list (std430: colour vec4, depth, next, padding to 16).
+inline constexpr int kFragmentBytes = 32;
 
 // Texture units of the plugin's passes, counted down from the context's highest unit so that
 // Coin's own textures keep the low ones: the maps (depth and visibility per light slot) at the

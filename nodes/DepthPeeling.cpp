@@ -1,6 +1,8 @@
 #include "nodes/DepthPeeling.h"
 
+#include "callbacks/FragmentListPass.h"
 #include "callbacks/PeelPass.h"
+#include "callbacks/ShaderConstants.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/PeelStatistics.h"
 #include "ivshadow/SoPeelingSeparator.h"
@@ -16,11 +18,105 @@
 #include <Inventor/elements/SoPolygonOffsetElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/elements/SoViewportRegionElement.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/nodes/SoNode.h>
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
+#include <set>
+#include <string>
+#include <utility>
 
 namespace ivshadow {
+namespace {
+
+// The state every pass after the opaque one draws in (pushed by the caller): every shape with
+// the plugin's program, against the opaque pass's depth.
+void setPeelPassState(SoState* state) {
+  // Drawn at once with blending on, which the peel passes turn into MAX blending.
+  overrideTransparencyType(state, SoGLRenderAction::BLEND);
+  ShadowGroupElement::setPeeling(state, true);
+  // Every shape must draw with a peel variant: a shape drawn by Coin's fixed function would
+  // write its colour into the depth range and accumulation targets. SoShadowStyle switches
+  // the program off (for shapes it keeps from being SHADOWED) only while the shadows flag
+  // is up, so it is lowered for the peel passes; such shapes were drawn by Coin in the
+  // opaque pass, and only their transparent surfaces are peeled, with the group's shading.
+  SoShapeStyleElement::setShadowsRendering(state, FALSE);
+  // Against the opaque pass's depth: only what lies in front of it is peeled, and the
+  // early depth test of the peel program skips the rest before shading.
+  SoDepthBufferElement::set(state, TRUE, FALSE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
+  // A shape drawn in the opaque pass by Coin's fixed function (one SoShadowStyle keeps from
+  // being SHADOWED) comes out a few ulps nearer when the program draws it again, and would
+  // be peeled over itself. The peel passes push every surface back by about kSameLayer
+  // (16 steps of the 32-bit float depth near 0.5), so a surface's own opaque depth hides
+  // it; every peel pass moves a surface alike, so layers still compare as before.
+  SoPolygonOffsetElement::set(state, nullptr, 0.0f, 16.0f, SoPolygonOffsetElement::FILLED, TRUE);
+}
+
+// Says once per node and reason why a view is peeled instead of listed.
+void warnListsNotUsed(const SoNode* owner, int reason, const std::string& why) {
+  static std::mutex mutex;
+  static std::set<std::pair<const SoNode*, int>> warned;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (!warned.insert({owner, reason}).second) return;
+  }
+  const char* node =
+      owner != nullptr ? owner->getTypeId().getName().getString() : "SoPeelingSeparator";
+  SoDebugError::postWarning(node, "fragment lists not used, peeling instead: %s", why.c_str());
+}
+
+// The transparent surfaces into fragment lists and resolved over the opaque picture: true,
+// with the passes counted, or false (with one warning) when the lists cannot hold the view
+// and nothing was composited.
+bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
+                       const PeelOptions& options,
+                       const std::function<void(SoGLRenderAction*)>& draw,
+                       PeelStatistics& statistics) {
+  std::string whyNot;
+  FragmentListPass* lists = pass.fragmentLists(whyNot);
+  if (lists == nullptr) {
+    warnListsNotUsed(options.owner, 0, whyNot);
+    return false;
+  }
+  SoState* state = action->getState();
+  const SbViewportRegion& region = SoViewportRegionElement::get(state);
+  const SbVec2s origin = region.getViewportOriginPixels();
+  const SbVec2s size = region.getViewportSizePixels();
+  state->push();
+  setPeelPassState(state);
+  FragmentListPass::Outcome outcome = FragmentListPass::Outcome::TooLarge;
+  int passes = 0;
+  // A second pass only when the first found the buffer too small (it is now large enough).
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    if (shading.bind(action, ShadingVariant::FragmentList) == nullptr) break;
+    lists->begin(origin[0], origin[1], size[0], size[1]);
+    draw(action);
+    outcome = lists->finish();
+    ++passes;
+    if (outcome != FragmentListPass::Outcome::Grow) break;
+  }
+  state->pop();
+  statistics.listPasses = passes;
+  statistics.listFragments = (long long)lists->fragments();
+  if (outcome == FragmentListPass::Outcome::Stored) {
+    lists->resolve();
+    statistics.passes = passes;
+    return true;
+  }
+  if (outcome == FragmentListPass::Outcome::Crowded)
+    warnListsNotUsed(options.owner, 1,
+                     "a pixel holds more than " + std::to_string(kMaxFragmentsPerPixel) +
+                         " transparent surfaces");
+  else if (passes > 0)
+    warnListsNotUsed(options.owner, 2,
+                     "the view needs " + std::to_string(lists->neededBytes() >> 20) +
+                         " MiB of fragments, more than GL gives");
+  return false;
+}
+
+}  // namespace
 
 void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
                   const PeelOptions& options, const std::function<void(SoGLRenderAction*)>& draw,
@@ -52,30 +148,19 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
                       ? std::min(options.maxPasses, SoPeelingSeparator::kMaxPasses)
                       : SoPeelingSeparator::kMaxPasses;
   int passes = 0;
-  if (transparentSeen || !options.earlyTermination) {
+  statistics.listPasses = 0;
+  statistics.listFragments = 0;
+  const bool listed = (transparentSeen || !options.earlyTermination) && options.fragmentLists &&
+                      drawFragmentLists(action, pass, shading, options, draw, statistics);
+  if (listed) {
+    passes = statistics.passes;
+  } else if (transparentSeen || !options.earlyTermination) {
     const SbViewportRegion& region = SoViewportRegionElement::get(state);
     const SbVec2s origin = region.getViewportOriginPixels();
     const SbVec2s size = region.getViewportSizePixels();
     pass.begin(origin[0], origin[1], size[0], size[1]);
     state->push();
-    // Drawn at once with blending on, which the peel passes turn into MAX blending.
-    overrideTransparencyType(state, SoGLRenderAction::BLEND);
-    ShadowGroupElement::setPeeling(state, true);
-    // Every shape must draw with a peel variant: a shape drawn by Coin's fixed function would
-    // write its colour into the depth range and accumulation targets. SoShadowStyle switches
-    // the program off (for shapes it keeps from being SHADOWED) only while the shadows flag
-    // is up, so it is lowered for the peel passes; such shapes were drawn by Coin in the
-    // opaque pass, and only their transparent surfaces are peeled, with the group's shading.
-    SoShapeStyleElement::setShadowsRendering(state, FALSE);
-    // Against the opaque pass's depth: only what lies in front of it is peeled, and the
-    // early depth test of the peel program skips the rest before shading.
-    SoDepthBufferElement::set(state, TRUE, FALSE, SoDepthBufferElement::LESS, SbVec2f(0.0f, 1.0f));
-    // A shape drawn in the opaque pass by Coin's fixed function (one SoShadowStyle keeps from
-    // being SHADOWED) comes out a few ulps nearer when the program draws it again, and would
-    // be peeled over itself. The peel passes push every surface back by about kSameLayer
-    // (16 steps of the 32-bit float depth near 0.5), so a surface's own opaque depth hides
-    // it; every peel pass moves a surface alike, so layers still compare as before.
-    SoPolygonOffsetElement::set(state, nullptr, 0.0f, 16.0f, SoPolygonOffsetElement::FILLED, TRUE);
+    setPeelPassState(state);
     for (;;) {
       const UniformLocations* peelProgram =
           shading.bind(action, passes == 0    ? ShadingVariant::PeelInit
@@ -98,7 +183,8 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 
   statistics.passes = passes;
-  statistics.gpuPeelMs = passTiming() && passes > 0 ? pass.gpuMs() : 0.0;
+  // The lists' passes are not timed on the GPU.
+  statistics.gpuPeelMs = !listed && passTiming() && passes > 0 ? pass.gpuMs() : 0.0;
   statistics.peelMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics.frames;

@@ -3,6 +3,7 @@
 #include <functional>
 
 class SoGLRenderAction;
+class SoNode;
 
 namespace ivshadow {
 
@@ -16,6 +17,11 @@ struct PeelOptions {
   bool dual = true;              // nearest and farthest layer per pass, else nearest only
   int maxPasses = 0;             // 0: until nothing is left (SoPeelingSeparator::kMaxPasses)
   bool earlyTermination = true;  // stop when a pass found nothing deeper
+  // One pass into per-pixel fragment lists (FragmentListPass) instead of peeling; a view the
+  // lists cannot hold is peeled as above.
+  bool fragmentLists = false;
+  // The node peeling, for its warnings (one per node and reason).
+  const SoNode* owner = nullptr;
 };
 
 // Draws a subgraph's opaque surfaces into the framebuffer, then peels its transparent ones

@@ -13,6 +13,8 @@ void add(PeelStatistics& total, const PeelStatistics& one) {
   total.peelMs += one.peelMs;
   total.gpuPeelMs += one.gpuPeelMs;
   total.frames += one.frames;
+  total.listPasses += one.listPasses;
+  total.listFragments += one.listFragments;
 }
 
 }  // namespace

@@ -93,7 +93,10 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShad
     return;
   }
   PeelOptions options;
-  options.dual = owner_->method.getValue() == SoPeelingSeparator::DUAL;
+  const int method = owner_->method.getValue();
+  options.dual = method != SoPeelingSeparator::FRONT_TO_BACK;
+  options.fragmentLists = method == SoPeelingSeparator::FRAGMENT_LISTS;
+  options.owner = owner_;
   options.maxPasses = owner_->maxPasses.getValue();
   options.earlyTermination = owner_->earlyTermination.getValue();
   peelSubgraph(

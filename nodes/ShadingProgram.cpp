@@ -46,6 +46,8 @@ VariantSource sourceOf(ShadingVariant variant) {
       return {glsl::kCaptureFrag, "#define IVSHADOW_CAPTURE_OPAQUE\n", texture};
     case ShadingVariant::CaptureTransparent:
       return {glsl::kCaptureFrag, "", texture};
+    case ShadingVariant::FragmentList:
+      return {lit + glsl::kFragmentListCommonGlsl + glsl::kFragmentListFrag, "", lighting};
   }
   return {};
 }

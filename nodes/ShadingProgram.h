@@ -23,8 +23,9 @@ enum class ShadingVariant : int {
   PeelDual,            // peel.frag, IVSHADOW_PEEL_DUAL: two layers per pass
   CaptureOpaque,       // capture.frag, IVSHADOW_CAPTURE_OPAQUE: RAYS lights' opaque capture
   CaptureTransparent,  // capture.frag: their transparent captures
+  FragmentList,        // fragment_list.frag: fragment lists' one pass (FragmentListPass)
 };
-inline constexpr int kShadingVariants = 7;
+inline constexpr int kShadingVariants = 8;
 
 // The variants as Coin SoShaderProgram nodes, so Coin compiles each per context (when first
 // used), binds it through SoGLShaderProgramElement (which SoShadowStyle switches off for

@@ -25,6 +25,7 @@ SoPeelingSeparator::SoPeelingSeparator() : impl_(new ivshadow::PeelingSeparatorI
   SO_NODE_ADD_FIELD(earlyTermination, (TRUE));
   SO_NODE_DEFINE_ENUM_VALUE(Method, DUAL);
   SO_NODE_DEFINE_ENUM_VALUE(Method, FRONT_TO_BACK);
+  SO_NODE_DEFINE_ENUM_VALUE(Method, FRAGMENT_LISTS);
   SO_NODE_SET_SF_ENUM_TYPE(method, Method);
 }
 

@@ -211,10 +211,13 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
     renderChildren_(action, inPath);
     return;
   }
-  // Dual peeling: fewer passes than front to back for the same layers, and cheaper per frame
-  // where it was measured (docs/PEELING.md, "Inside a group").
+  // Fragment lists: every transparent fragment shaded once, in one pass, where peeling pays a
+  // pass (and a traversal) per two layers; dual peeling where the lists cannot hold the view
+  // (docs/PEELING.md, "Inside a group").
   PeelOptions options;
   options.dual = true;
+  options.fragmentLists = true;
+  options.owner = owner_;
   peelSubgraph(
       action, *context.peel, shading_, options,
       [this, inPath](SoGLRenderAction* drawing) { renderChildren_(drawing, inPath); },

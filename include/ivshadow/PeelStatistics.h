@@ -13,6 +13,10 @@ struct PeelStatistics {
   double peelMs = 0.0;     // wall time of the peel passes and compositing (waits for each pass)
   double gpuPeelMs = 0.0;  // GPU time of the same (GL_TIMESTAMP queries)
   int frames = 0;          // frames peeled since the node was created
+  // Of `passes`, those that filled fragment lists (FRAGMENT_LISTS: 1, or 2 when the buffer
+  // grew), and the transparent fragments they stored.
+  int listPasses = 0;
+  long long listFragments = 0;
 };
 
 // The last frame of every SoPeelingSeparator and SoTransparentShadowGroup under `root`,

@@ -21,8 +21,12 @@ struct PeelStatistics;
   Opaque children are drawn once as usual. Transparent fragments are then peeled layer by
   layer and composited over them (seeds/000 eq. 2.5-2.8): with DUAL, the nearest and the
   farthest remaining layer per pass (N layers in N/2 + 1 passes, Bavoil & Myers 2008); with
-  FRONT_TO_BACK one layer per pass. Coin's transparency type is overridden inside the
-  separator. Inside a SoTransparentShadowGroup every peeled layer is shaded with the group's
+  FRONT_TO_BACK one layer per pass. FRAGMENT_LISTS draws the transparent surfaces once, each
+  fragment shaded and linked into its pixel's list, then sorts each list by depth and
+  composites it (an A-buffer): the same picture in one pass whatever the layers; maxPasses and
+  earlyTermination do not apply. A view in which a pixel holds more than 32 transparent
+  surfaces, or whose fragments do not fit in GL's storage, is peeled with DUAL instead (one
+  warning). Coin's transparency type is overridden inside the separator. Inside a SoTransparentShadowGroup every peeled layer is shaded with the group's
   deep shadows.
 
   FILE FORMAT/DEFAULTS:
@@ -32,7 +36,7 @@ struct PeelStatistics;
         boundingBoxCaching AUTO
         renderCulling AUTO
         pickCulling AUTO
-        method DUAL             # DUAL or FRONT_TO_BACK
+        method DUAL             # DUAL, FRONT_TO_BACK or FRAGMENT_LISTS
         maxPasses 0             # passes per frame, the first finding the depth range;
                                 #   0: until no layer is left, at most 64
         earlyTermination TRUE   # stop when a pass found no deeper layer; FALSE always runs
@@ -49,8 +53,9 @@ class IVSHADOW_API SoPeelingSeparator : public SoSeparator {
   SoPeelingSeparator();
 
   enum Method {
-    DUAL,          //!< nearest and farthest layer per pass
-    FRONT_TO_BACK  //!< nearest layer per pass
+    DUAL,           //!< nearest and farthest layer per pass
+    FRONT_TO_BACK,  //!< nearest layer per pass
+    FRAGMENT_LISTS  //!< one pass into per-pixel fragment lists, sorted and composited after
   };
 
   //! Hard limit on passes per frame, whatever maxPasses says.

@@ -171,8 +171,8 @@ TEST(GroupPeeling, CrossingPanesAreExactOnBothSidesWithoutAPeelingSeparator) {
   const Rendered rendered = render(groupScene("", crossingPanes()));
   const std::string failure = compareWithExpectation(rendered.image, panesPicture(exactOf), kExact);
   EXPECT_TRUE(failure.empty()) << failure;
-  // Two layers: the depth-range pass and one dual pass peel both.
-  EXPECT_EQ(rendered.group.passes, 2);
+  // Both layers in one pass into the fragment lists: no peel pass.
+  EXPECT_EQ(rendered.group.passes, 1);
   // The scene needs it: Coin's order is a quarter of full scale off on the left, where B is
   // hidden (green 0.25 x 255 missing).
   const Surface a{0.4, kPaneA.colour, kPaneA.alpha}, b = kPaneB;
@@ -348,7 +348,7 @@ TEST(GroupPeeling, ClosedGlassBoxOverAFloorIsExact) {
   const Rendered rendered = render(groupScene("", glassBoxOverFloor()));
   const std::string failure = compareWithExpectation(rendered.image, boxPicture(exactOf), kExact);
   EXPECT_TRUE(failure.empty()) << failure;
-  EXPECT_EQ(rendered.group.passes, 2) << "two glass layers: the range pass and one dual pass";
+  EXPECT_EQ(rendered.group.passes, 1) << "two glass layers, one pass into the fragment lists";
 }
 
 TEST(GroupPeeling, ClosedGlassBoxUnderCoinBlendingKeepsCoinsOrder) {
@@ -378,7 +378,7 @@ TEST(GroupPeeling, APeelingSeparatorInsideAPeelingGroupPeelsOnce) {
   const Rendered peeled = render(groupScene("", inside));
   std::string failure = compareWithExpectation(peeled.image, panesPicture(exactOf), kExact);
   EXPECT_TRUE(failure.empty()) << failure;
-  EXPECT_EQ(peeled.group.passes, 2);
+  EXPECT_EQ(peeled.group.passes, 1);  // the fragment lists' one pass
   EXPECT_EQ(peeled.separators.passes, 0);
   // Blending group: the separator peels as before (front to back: the range pass, then one
   // pass per layer).
@@ -391,12 +391,12 @@ TEST(GroupPeeling, APeelingSeparatorInsideAPeelingGroupPeelsOnce) {
 
 TEST(GroupPeeling, AGroupInsideAPeelingGroupIsPeeledWithIt) {
   // The inner group draws its children as part of the outer group's peeling (its own
-  // programs would write into the peel targets): exact, with the outer group's 2 passes.
+  // programs would write into the peel targets): exact, with the outer group's one pass.
   const Rendered rendered =
       render(groupScene("", "    TransparentShadowGroup {\n" + crossingPanes() + "    }\n"));
   const std::string failure = compareWithExpectation(rendered.image, panesPicture(exactOf), kExact);
   EXPECT_TRUE(failure.empty()) << failure;
-  EXPECT_EQ(rendered.group.passes, 2) << "summed over both groups: only the outer one peels";
+  EXPECT_EQ(rendered.group.passes, 1) << "summed over both groups: only the outer one lists";
 }
 
 TEST(GroupPeeling, AnOpaqueSceneCostsNoPeelPass) {

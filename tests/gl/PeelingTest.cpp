@@ -1,6 +1,7 @@
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/PeelStatistics.h"
+#include "scene/CoinMessageCapture.h"
 #include "tests/gl/PeelReference.h"
 #include "tests/gl/ShadowScene.h"
 
@@ -203,6 +204,81 @@ TEST(Peeling, SelfOverlappingTorus) {
   EXPECT_GE(reference(text).depthComplexity(), 4) << "the torus must overlap itself";
   expectMatchesReference(tippedTorus(), "method DUAL");
   expectMatchesReference(tippedTorus(), "method FRONT_TO_BACK");
+}
+
+TEST(Peeling, FragmentListsMatchTheReferenceInOnePass) {
+  for (const std::string& content : {planesAndSphere(), tippedTorus()}) {
+    expectMatchesReference(content, "method FRAGMENT_LISTS");
+    const Rendered listed = render(sceneText("method FRAGMENT_LISTS", content));
+    // One pass into the lists, or two when the first found the buffer (two fragments a pixel
+    // to begin with) too small; no peel pass.
+    EXPECT_GE(listed.stats.listPasses, 1);
+    EXPECT_LE(listed.stats.listPasses, 2);
+    EXPECT_EQ(listed.stats.passes, listed.stats.listPasses);
+    EXPECT_GT(listed.stats.listFragments, 0);
+  }
+}
+
+// Six full-view transparent sheets: 6 fragments a pixel, three times the lists' first
+// buffer. The first frame stores what fits, finds the buffer short, grows it and draws again;
+// the next frame needs one pass. Both pictures are the reference's.
+TEST(Peeling, FragmentListsGrowOnceForABusierView) {
+  std::ostringstream sheets;
+  for (int i = 0; i < 6; ++i)
+    sheets << "Separator { Material { diffuseColor " << (i % 2) << " " << (i % 3 == 0 ? 1 : 0)
+           << " 0.5 transparency 0.7 }\n"
+           << "Coordinate3 { point [ -2 -2 " << (-0.8 + 0.3 * i) << ", 2 -2 " << (-0.8 + 0.3 * i)
+           << ", 2 2 " << (-0.8 + 0.3 * i) << ", -2 2 " << (-0.8 + 0.3 * i) << " ] }\n"
+           << "FaceSet { numVertices 4 } }\n";
+  const std::string text = sceneText("method FRAGMENT_LISTS", sheets.str());
+  init();
+  std::string error;
+  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  SoSeparator* root = readIv(text);
+  renderer->render(root);
+  const PeelStatistics first = collectPeelStatistics(root);
+  const Image firstImage = renderer->read();
+  renderer->render(root);
+  const PeelStatistics second = collectPeelStatistics(root);
+  const Image secondImage = renderer->read();
+  renderer.reset();
+  root->unref();
+  EXPECT_EQ(first.listPasses, 2);
+  EXPECT_EQ(first.listFragments, 6LL * kSize * kSize);
+  EXPECT_EQ(second.listPasses, 1);
+  const PeelReference exact = reference(text);
+  int checked = 0;
+  EXPECT_LE(compareWithReference(firstImage, exact, {}, 1.0, checked), 1.0);
+  EXPECT_LE(compareWithReference(secondImage, exact, {}, 1.0, checked), 1.0);
+  EXPECT_GT(checked, kSize * kSize / 2);
+}
+
+// More transparent surfaces in a pixel than a list holds (kMaxFragmentsPerPixel, 32): the
+// view is peeled instead, with one warning, and the picture is still exact.
+TEST(Peeling, FragmentListsFallBackToPeelingForACrowdedPixel) {
+  std::ostringstream sheets;
+  for (int i = 0; i < 40; ++i)
+    sheets << "Separator { Material { diffuseColor 0.2 0.6 0.4 transparency 0.8 }\n"
+           << "Coordinate3 { point [ -0.5 -0.5 " << (-0.9 + 0.04 * i) << ", 0.5 -0.5 "
+           << (-0.9 + 0.04 * i) << ", 0.5 0.5 " << (-0.9 + 0.04 * i) << ", -0.5 0.5 "
+           << (-0.9 + 0.04 * i) << " ] }\n"
+           << "FaceSet { numVertices 4 } }\n";
+  const std::string text = sceneText("method FRAGMENT_LISTS", sheets.str());
+  init();  // before the capture: Coin's handlers are set up by the first init
+  CoinMessageCapture messages;
+  const Rendered rendered = render(text);
+  int warnings = 0;
+  for (const CoinMessageCapture::Message& m : messages.messages())
+    warnings += m.text.find(
+                    "fragment lists not used, peeling instead: a pixel holds more "
+                    "than 32 transparent surfaces") != std::string::npos;
+  EXPECT_EQ(warnings, 1);
+  // The lists' pass, then dual peeling: 40 layers in 21 passes after the depth range.
+  EXPECT_EQ(rendered.stats.listPasses, 1);
+  EXPECT_GT(rendered.stats.passes, 20);
+  int checked = 0;
+  EXPECT_LE(compareWithReference(rendered.image, reference(text), {}, 1.0, checked), 1.0);
 }
 
 TEST(Peeling, TheScenesNeedOrderIndependentTransparency) {

@@ -1,0 +1,72 @@
+#pragma once
+
+#include "callbacks/GlHandles.h"
+#include "callbacks/GlProgram.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace ivshadow {
+
+class GlStateScope;
+
+// The GL side of order-independent transparency by per-pixel fragment lists in one context
+// (SoPeelingSeparator's FRAGMENT_LISTS, a peeling SoTransparentShadowGroup): the list buffer
+// (ShaderConstants.h: kFragmentBytes a fragment), each pixel's head and count images, a copy
+// of the opaque pass's depth in a framebuffer with no colour, and the resolve program. After
+// the opaque pass a frame is
+//   begin(); <Coin draws the children, the list variant bound>; finish();
+// and, when finish() says Stored, resolve(); when it says Grow, the same again once (the
+// buffer now holds what the view needs); otherwise the view is peeled instead.
+class FragmentListPass {
+ public:
+  // Null, with the reason, when the context lacks what the lists need.
+  static std::unique_ptr<FragmentListPass> create(std::string& whyNot);
+  ~FragmentListPass();
+
+  enum class Outcome {
+    Stored,    // every fragment is in its list
+    Grow,      // the buffer was too small; it has been enlarged for another begin()
+    Crowded,   // some pixel holds more than kMaxFragmentsPerPixel fragments
+    TooLarge,  // the view needs more storage than GL gives
+  };
+
+  // Saves GL state, sizes the images to cover the viewport (x, y, width, height) in window
+  // coordinates, copies the opaque depth from the current framebuffer, empties the lists and
+  // switches to the list framebuffer with the buffer and images bound.
+  void begin(int x, int y, int width, int height);
+  // Waits for the list pass, restores the state begin() saved and says what it stored.
+  Outcome finish();
+  // Composites each pixel's sorted list over the framebuffer current at begin().
+  void resolve();
+  // Fragments the last pass stored (or tried to).
+  std::uint64_t fragments() const { return used_; }
+  // Bytes the last view needed (the buffer's fragments), for messages.
+  std::uint64_t neededBytes() const;
+
+ private:
+  FragmentListPass() = default;
+  void allocateImages(int width, int height);
+  bool allocateList(std::uint64_t fragments);
+
+  GlProgram resolve_;
+  GlVertexArray emptyVertexArray_;
+  GlBuffer list_;
+  std::uint64_t capacity_ = 0;  // fragments the list buffer holds
+  std::uint64_t maxBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  std::uint64_t used_ = 0;
+  bool tooLarge_ = false;
+  int width_ = 0;
+  int height_ = 0;
+  GlTexture heads_;
+  GlTexture counts_;
+  GlTexture opaqueDepth_;
+  GlFramebuffer framebuffer_;
+  std::unique_ptr<GlStateScope> saved_;
+  int targetFramebuffer_ = 0;
+  std::array<int, 4> viewport_{};
+};
+
+}  // namespace ivshadow
