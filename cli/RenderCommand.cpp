@@ -106,6 +106,8 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["passes"]["peel_ms"] = peeling.peelMs;
   stats["passes"]["peel_gpu_ms"] = peeling.gpuPeelMs;
   stats["peel_passes"] = peeling.passes;
+  stats["list_passes"] = peeling.listPasses;
+  stats["list_fragments"] = peeling.listFragments;
   return stats;
 }
 

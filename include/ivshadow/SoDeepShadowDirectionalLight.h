@@ -29,8 +29,8 @@
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
         colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
-        filter NONE          # NONE (the nearest texel) or PCF
-        filterSize 3         # PCF: the mean over filterSize x filterSize texels, 1 .. 9
+        filter PCF           # NONE (the nearest texel) or PCF
+        filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)
     }
   \endcode
 */

@@ -36,7 +36,7 @@ struct PeelStatistics;
         boundingBoxCaching AUTO
         renderCulling AUTO
         pickCulling AUTO
-        method DUAL             # DUAL, FRONT_TO_BACK or FRAGMENT_LISTS
+        method FRAGMENT_LISTS   # FRAGMENT_LISTS, DUAL or FRONT_TO_BACK
         maxPasses 0             # passes per frame, the first finding the depth range;
                                 #   0: until no layer is left, at most 64
         earlyTermination TRUE   # stop when a pass found no deeper layer; FALSE always runs

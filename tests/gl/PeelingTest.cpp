@@ -345,7 +345,7 @@ TEST(Peeling, AViewWithoutTransparencyCostsNoPeelPass) {
 }
 
 TEST(Peeling, EarlyTerminationOffRunsEveryPass) {
-  const Rendered rendered = render(sceneText("earlyTermination FALSE maxPasses 5", ""));
+  const Rendered rendered = render(sceneText("method DUAL earlyTermination FALSE maxPasses 5", ""));
   EXPECT_EQ(rendered.stats.passes, 5);
 }
 
