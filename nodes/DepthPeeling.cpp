@@ -22,10 +22,24 @@
 
 namespace ivshadow {
 
-void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
-                  const PeelOptions& options, const std::function<void(SoGLRenderAction*)>& draw,
-                  PeelStatistics& statistics) {
+std::string peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
+                         const PeelOptions& options,
+                         const std::function<void(SoGLRenderAction*)>& draw,
+                         PeelStatistics& statistics) {
   SoState* state = action->getState();
+  {
+    // Before the opaque pass: a failure found after it would leave the transparent surfaces
+    // undrawn, or drawn twice.
+    const SbViewportRegion& region = SoViewportRegionElement::get(state);
+    const SbVec2s origin = region.getViewportOriginPixels();
+    const SbVec2s size = region.getViewportSizePixels();
+    const std::string failure = pass.prepare(origin[0], origin[1], size[0], size[1]);
+    if (!failure.empty()) {
+      statistics.passes = 0;
+      statistics.peelMs = statistics.gpuPeelMs = 0.0;
+      return failure;
+    }
+  }
   // Each pass sets its own uniforms and targets; no cache above may replay one of them.
   SoCacheElement::invalidate(state);
 
@@ -45,7 +59,7 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
   const bool transparentSeen = opaqueBound && pass.endOpaque();
   state->pop();
   // Without the opaque variant (Coin has said why) the plain pass drew everything.
-  if (!opaqueBound) return;
+  if (!opaqueBound) return {};
 
   const auto start = std::chrono::steady_clock::now();
   const int cap = options.maxPasses > 0
@@ -102,6 +116,7 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
   statistics.peelMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics.frames;
+  return {};
 }
 
 }  // namespace ivshadow
