@@ -121,11 +121,13 @@ void GroupContents::update(SoAction* action) {
     const CoinRef<SoPath> toGroup(action->getCurPath()->copy());
     casters_ = extractShadowCasters(toGroup.get());
     castersValid_ = true;
-    // Neither method can cast a shadow from lines or points: say so once per shape.
+    // Neither method can cast a shadow from lines, points or screen-aligned pixels: say so
+    // once per shape.
     for (const std::string& shape : casters_.withoutTriangles)
       if (firstWarning(nullptr, "without triangles: " + shape))
         SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                  "%s is drawn with lines or points, which cast no shadow",
+                                  "%s is drawn with lines, points or screen-aligned pixels, which "
+                                  "cast no shadow",
                                   shape.c_str());
     ++castersVersion_;
   }
