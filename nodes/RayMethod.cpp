@@ -21,8 +21,43 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <chrono>
+#include <mutex>
 
 namespace ivshadow {
+namespace {
+
+// SoSeparator's number of render caches is one for the process. Captures running at once on
+// two threads, each saving and restoring it, would restore it in the order they began, not
+// the one they end in, and could leave it at 0 for good: the first capture to begin saves it,
+// the last to end restores it. Meanwhile no separator of the process records a cache (a
+// frame of another context drawn slower, never wrongly).
+struct SuspendedRenderCaches {
+  std::mutex mutex;
+  int captures = 0;
+  int saved = 0;
+};
+
+SuspendedRenderCaches& suspended() {
+  static SuspendedRenderCaches state;
+  return state;
+}
+
+void suspendRenderCaches() {
+  SuspendedRenderCaches& state = suspended();
+  const std::lock_guard<std::mutex> lock(state.mutex);
+  if (state.captures++ == 0) {
+    state.saved = SoSeparator::getNumRenderCaches();
+    SoSeparator::setNumRenderCaches(0);
+  }
+}
+
+void resumeRenderCaches() {
+  SuspendedRenderCaches& state = suspended();
+  const std::lock_guard<std::mutex> lock(state.mutex);
+  if (--state.captures == 0) SoSeparator::setNumRenderCaches(state.saved);
+}
+
+}  // namespace
 
 RayMethod::RayMethod(int textureUnit) : pass_(std::make_unique<RayShadowPass>(textureUnit)) {}
 
@@ -108,8 +143,7 @@ std::string RayMethod::capture(SoGLRenderAction* action, const GroupContents& co
   ShadowGroupElement::setCapturing(state, true);
   // A render cache recorded here would hold the capture's state and uniforms and replay them
   // in the shading pass (Mesa then fails the display list): the captures record none.
-  const int renderCaches = SoSeparator::getNumRenderCaches();
-  SoSeparator::setNumRenderCaches(0);
+  suspendRenderCaches();
   const bool timed = passTiming();
   if (timed) captureTimer_.start();
   const std::string failure = rays.beginCapture(origin[0], origin[1], size[0], size[1]);
@@ -133,7 +167,7 @@ std::string RayMethod::capture(SoGLRenderAction* action, const GroupContents& co
     captureTimer_.stop();
     statistics.gpuCaptureMs = captureTimer_.elapsedMs();
   }
-  SoSeparator::setNumRenderCaches(renderCaches);
+  resumeRenderCaches();
   state->pop();
   // The captures drew into targets Coin did not choose; GL is restored, and Coin must not
   // trust what it believes it last sent.
