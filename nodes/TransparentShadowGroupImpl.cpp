@@ -207,10 +207,10 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
     context.peelTried = true;
     std::string whyNot;
     context.peel = PeelPass::create(whyNot);
-    if (!context.peel)
+    if (!context.peel && firstWarning(owner_, "no peel pass: " + whyNot))
       SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                "transparency composited by Coin, without depth peeling: %s",
-                                whyNot.c_str());
+                                "%s: transparency composited by Coin, without depth peeling: %s",
+                                describeNode(owner_).c_str(), whyNot.c_str());
   }
   if (!peel || !context.peel) {
     peelStatistics_.passes = 0;

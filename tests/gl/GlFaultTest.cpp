@@ -181,7 +181,8 @@ TEST(GlFault, AnIncompleteGroupPeelFramebufferIsBlendedByCoin) {
 
 TEST(GlFault, AGroupPeelBufferThatFailsIsBlendedByCoin) {
   expectGroupBlended("buffer",
-                     "transparency composited by Coin, without depth peeling: GL could not "
+                     "TransparentShadowGroup 'Scene': transparency composited by Coin, without "
+                     "depth peeling: GL could not "
                      "allocate the peeling's progress buffer (GL_OUT_OF_MEMORY (forced by "
                      "IVSHADOW_FAIL_GL))");
 }
