@@ -279,6 +279,14 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   state->push();
   ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits());
   if (uniforms == nullptr) {
+    // Coin bound no program for the shading variant. When it failed to compile or link Coin
+    // has said why; when it declined to draw it at all it says nothing, and the group would
+    // render as a plain separator without a word (seen with two contexts on two threads).
+    if (firstWarning(owner_, "no shading program"))
+      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                "%s: Coin bound no shading program in this context; rendering "
+                                "without deep shadows",
+                                describeNode(owner_).c_str());
     state->pop();
     return false;
   }

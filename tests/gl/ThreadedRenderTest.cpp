@@ -6,6 +6,7 @@
 // their fields set on the main thread before the threads start, and the threads only render.
 #include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
+#include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
 #include "tests/gl/ShadowScene.h"
 #include "tests/support/TestSupport.h"
@@ -94,10 +95,18 @@ TEST(ThreadedRender, TwoContextsOnTwoThreadsDrawWhatOneContextDrawsAlone) {
   std::thread two([&] { renderBoth(second, b); });
   one.join();
   two.join();
+  const std::string dir = test::outputDir();
+  writePng(dir + "/alone_map.png", alone.map);
+  writePng(dir + "/alone_rays.png", alone.rays);
+  int thread = 0;
   for (const Pictures* threaded : {&a, &b}) {
     ASSERT_TRUE(threaded->error.empty()) << threaded->error;
-    EXPECT_EQ(maxError(threaded->map, alone.map), 0);
-    EXPECT_EQ(maxError(threaded->rays, alone.rays), 0);
+    // Kept for a failure to be looked at.
+    const std::string name = dir + "/thread" + std::to_string(thread++);
+    writePng(name + "_map.png", threaded->map);
+    writePng(name + "_rays.png", threaded->rays);
+    EXPECT_EQ(maxError(threaded->map, alone.map), 0) << name << "_map.png";
+    EXPECT_EQ(maxError(threaded->rays, alone.rays), 0) << name << "_rays.png";
   }
 }
 
