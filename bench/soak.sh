@@ -4,12 +4,15 @@
 # rebuilds its map or traces again, and 200 GL context create/destroy cycles; resident memory
 # sampled 100 times per run. Prints a Markdown table (first and last RSS, slope over the
 # second half) and writes it into docs/RELIABILITY.md between its "soak table" markers.
-# Run after ./run build on an otherwise idle machine.
+# Run after ./run build on an otherwise idle machine. IVSHADOW_SOAK names another
+# ivshadow_soak (a copy of the build, so that rebuilding meanwhile leaves the run alone);
+# SOAK_SAMPLES=DIR keeps each run's samples there as JSON.
 #   bench/soak.sh [FRAMES]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 frames=${1:-10000}
-soak=build/bin/ivshadow_soak
+soak=${IVSHADOW_SOAK:-build/bin/ivshadow_soak}
+samples=${SOAK_SAMPLES:-}
 table="| run | frames or cycles | RSS first (MiB) | RSS last (MiB) | slope, second half (KiB per 1,000) |
 |---|---|---|---|---|"
 row() {
@@ -17,6 +20,10 @@ row() {
   shift 2
   local json
   json=$("$soak" "$@" 2>/dev/null)
+  if [ -n "$samples" ]; then
+    mkdir -p "$samples"
+    echo "$json" >"$samples/$(echo "$name" | tr -c 'A-Za-z0-9\n' _).json"
+  fi
   table+=$'\n'$(python3 -c '
 import json, sys
 d = json.loads(sys.argv[1])

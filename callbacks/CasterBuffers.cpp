@@ -1,5 +1,6 @@
 #include "callbacks/CasterBuffers.h"
 
+#include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlProgram.h"
 #include "scene/SceneTriangles.h"
 
@@ -9,7 +10,8 @@
 
 namespace ivshadow {
 
-void CasterBuffers::upload(const SceneTriangles& triangles) {
+std::string CasterBuffers::upload(const SceneTriangles& triangles) {
+  clearGlErrors();
   if (!vertexArray_) {
     vertexArray_ = createVertexArray();
     vertexBuffer_ = createBuffer();
@@ -30,12 +32,13 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
   // mutable buffer that is reallocated in place is enough.
   glNamedBufferData(vertexBuffer_.get(), GLsizeiptr(size > 0 ? size : 1),
                     size > 0 ? triangles.vertices.data() : nullptr, GL_STATIC_DRAW);
-
+  const std::string buffer = glAllocationError(GlAllocation::Buffer);
   batches_.clear();
+  textures_.clear();
+  if (!buffer.empty()) return "GL could not allocate the casters' vertex buffer (" + buffer + ")";
   for (const TriangleBatch& batch : triangles.batches)
     batches_.push_back({batch.texture, int(batch.firstVertex), int(batch.vertexCount)});
 
-  textures_.clear();
   for (const TextureImage& image : triangles.textures) {
     Texture texture{createTexture(GL_TEXTURE_2D),
                     image.model,
@@ -55,6 +58,13 @@ void CasterBuffers::upload(const SceneTriangles& triangles) {
     glTextureParameteri(name, GL_TEXTURE_WRAP_T, image.repeatT ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     textures_.push_back(std::move(texture));
   }
+  // Asked only when there are textures: an allocation that made none cannot have failed.
+  const std::string textures =
+      textures_.empty() ? std::string() : glAllocationError(GlAllocation::Texture);
+  if (textures.empty()) return {};
+  batches_.clear();
+  textures_.clear();
+  return "GL could not allocate the casters' textures (" + textures + ")";
 }
 
 void CasterBuffers::draw(const GlProgram& program, int textureUnit) const {

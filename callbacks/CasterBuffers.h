@@ -2,6 +2,7 @@
 
 #include "callbacks/GlHandles.h"
 
+#include <string>
 #include <vector>
 
 namespace ivshadow {
@@ -13,7 +14,9 @@ struct SceneTriangles;
 // opacity, texture coordinate) and the textures, drawn batch by batch.
 class CasterBuffers {
  public:
-  void upload(const SceneTriangles& triangles);
+  // Empty when the vertex buffer and textures were allocated; else what GL said (then draw()
+  // draws nothing).
+  std::string upload(const SceneTriangles& triangles);
   // Draws every batch with `program` current, binding each batch's texture to `textureUnit`
   // and setting the program's uTexture* uniforms.
   void draw(const GlProgram& program, int textureUnit) const;

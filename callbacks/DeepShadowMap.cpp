@@ -1,6 +1,7 @@
 #include "callbacks/DeepShadowMap.h"
 
 #include "callbacks/CasterBuffers.h"
+#include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlProgram.h"
 #include "callbacks/ShaderConstants.h"
 
@@ -114,11 +115,11 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
                                     const CasterBuffers& casters, unsigned int flagsBuffer) {
   MapBuildResult result;
   // Errors before the build are not the build's: taken off so that an out-of-memory below is
-  // seen as this build's.
-  while (glGetError() != GL_NO_ERROR) {
-  }
+  // seen as this build's. Any error of the allocation counts as running out: what GL
+  // refuses at this size (GL_INVALID_VALUE past its limits) may fit at half of it.
+  clearGlErrors();
   allocateScratch(request);
-  if (glGetError() == GL_OUT_OF_MEMORY) {
+  if (!glAllocationError(GlAllocation::Texture).empty()) {
     result.outOfMemory = true;
     releaseAll();
     return result;
@@ -169,6 +170,16 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0, layer);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
       glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
+      // Every pass attaches targets of the same formats and size: the first one tells.
+      if (face == 0 && k == 0) {
+        const std::string incomplete = framebufferIncompleteness(fbo);
+        if (!incomplete.empty()) {
+          result = MapBuildResult{};
+          result.failure = "the map's framebuffer is incomplete (" + incomplete + ")";
+          releaseAll();
+          return result;
+        }
+      }
       // A texel this pass leaves empty must stop the next pass too.
       glClearTexImage(peelDepth_[write].get(), 0, GL_RED, GL_FLOAT, noSurface);
       const float farthest = 1.0f;
@@ -218,6 +229,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
     }
   }
   keepUsedLayers(request, result);
+  // Only running out counts here: the passes' draws are not allocations.
   if (glGetError() == GL_OUT_OF_MEMORY) {
     result = MapBuildResult{};
     result.outOfMemory = true;

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 namespace ivshadow {
 
@@ -25,6 +26,9 @@ struct MapRequest {
 struct MapBuildResult {
   bool outOfMemory = false;  // GL_OUT_OF_MEMORY during the build: the map holds nothing
   bool noProgram = false;    // the map program did not link (DeepShadowPass): nothing built
+  // A failure a smaller map would not mend (an incomplete framebuffer, the casters' buffer
+  // not allocated): nothing built; what GL said, for the warning.
+  std::string failure;
   // Layers stored per face: at most maxLayers, plus the closing layer (DeepShadowMap). A
   // one-face map (MapFrame) uses face 0 only.
   std::array<int, 6> layersUsed{};

@@ -1,6 +1,7 @@
 #include "callbacks/DeepShadowPass.h"
 
 #include "GlslSources.h"
+#include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlStateScope.h"
 
 #include <epoxy/gl.h>
@@ -36,14 +37,20 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   std::unique_ptr<DeepShadowPass> pass(new DeepShadowPass);
   pass->maxTextureSize_ = textureSize;
   pass->textureUnits_ = units;
+  clearGlErrors();
   pass->flags_ = createBuffer();
   glNamedBufferData(pass->flags_.get(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
+  // Without the flags a build cannot stop peeling; the pass is kept for the RAYS lights,
+  // which do not need it, and every map build fails with this reason.
+  const std::string flags = glAllocationError(GlAllocation::Buffer);
+  if (!flags.empty())
+    pass->flagsError_ = "GL could not allocate the map's flag buffer (" + flags + ")";
   return pass;
 }
 
 void DeepShadowPass::uploadCasters(const SceneTriangles& triangles) {
   // Direct state access: the upload binds nothing Coin relies on.
-  casters_.upload(triangles);
+  castersError_ = casters_.upload(triangles);
 }
 
 bool DeepShadowPass::linkProgram() {
@@ -66,6 +73,12 @@ MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
   }
   if (int(maps_.size()) <= slot) maps_.resize(std::size_t(slot) + 1);
   auto& map = maps_[std::size_t(slot)];
+  if (!flagsError_.empty() || !castersError_.empty()) {
+    map.reset();
+    MapBuildResult none;
+    none.failure = flagsError_.empty() ? castersError_ : flagsError_;
+    return none;
+  }
   if (!map) map = std::make_unique<DeepShadowMap>();
   // The build draws into its own framebuffer with its own program and reversed depth, and
   // samples the previous layer (units 0, 1) and the casters' textures (unit 2).

@@ -33,6 +33,8 @@ class DeepShadowPass {
   // Unit i (0..kRayUnits-1) of the RAYS lights' samplers (RayShadowPass).
   int rayUnit(int i) const { return firstRayUnit(textureUnits_) + i; }
 
+  // A failed upload (GL could not allocate the buffers) makes every build fail with its reason
+  // (MapBuildResult::failure) until an upload succeeds.
   void uploadCasters(const SceneTriangles& triangles);
   // Builds slot `slot`'s map, saving and restoring the GL state it changes. Where the map
   // program does not link, nothing is built (MapBuildResult::noProgram, programError()).
@@ -56,6 +58,8 @@ class DeepShadowPass {
   GlProgram program_;
   std::string programError_;  // why program_ did not link; empty before the first try
   GlBuffer flags_;
+  std::string flagsError_;    // why the flags buffer is missing
+  std::string castersError_;  // why the last casters' upload failed
   CasterBuffers casters_;
   std::vector<std::unique_ptr<DeepShadowMap>> maps_;
 };

@@ -2,6 +2,7 @@
 
 #include "GlslSources.h"
 #include "callbacks/FragmentListPass.h"
+#include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/UniformLocations.h"
@@ -29,8 +30,14 @@ std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
   pass->composite_ = GlProgram::link(composeShader(glsl::kPeelCompositeVert),
                                      composeShader(glsl::kPeelCompositeFrag), whyNot);
   if (!pass->composite_) return nullptr;
+  clearGlErrors();
   pass->progress_ = createBuffer();
   glNamedBufferData(pass->progress_.get(), sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
+  const std::string buffer = glAllocationError(GlAllocation::Buffer);
+  if (!buffer.empty()) {
+    whyNot = "GL could not allocate the peeling's progress buffer (" + buffer + ")";
+    return nullptr;
+  }
   pass->emptyVertexArray_ = createVertexArray();
   pass->textureUnits_ = glInteger(GL_MAX_TEXTURE_IMAGE_UNITS);
   pass->firstUnit_ = firstPeelUnit(pass->textureUnits_);
@@ -39,10 +46,15 @@ std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
 
 PeelPass::~PeelPass() = default;
 
-void PeelPass::allocate(int width, int height) {
-  if (width == width_ && height == height_) return;
+std::string PeelPass::prepare(int x, int y, int width, int height) {
+  return allocate(x + width, y + height);
+}
+
+std::string PeelPass::allocate(int width, int height) {
+  if (width == width_ && height == height_) return {};
   width_ = width;
   height_ = height;
+  clearGlErrors();
   for (int i = 0; i < 2; ++i) {
     depthRange_[i] = createTarget2D(GL_RG32F, width, height);
     front_[i] = createTarget2D(GL_RGBA32F, width, height);
@@ -63,6 +75,31 @@ void PeelPass::allocate(int width, int height) {
   backFramebuffer_ = createFramebuffer();
   glNamedFramebufferTexture(backFramebuffer_.get(), GL_COLOR_ATTACHMENT0, backAccumulation_.get(),
                             0);
+  std::string failure = glAllocationError(GlAllocation::Texture);
+  if (!failure.empty()) {
+    failure = "GL could not allocate the peel targets (" + failure + ")";
+  } else {
+    for (GLuint fbo :
+         {peelFramebuffer_[0].get(), peelFramebuffer_[1].get(), backFramebuffer_.get()}) {
+      const std::string incomplete = framebufferIncompleteness(fbo);
+      if (incomplete.empty()) continue;
+      failure = "the peel framebuffer is incomplete (" + incomplete + ")";
+      break;
+    }
+  }
+  if (failure.empty()) return {};
+  // Nothing kept: the next frame tries again.
+  for (int i = 0; i < 2; ++i) {
+    depthRange_[i].reset();
+    front_[i].reset();
+    peelFramebuffer_[i].reset();
+  }
+  backLayer_.reset();
+  backAccumulation_.reset();
+  opaqueDepth_.reset();
+  backFramebuffer_.reset();
+  width_ = height_ = 0;
+  return failure;
 }
 
 namespace {
@@ -105,7 +142,8 @@ void PeelPass::begin(int x, int y, int width, int height) {
       GlStateScope::Textures{{firstUnit_, firstUnit_ + 1, firstUnit_ + 2}, {GL_TEXTURE_2D}});
   targetFramebuffer_ = saved_->drawFramebuffer();
   viewport_ = {x, y, width, height};
-  // Window coordinates index the targets directly, so they reach the viewport's far corner.
+  // Window coordinates index the targets directly, so they reach the viewport's far corner
+  // (prepare() made them for this viewport: nothing is allocated here).
   allocate(x + width, y + height);
 
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(targetFramebuffer_));

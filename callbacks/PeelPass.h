@@ -31,6 +31,11 @@ class PeelPass {
   // GL_MAX_TEXTURE_IMAGE_UNITS of the context (read once).
   int textureUnits() const { return textureUnits_; }
 
+  // Allocates the targets for a viewport (x, y, width, height) in window coordinates, before
+  // anything is drawn. Empty when they are ready; else what GL said (GL_OUT_OF_MEMORY, an
+  // incomplete framebuffer), and the subgraph cannot be peeled in this viewport.
+  std::string prepare(int x, int y, int width, int height);
+
   // Around the opaque pass: binds the progress flag, cleared, for the opaque variant to raise
   // on a transparent fragment it discards. endOpaque() restores the binding and returns
   // whether one was raised (waiting for the pass); without one there is nothing to peel.
@@ -62,7 +67,7 @@ class PeelPass {
 
  private:
   PeelPass() = default;
-  void allocate(int width, int height);
+  std::string allocate(int width, int height);
 
   GlProgram composite_;
   GlBuffer progress_;

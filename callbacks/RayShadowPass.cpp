@@ -1,5 +1,6 @@
 #include "callbacks/RayShadowPass.h"
 
+#include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/PixelStoreScope.h"
@@ -22,13 +23,14 @@ std::size_t targetOf(int layer) {
 
 }  // namespace
 
-void RayShadowPass::allocate(int width, int height) {
-  if (width == width_ && height == height_) return;
+std::string RayShadowPass::allocate(int width, int height) {
+  if (width == width_ && height == height_) return {};
   width_ = width;
   height_ = height;
   positions_.clear();
   normals_.clear();
   framebuffers_.clear();
+  clearGlErrors();
   depth_ = createTarget2D(GL_DEPTH_COMPONENT32F, width, height);
   const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   for (int i = 0; i < 3; ++i) {
@@ -42,9 +44,25 @@ void RayShadowPass::allocate(int width, int height) {
     glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_.get(), 0);
     glNamedFramebufferDrawBuffers(fbo, 2, buffers);
   }
+  std::string failure = glAllocationError(GlAllocation::Texture);
+  if (!failure.empty()) {
+    failure = "GL could not allocate the ray capture targets (" + failure + ")";
+  } else {
+    const std::string incomplete = framebufferIncompleteness(framebuffers_.front().get());
+    if (!incomplete.empty())
+      failure = "the ray capture framebuffer is incomplete (" + incomplete + ")";
+  }
+  if (failure.empty()) return {};
+  // Nothing kept: the next capture (the view or the casters changed) tries again.
+  positions_.clear();
+  normals_.clear();
+  framebuffers_.clear();
+  depth_.reset();
+  width_ = height_ = 0;
+  return failure;
 }
 
-void RayShadowPass::beginCapture(int x, int y, int width, int height) {
+std::string RayShadowPass::beginCapture(int x, int y, int width, int height) {
   // Until endCapture(): the capture targets, their depth test and the previous captures on
   // two units. Binding texture 0 there unbinds every target, so both kinds are saved.
   saved_ = std::make_unique<GlStateScope>(
@@ -53,9 +71,11 @@ void RayShadowPass::beginCapture(int x, int y, int width, int height) {
       GlStateScope::Textures{{unit(kOpaqueUnit), unit(kPreviousUnit)},
                              {GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY}});
   viewport_ = {x, y, width, height};
-  allocate(x + width, y + height);
+  const std::string failure = allocate(x + width, y + height);
+  if (!failure.empty()) return failure;
   // Capture writes positions, not colours: blending would mix them.
   glDisable(GL_BLEND);
+  return {};
 }
 
 void RayShadowPass::startLayer(int layer, const UniformLocations& program) {
@@ -105,20 +125,24 @@ void RayShadowPass::endCapture() {
   saved_.reset();
 }
 
-void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
-                           bool surfacesChanged, const std::vector<std::uint16_t>& visibility,
-                           int rays) {
-  if (count == 0 || rays == 0) {
+std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
+                                  bool surfacesChanged,
+                                  const std::vector<std::uint16_t>& visibility, int rays) {
+  const auto release = [this] {
     uploadedLayers_ = 0;
     uploadedRays_ = 0;
     shadingDepth_.reset();
     shadingVisibility_.reset();
     shadingWidth_ = shadingHeight_ = 0;
-    return;
+  };
+  if (count == 0 || rays == 0) {
+    release();
+    return {};
   }
   const int width = layers.front().width, height = layers.front().height;
   if (width != shadingWidth_ || height != shadingHeight_ || count != uploadedLayers_ ||
       rays != uploadedRays_) {
+    clearGlErrors();
     shadingDepth_ = createTexture(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(shadingDepth_.get(), 1, GL_R32F, width, height, count);
     shadingVisibility_ = createTexture(GL_TEXTURE_2D_ARRAY);
@@ -127,6 +151,11 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
     for (const GlTexture* texture : {&shadingDepth_, &shadingVisibility_}) {
       glTextureParameteri(texture->get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
       glTextureParameteri(texture->get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    const std::string failure = glAllocationError(GlAllocation::Texture);
+    if (!failure.empty()) {
+      release();
+      return "GL could not allocate the traced shadows' textures (" + failure + ")";
     }
     shadingWidth_ = width;
     shadingHeight_ = height;
@@ -147,6 +176,7 @@ void RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
   }
   glTextureSubImage3D(shadingVisibility_.get(), 0, 0, 0, 0, width, height, count * rays, GL_RGBA,
                       GL_HALF_FLOAT, visibility.data());
+  return {};
 }
 
 std::unique_ptr<GlStateScope> RayShadowPass::bind() const {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ivshadow {
@@ -28,8 +29,9 @@ class RayShadowPass {
   explicit RayShadowPass(int firstUnit) : firstUnit_(firstUnit) {}
 
   // Saves GL state and sizes the capture targets to the viewport's far corner (window
-  // coordinates index them).
-  void beginCapture(int x, int y, int width, int height);
+  // coordinates index them). Empty when the targets are ready; else what GL said when
+  // allocating them (nothing can be captured: the caller ends the capture at once).
+  std::string beginCapture(int x, int y, int width, int height);
   // Binds layer k's target (0: opaque), clears it and sets the capture uniforms of
   // `program`, the capture variant of the shading program bound for this layer.
   void startLayer(int layer, const UniformLocations& program);
@@ -42,14 +44,16 @@ class RayShadowPass {
   // Uploads the captured depths of the first `count` layers and the visibility of `rays`
   // lights for the shading pass. `surfacesChanged` false: the layers are the ones uploaded
   // last (only the lights moved), whose depths the textures still hold.
-  void upload(const std::vector<SurfaceLayer>& layers, int count, bool surfacesChanged,
-              const std::vector<std::uint16_t>& visibility, int rays);
+  // Empty when uploaded; else what GL said when allocating the textures, which then hold
+  // nothing (layers() is 0: the lights are shaded without shadows).
+  std::string upload(const std::vector<SurfaceLayer>& layers, int count, bool surfacesChanged,
+                     const std::vector<std::uint16_t>& visibility, int rays);
   int layers() const { return uploadedLayers_; }
   // Binds the shading textures until the returned scope ends.
   std::unique_ptr<GlStateScope> bind() const;
 
  private:
-  void allocate(int width, int height);
+  std::string allocate(int width, int height);
   int unit(int i) const { return firstUnit_ + i; }
 
   int firstUnit_ = 0;

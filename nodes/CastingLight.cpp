@@ -3,6 +3,7 @@
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DeepShadowSettings.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/errors/SoDebugError.h>
@@ -12,15 +13,13 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 #include <string>
 
 namespace ivshadow {
 namespace {
 
 void warnCannotCast(const SoLight& light, const std::string& why) {
-  static std::set<const SoLight*> warned;
-  if (!warned.insert(&light).second) return;
+  if (!firstWarning(&light, "cannot cast")) return;
   const std::string name = light.getName().getString();
   const std::string type = std::string("So") + light.getTypeId().getName().getString();
   const std::string label = name.empty() ? type : type + " \"" + name + "\"";

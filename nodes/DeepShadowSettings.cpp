@@ -6,6 +6,7 @@
 #include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/ShadowFields.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/errors/SoDebugError.h>
 
@@ -19,14 +20,6 @@
 namespace ivshadow {
 namespace {
 
-// Lights already warned about, per field, so that a bad value is reported once and not on
-// every frame. Entries go when Coin reuses the address for a new node only in theory; the
-// cost of a missed warning then is one warning fewer.
-std::set<std::pair<const SoNode*, std::string>>& warned() {
-  static std::set<std::pair<const SoNode*, std::string>> fields;
-  return fields;
-}
-
 // "SoDeepShadowLight \"Lamp\"", "SoTransparentShadowGroup": the class as Coin's messages
 // name it, and the node's name when it has one.
 std::string nodeClass(const SoNode& node) {
@@ -39,7 +32,7 @@ std::string nodeLabel(const SoNode& node) {
 }
 
 void warnOnce(const SoNode& light, const char* field, const std::string& what) {
-  if (!warned().insert({&light, field}).second) return;
+  if (!firstWarning(&light, field)) return;
   SoDebugError::postWarning(nodeClass(light).c_str(), "%s: field %s %s", nodeLabel(light).c_str(),
                             field, what.c_str());
 }

@@ -8,7 +8,9 @@
 #include "ivshadow/SoPeelingSeparator.h"
 #include "nodes/GroupShading.h"
 #include "nodes/ShadowGroupElement.h"
+#include "nodes/SuspendedRenderCaches.h"
 #include "nodes/TransparencyOverride.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -23,10 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <mutex>
-#include <set>
 #include <string>
-#include <utility>
 
 namespace ivshadow {
 namespace {
@@ -55,13 +54,8 @@ void setPeelPassState(SoState* state) {
 }
 
 // Says once per node and reason why a view is peeled instead of listed.
-void warnListsNotUsed(const SoNode* owner, int reason, const std::string& why) {
-  static std::mutex mutex;
-  static std::set<std::pair<const SoNode*, int>> warned;
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    if (!warned.insert({owner, reason}).second) return;
-  }
+void warnListsNotUsed(const SoNode* owner, const std::string& reason, const std::string& why) {
+  if (!firstWarning(owner, "fragment lists: " + reason)) return;
   const char* node =
       owner != nullptr ? owner->getTypeId().getName().getString() : "SoPeelingSeparator";
   SoDebugError::postWarning(node, "fragment lists not used, peeling instead: %s", why.c_str());
@@ -77,7 +71,7 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
   std::string whyNot;
   FragmentListPass* lists = pass.fragmentLists(whyNot);
   if (lists == nullptr) {
-    warnListsNotUsed(options.owner, 0, whyNot);
+    warnListsNotUsed(options.owner, "unavailable", whyNot);
     return false;
   }
   SoState* state = action->getState();
@@ -106,11 +100,11 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
     return true;
   }
   if (outcome == FragmentListPass::Outcome::Crowded)
-    warnListsNotUsed(options.owner, 1,
+    warnListsNotUsed(options.owner, "crowded",
                      "a pixel holds more than " + std::to_string(kMaxFragmentsPerPixel) +
                          " transparent surfaces");
   else if (passes > 0)
-    warnListsNotUsed(options.owner, 2,
+    warnListsNotUsed(options.owner, "storage",
                      "the view needs " + std::to_string(lists->neededBytes() >> 20) +
                          " MiB of fragments, more than GL gives");
   return false;
@@ -118,12 +112,30 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
 
 }  // namespace
 
-void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
-                  const PeelOptions& options, const std::function<void(SoGLRenderAction*)>& draw,
-                  PeelStatistics& statistics) {
+std::string peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
+                         const PeelOptions& options,
+                         const std::function<void(SoGLRenderAction*)>& draw,
+                         PeelStatistics& statistics) {
   SoState* state = action->getState();
+  {
+    // Before the opaque pass: a failure found after it would leave the transparent surfaces
+    // undrawn, or drawn twice.
+    const SbViewportRegion& region = SoViewportRegionElement::get(state);
+    const SbVec2s origin = region.getViewportOriginPixels();
+    const SbVec2s size = region.getViewportSizePixels();
+    const std::string failure = pass.prepare(origin[0], origin[1], size[0], size[1]);
+    if (!failure.empty()) {
+      statistics.passes = 0;
+      statistics.peelMs = statistics.gpuPeelMs = 0.0;
+      return failure;
+    }
+  }
   // Each pass sets its own uniforms and targets; no cache above may replay one of them.
   SoCacheElement::invalidate(state);
+  // Nor may a cache below: one recorded in an earlier frame, replayed between the passes,
+  // drew its shapes apart from the depths the passes compare (a layer of peeled_glasses.iv
+  // was never peeled, and dual peeling ran all 64 passes from the second frame on).
+  const SuspendedRenderCaches noCaches;
 
   state->push();
   // The opaque pass discards transparent fragments; drawn at once, none is delayed. Blending
@@ -141,7 +153,7 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
   const bool transparentSeen = opaqueBound && pass.endOpaque();
   state->pop();
   // Without the opaque variant (Coin has said why) the plain pass drew everything.
-  if (!opaqueBound) return;
+  if (!opaqueBound) return {};
 
   const auto start = std::chrono::steady_clock::now();
   const int cap = options.maxPasses > 0
@@ -188,6 +200,7 @@ void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shadin
   statistics.peelMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics.frames;
+  return {};
 }
 
 }  // namespace ivshadow

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 class SoGLRenderAction;
 class SoNode;
@@ -30,9 +31,12 @@ struct PeelOptions {
 // subgraph once, as a plain separator would. With early termination, a view in which the
 // opaque pass met no transparent fragment is finished after that pass (no peel pass). The
 // last frame's passes and times go into `statistics`. Used by SoPeelingSeparator and by
-// SoTransparentShadowGroup's default transparency.
-void peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
-                  const PeelOptions& options, const std::function<void(SoGLRenderAction*)>& draw,
-                  PeelStatistics& statistics);
+// SoTransparentShadowGroup's default transparency. Returns empty; or, when GL could not make
+// the peel targets for this viewport, what it said, having drawn nothing: the caller then
+// draws the subgraph with Coin's blending.
+std::string peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading& shading,
+                         const PeelOptions& options,
+                         const std::function<void(SoGLRenderAction*)>& draw,
+                         PeelStatistics& statistics);
 
 }  // namespace ivshadow

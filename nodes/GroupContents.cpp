@@ -5,6 +5,7 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
 #include "nodes/NodesOfType.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SoPath.h>
@@ -15,8 +16,6 @@
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoEnvironment.h>
 #include <Inventor/nodes/SoSeparator.h>
-
-#include <set>
 
 namespace ivshadow {
 namespace {
@@ -80,8 +79,7 @@ void GroupContents::findLights() {
                       where))
       return;
     if (int(lights_.size()) >= kMaxGlLights) {
-      static std::set<const SoLight*> warned;
-      if (warned.insert(light).second)
+      if (firstWarning(light, "too many lights"))
         SoDebugError::postWarning(
             "SoTransparentShadowGroup",
             "light %s lights without a shadow: at most %d lights of a group cast",
@@ -123,12 +121,13 @@ void GroupContents::update(SoAction* action) {
     const CoinRef<SoPath> toGroup(action->getCurPath()->copy());
     casters_ = extractShadowCasters(toGroup.get());
     castersValid_ = true;
-    // Neither method can cast a shadow from lines or points: say so once per shape.
-    static std::set<std::string> warnedShapes;
+    // Neither method can cast a shadow from lines, points or screen-aligned pixels: say so
+    // once per shape.
     for (const std::string& shape : casters_.withoutTriangles)
-      if (warnedShapes.insert(shape).second)
+      if (firstWarning(nullptr, "without triangles: " + shape))
         SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                  "%s is drawn with lines or points, which cast no shadow",
+                                  "%s is drawn with lines, points or screen-aligned pixels, which "
+                                  "cast no shadow",
                                   shape.c_str());
     ++castersVersion_;
   }

@@ -5,6 +5,7 @@
 #include "callbacks/GlMemoryBudget.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "nodes/MapState.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/SbBox3f.h>
 #include <Inventor/SbMatrix.h>
@@ -16,7 +17,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <set>
 #include <string>
 
 namespace ivshadow {
@@ -190,13 +190,11 @@ std::uint64_t mapMemoryBudget(bool softwareRenderer) {
   char* end = nullptr;
   const long long bytes = std::strtoll(text, &end, 10);
   if (end == text || *end != '\0' || bytes <= 0) {
-    static bool warned = false;
-    if (!warned)
+    if (firstWarning(nullptr, "IVSHADOW_GL_MEMORY_LIMIT"))
       SoDebugError::postWarning("SoTransparentShadowGroup",
                                 "IVSHADOW_GL_MEMORY_LIMIT is '%s', expected a number of bytes "
                                 "above 0; ignored",
                                 text);
-    warned = true;
     return budget;
   }
   return budget == 0 ? std::uint64_t(bytes) : std::min(budget, std::uint64_t(bytes));
@@ -216,15 +214,21 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     request.resolution /= 2;
   const int fitted = request.resolution;
   MapBuildResult built = pass.build(slot, request);
-  if (built.noProgram) {
-    // Once per process: the program is the same for every light and group.
-    static bool warned = false;
-    if (!warned)
+  const std::string name = lightNode.getName().getString();
+  const std::string type = std::string("So") + lightNode.getTypeId().getName().getString();
+  const std::string label = name.empty() ? type : type + " \"" + name + "\"";
+  if (built.noProgram || !built.failure.empty()) {
+    // The program is the same for every light and group: its failure is said once per
+    // process. Another failure (GL could not allocate what a map of any size needs) once per
+    // light.
+    if (built.noProgram && firstWarning(nullptr, "map program"))
       SoDebugError::postWarning("SoTransparentShadowGroup",
                                 "%s; lights with method MAP light "
                                 "without a shadow",
                                 pass.programError().c_str());
-    warned = true;
+    if (!built.noProgram && firstWarning(&lightNode, "map failure"))
+      SoDebugError::postWarning(type.c_str(), "%s: %s; it lights without a shadow", label.c_str(),
+                                built.failure.c_str());
     map.faceLayers = {};
     light.resolution = 0;
     return;
@@ -233,11 +237,9 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     request.resolution /= 2;
     built = pass.build(slot, request);
   }
-  static std::set<const SoNode*> warned;
-  if ((built.outOfMemory || request.resolution != asked) && warned.insert(&lightNode).second) {
-    const std::string name = lightNode.getName().getString();
-    const std::string type = std::string("So") + lightNode.getTypeId().getName().getString();
-    const std::string label = name.empty() ? type : type + " \"" + name + "\"";
+  if (!built.failure.empty()) built.outOfMemory = true;  // appeared at a smaller size only
+  if ((built.outOfMemory || request.resolution != asked) &&
+      firstWarning(&lightNode, "map resolution")) {
     MapRequest wanted = request;
     wanted.resolution = asked;
     const auto megabytes = [](std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MB"; };

@@ -5,6 +5,8 @@
 #include "ivshadow/SoPeelingSeparator.h"
 #include "nodes/DepthPeeling.h"
 #include "nodes/ShadowGroupElement.h"
+#include "scene/SceneTriangles.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoCacheElement.h>
@@ -27,17 +29,12 @@ void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) 
 }
 
 PeelPass* PeelingSeparatorImpl::passFor(SoState* state) {
-  return passes_.get(SoGLCacheContextElement::get(state), [] {
+  return passes_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
     auto made = PeelPass::create(whyNot);
-    if (!made) {
-      static bool warned = false;
-      if (!warned) {
-        warned = true;
-        SoDebugError::postWarning("SoPeelingSeparator", "rendering without depth peeling: %s",
-                                  whyNot.c_str());
-      }
-    }
+    if (!made && firstWarning(owner_, "rendering without depth peeling: " + whyNot))
+      SoDebugError::postWarning("SoPeelingSeparator", "%s: rendering without depth peeling: %s",
+                                describeNode(owner_).c_str(), whyNot.c_str());
     return made;
   });
 }
@@ -56,9 +53,11 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
     renderPlainly(action, inPath);
     return;
   }
-  // Inside a deep shadow group its program, uniforms and maps are already in place.
+  // Inside a deep shadow group its program, uniforms and maps are already in place; without
+  // peel targets the children are blended by Coin with them, as under the group's
+  // COIN_BLENDING.
   if (GroupShading* group = ShadowGroupElement::activeGroup(state)) {
-    peel(action, inPath, *group);
+    if (!peel(action, inPath, *group)) renderPlainly(action, inPath);
     return;
   }
   PeelPass* pass = passFor(state);
@@ -79,18 +78,20 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   shading_.apply();
   SoShapeStyleElement::setShadowsRendering(state, TRUE);
   ShadowGroupElement::setShading(state, &shading_);
-  peel(action, inPath, shading_);
+  const bool peeled = peel(action, inPath, shading_);
   shading_.end();
   SoShapeStyleElement::setShadowsRendering(state, FALSE);
   state->pop();
+  // Without peel targets: drawn as without a peel pass at all, a plain separator's children.
+  if (!peeled) renderPlainly(action, inPath);
 }
 
-void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShading& shading) {
+bool PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShading& shading) {
   PeelPass* pass = passFor(action->getState());
   // No program current: a SoShadowStyle above switched shading off for these shapes.
   if (pass == nullptr || currentProgram() == 0) {
     renderPlainly(action, inPath);
-    return;
+    return true;
   }
   PeelOptions options;
   const int method = owner_->method.getValue();
@@ -99,9 +100,15 @@ void PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShad
   options.owner = owner_;
   options.maxPasses = owner_->maxPasses.getValue();
   options.earlyTermination = owner_->earlyTermination.getValue();
-  peelSubgraph(
+  const std::string failure = peelSubgraph(
       action, *pass, shading, options,
       [this, inPath](SoGLRenderAction* drawing) { renderPlainly(drawing, inPath); }, statistics_);
+  if (failure.empty()) return true;
+  if (firstWarning(owner_, "no peel targets: " + failure))
+    SoDebugError::postWarning("SoPeelingSeparator",
+                              "%s: %s; its transparency is blended by Coin, without depth peeling",
+                              describeNode(owner_).c_str(), failure.c_str());
+  return false;
 }
 
 }  // namespace ivshadow

@@ -31,7 +31,9 @@ class PeelingSeparatorImpl {
  private:
   // The passes of this context; null (with one warning) when it cannot peel.
   PeelPass* passFor(SoState* state);
-  void peel(SoGLRenderAction* action, bool inPath, GroupShading& shading);
+  // False when GL could not make the peel targets: nothing was drawn, and the caller draws the
+  // children plainly.
+  bool peel(SoGLRenderAction* action, bool inPath, GroupShading& shading);
   void renderPlainly(SoGLRenderAction* action, bool inPath);
 
   SoPeelingSeparator* owner_;

@@ -44,7 +44,13 @@ SharedDevice& sharedDevice() {
   static SharedDevice* shared = [] {
     auto* made = new SharedDevice;
     made->memory.limit = embreeMemoryLimit();
-    made->device = createEmbreeDevice(made->error, &made->memory);
+    // IVSHADOW_FAIL_EMBREE=device: the failure tests force, taking the path of a machine
+    // where Embree cannot start (no supported CPU, no memory).
+    const char* fail = std::getenv("IVSHADOW_FAIL_EMBREE");
+    if (fail != nullptr && std::string(fail) == "device")
+      made->error = "Embree could not create a device (forced by IVSHADOW_FAIL_EMBREE=device)";
+    else
+      made->device = createEmbreeDevice(made->error, &made->memory);
     return made;
   }();
   return *shared;

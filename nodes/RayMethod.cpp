@@ -8,6 +8,7 @@
 #include "nodes/MapState.h"
 #include "nodes/RayCasters.h"
 #include "nodes/ShadowGroupElement.h"
+#include "nodes/SuspendedRenderCaches.h"
 #include "nodes/TransparencyOverride.h"
 #include "raytrace/ScreenShadowTracer.h"
 
@@ -21,6 +22,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <chrono>
+#include <optional>
 
 namespace ivshadow {
 
@@ -28,10 +30,11 @@ RayMethod::RayMethod(int textureUnit) : pass_(std::make_unique<RayShadowPass>(te
 
 RayMethod::~RayMethod() = default;
 
-void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
-                       GroupShading& shading, const RayCasters& casters,
-                       const std::vector<MapState>& maps, const ChildrenRenderer& renderChildren,
-                       bool inPath, DeepShadowStatistics& statistics) {
+std::string RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
+                              GroupShading& shading, const RayCasters& casters,
+                              const std::vector<MapState>& maps,
+                              const ChildrenRenderer& renderChildren, bool inPath,
+                              DeepShadowStatistics& statistics) {
   SoState* state = action->getState();
   const SbViewportRegion& region = SoViewportRegionElement::get(state);
   const SbVec2s origin = region.getViewportOriginPixels();
@@ -48,12 +51,13 @@ void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
     for (int i = 0; i < 16; ++i)
       key.capture.matrices[std::size_t(m * 16 + i)] = (*matrices[m])[i / 4][i % 4];
   // Nothing that the traced shadows depend on changed: the last trace still holds.
-  if (traceValid_ && key == traced_) return;
+  if (traceValid_ && key == traced_) return {};
   const auto start = std::chrono::steady_clock::now();
   // Only lights changed: the camera sees the same surfaces, which are traced again as they
   // were captured.
   const bool recapture = !traceValid_ || !(key.capture == traced_.capture);
-  if (recapture) capture(action, contents, shading, renderChildren, inPath, statistics);
+  std::string failure;
+  if (recapture) failure = capture(action, contents, shading, renderChildren, inPath, statistics);
   const auto captured = std::chrono::steady_clock::now();
 
   std::vector<RayLight> lights;
@@ -70,8 +74,10 @@ void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
           ? traceScreenShadows(*casters.scene(), surfaces_, capturedLayers_, lights, visibility_)
           : 0;
   const auto tracedAt = std::chrono::steady_clock::now();
-  pass_->upload(surfaces_, int(capturedLayers_), recapture, visibility_,
-                visibility_.empty() ? 0 : int(lights.size()));
+  const std::string uploaded =
+      pass_->upload(surfaces_, int(capturedLayers_), recapture, visibility_,
+                    visibility_.empty() ? 0 : int(lights.size()));
+  if (failure.empty()) failure = uploaded;
   traced_ = key;
   traceValid_ = true;
   statistics.raysTraced = traced;
@@ -83,11 +89,12 @@ void RayMethod::update(SoGLRenderAction* action, const GroupContents& contents,
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ++statistics.rayFrames;
   if (recapture) ++statistics.rayCaptures;
+  return failure;
 }
 
-void RayMethod::capture(SoGLRenderAction* action, const GroupContents& contents,
-                        GroupShading& shading, const ChildrenRenderer& renderChildren,
-                        bool inPath, DeepShadowStatistics& statistics) {
+std::string RayMethod::capture(SoGLRenderAction* action, const GroupContents& contents,
+                               GroupShading& shading, const ChildrenRenderer& renderChildren,
+                               bool inPath, DeepShadowStatistics& statistics) {
   SoState* state = action->getState();
   const SbViewportRegion& region = SoViewportRegionElement::get(state);
   const SbVec2s origin = region.getViewportOriginPixels();
@@ -103,16 +110,15 @@ void RayMethod::capture(SoGLRenderAction* action, const GroupContents& contents,
   ShadowGroupElement::setCapturing(state, true);
   // A render cache recorded here would hold the capture's state and uniforms and replay them
   // in the shading pass (Mesa then fails the display list): the captures record none.
-  const int renderCaches = SoSeparator::getNumRenderCaches();
-  SoSeparator::setNumRenderCaches(0);
+  std::optional<SuspendedRenderCaches> noCaches(std::in_place);
   const bool timed = passTiming();
   if (timed) captureTimer_.start();
-  rays.beginCapture(origin[0], origin[1], size[0], size[1]);
+  const std::string failure = rays.beginCapture(origin[0], origin[1], size[0], size[1]);
   // Without a transparent caster there is rarely a transparent surface to capture: one pass
   // then does (a transparent shape that only receives takes the opaque surface's shadow).
   const int lastLayer =
       contents.casters().hasTransparent ? RayShadowPass::kMaxTransparentLayers : 0;
-  for (int layer = 0; layer <= lastLayer; ++layer) {
+  for (int layer = 0; failure.empty() && layer <= lastLayer; ++layer) {
     const UniformLocations* capture = shading.bind(
         action, layer == 0 ? ShadingVariant::CaptureOpaque : ShadingVariant::CaptureTransparent);
     if (capture == nullptr) break;  // Coin has said why it did not build
@@ -128,13 +134,14 @@ void RayMethod::capture(SoGLRenderAction* action, const GroupContents& contents,
     captureTimer_.stop();
     statistics.gpuCaptureMs = captureTimer_.elapsedMs();
   }
-  SoSeparator::setNumRenderCaches(renderCaches);
+  noCaches.reset();
   state->pop();
   // The captures drew into targets Coin did not choose; GL is restored, and Coin must not
   // trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 
   capturedLayers_ = layerCount;
+  return failure;
 }
 
 }  // namespace ivshadow

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 class SoGLRenderAction;
@@ -40,10 +41,13 @@ class RayMethod {
 
   // Captures (unless the view and what is drawn are unchanged) and traces again unless
   // nothing the last trace depends on has changed; records times and counts in `statistics`.
-  void update(SoGLRenderAction* action, const GroupContents& contents, GroupShading& shading,
-              const RayCasters& casters, const std::vector<MapState>& maps,
-              const ChildrenRenderer& renderChildren, bool inPath,
-              DeepShadowStatistics& statistics);
+  // Empty, or what GL said when the capture targets or the traced shadows' textures could not
+  // be allocated: then no shadow is traced or bound (the RAYS lights light without one) until
+  // a change asks for a new trace.
+  std::string update(SoGLRenderAction* action, const GroupContents& contents, GroupShading& shading,
+                     const RayCasters& casters, const std::vector<MapState>& maps,
+                     const ChildrenRenderer& renderChildren, bool inPath,
+                     DeepShadowStatistics& statistics);
   // The traced visibility as the shading pass binds it.
   RayShadowPass& pass() { return *pass_; }
 
@@ -73,10 +77,11 @@ class RayMethod {
   };
 
   // Draws the children into the capture targets and reads their surface layers back into
-  // surfaces_ (capturedLayers_ of them).
-  void capture(SoGLRenderAction* action, const GroupContents& contents, GroupShading& shading,
-               const ChildrenRenderer& renderChildren, bool inPath,
-               DeepShadowStatistics& statistics);
+  // surfaces_ (capturedLayers_ of them). Empty, or why the targets could not be made (then
+  // no layer is captured).
+  std::string capture(SoGLRenderAction* action, const GroupContents& contents,
+                      GroupShading& shading, const ChildrenRenderer& renderChildren, bool inPath,
+                      DeepShadowStatistics& statistics);
 
   std::unique_ptr<RayShadowPass> pass_;
   GlPassTimer captureTimer_;

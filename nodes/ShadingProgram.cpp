@@ -12,6 +12,7 @@
 #include <Inventor/nodes/SoShaderProgram.h>
 #include <Inventor/nodes/SoVertexShader.h>
 
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,15 @@ VariantSource sourceOf(ShadingVariant variant) {
   return {};
 }
 
+// Making a variant sets fields (its sources), and so does binding one (Coin fills the coin_*
+// parameters in from the state): each notifies through Coin's notification counter and sensor
+// queue, which a Coin built without COIN_THREADSAFE (Debian's) does not guard. Contexts
+// rendering on several threads make and bind the plugin's programs one at a time.
+std::mutex& programFieldsMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 }  // namespace
 
 ShadingProgram::ShadingProgram() = default;
@@ -80,7 +90,10 @@ SoShaderProgram* ShadingProgram::node(ShadingVariant variant) {
 }
 
 const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVariant variant) {
-  node(variant)->GLRender(action);
+  {
+    const std::lock_guard<std::mutex> lock(programFieldsMutex());
+    node(variant)->GLRender(action);
+  }
   const unsigned int program = currentProgram();
   if (program == 0) return nullptr;
   // Coin fills in coin_light_model and coin_two_sided_lighting when the program is bound (from

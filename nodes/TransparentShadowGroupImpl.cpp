@@ -14,6 +14,8 @@
 #include "nodes/RayMethod.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparencyOverride.h"
+#include "scene/SceneTriangles.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -50,6 +52,16 @@ const char* methodName(int method) {
 std::string lightName(const SoLight& light) {
   const std::string name = light.getName().getString();
   return name.empty() ? std::string("(unnamed)") : "'" + name + "'";
+}
+
+// Once per light: GL could not give what its shadow needs, and it lights without one.
+void warnNoShadow(const SoLight& light, const std::string& failure) {
+  if (!firstWarning(&light, "no shadow: " + failure)) return;
+  const std::string name = light.getName().getString();
+  const std::string type = std::string("So") + light.getTypeId().getName().getString();
+  const std::string label = name.empty() ? type : type + " \"" + name + "\"";
+  SoDebugError::postWarning(type.c_str(), "%s: %s; it lights without a shadow", label.c_str(),
+                            failure.c_str());
 }
 
 }  // namespace
@@ -199,10 +211,10 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
     context.peelTried = true;
     std::string whyNot;
     context.peel = PeelPass::create(whyNot);
-    if (!context.peel)
+    if (!context.peel && firstWarning(owner_, "no peel pass: " + whyNot))
       SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                "transparency composited by Coin, without depth peeling: %s",
-                                whyNot.c_str());
+                                "%s: transparency composited by Coin, without depth peeling: %s",
+                                describeNode(owner_).c_str(), whyNot.c_str());
   }
   if (!peel || !context.peel) {
     peelStatistics_.passes = 0;
@@ -218,10 +230,17 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
   options.dual = true;
   options.fragmentLists = true;
   options.owner = owner_;
-  peelSubgraph(
+  const std::string failure = peelSubgraph(
       action, *context.peel, shading_, options,
       [this, inPath](SoGLRenderAction* drawing) { renderChildren_(drawing, inPath); },
       peelStatistics_);
+  if (failure.empty()) return;
+  // As under transparency COIN_BLENDING: the shading and shadows stay, Coin blends.
+  if (firstWarning(owner_, "no peel targets: " + failure))
+    SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                              "%s: %s; transparency composited by Coin, without depth peeling",
+                              describeNode(owner_).c_str(), failure.c_str());
+  renderChildren_(action, inPath);
 }
 
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
@@ -239,9 +258,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     auto pass = DeepShadowPass::create(whyNot);
     if (!pass) {
       // One warning per node class, naming the class the user put in the scene.
-      static std::set<std::string> warned;
       const std::string node = owner_->getTypeId().getName().getString();
-      if (warned.insert(node).second)
+      if (firstWarning(nullptr, "rendering without deep shadows: " + node))
         SoDebugError::postWarning(node.c_str(), "rendering without deep shadows: %s",
                                   whyNot.c_str());
       return std::unique_ptr<Context>();
@@ -268,6 +286,14 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   state->push();
   ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits());
   if (uniforms == nullptr) {
+    // Coin bound no program for the shading variant. When it failed to compile or link Coin
+    // has said why; when it declined to draw it at all it says nothing, and the group would
+    // render as a plain separator without a word (seen with two contexts on two threads).
+    if (firstWarning(owner_, "no shading program"))
+      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                "%s: Coin bound no shading program in this context; rendering "
+                                "without deep shadows",
+                                describeNode(owner_).c_str());
     state->pop();
     return false;
   }
@@ -310,8 +336,12 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   shading_.apply();
   if (rayCount > 0) {
     if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
-    context.rays->update(action, contents_, shading_, rayCasters_, context.maps, renderChildren_,
-                         inPath, statistics_);
+    const std::string failure =
+        context.rays->update(action, contents_, shading_, rayCasters_, context.maps,
+                             renderChildren_, inPath, statistics_);
+    if (!failure.empty())
+      for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot)
+        if (context.maps[slot].rays) warnNoShadow(*contents_.lights()[slot].light, failure);
     uniforms->rayLayers = context.rays->pass().layers();
     shading_.apply();
   }

@@ -26,11 +26,13 @@
 #include <Inventor/elements/SoLightElement.h>
 #include <Inventor/lists/SoNodeList.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoImage.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoPointLight.h>
 #include <Inventor/nodes/SoShape.h>
 #include <Inventor/nodes/SoShapeHints.h>
 #include <Inventor/nodes/SoSpotLight.h>
+#include <Inventor/nodes/SoText2.h>
 
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
@@ -234,9 +236,14 @@ void notTriangles(SoCallbackAction* action, Extraction& data) {
   if (data.skipped.count(node) == 0) data.skipped.emplace(node, describeNode(node));
 }
 
-SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, const SoNode*) {
+SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, const SoNode* node) {
   auto& data = *static_cast<Extraction*>(user);
   ++data.shape;
+  // Screen-aligned text and images give no primitive (extractShadowCasters): said, not drawn.
+  if (node->isOfType(SoText2::getClassTypeId()) || node->isOfType(SoImage::getClassTypeId())) {
+    notTriangles(action, data);
+    return SoCallbackAction::PRUNE;
+  }
   // SoCallbackAction generates a shape's triangles whatever the draw style, as for the
   // casters (extractShadowCasters): GL draws outlines or points, which this does not draw.
   switch (action->getDrawStyle()) {
@@ -653,7 +660,8 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   result.triangles = count;
   for (const auto& [node, name] : data.skipped)
     result.warnings.push_back(name +
-                              " is drawn with lines or points; the reference does not draw it");
+                              " is drawn with lines, points or screen-aligned pixels; the "
+                              "reference does not draw it");
   result.image.width = options.width;
   result.image.height = options.height;
   result.image.rgb.assign(std::size_t(options.width) * std::size_t(options.height) * 3, 0.0f);

@@ -10,7 +10,9 @@
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
 #include <Inventor/elements/SoDrawStyleElement.h>
 #include <Inventor/elements/SoTextureQualityElement.h>
+#include <Inventor/nodes/SoImage.h>
 #include <Inventor/nodes/SoShape.h>
+#include <Inventor/nodes/SoText2.h>
 #include <Inventor/nodes/SoTexture2.h>
 
 #include <cmath>
@@ -164,6 +166,12 @@ SoCallbackAction::Response startShape(void* data, SoCallbackAction* action, cons
   ++collector.shape;
   if (skipDefectiveShape(nullptr, action, node) == SoCallbackAction::PRUNE)
     return SoCallbackAction::PRUNE;
+  // Screen-aligned text and images: Coin draws their pixels at a projected point and gives a
+  // callback action no primitive, so they would cast nothing without a word.
+  if (node->isOfType(SoText2::getClassTypeId()) || node->isOfType(SoImage::getClassTypeId())) {
+    notTriangles(collector, action);
+    return SoCallbackAction::PRUNE;
+  }
   // SoCallbackAction generates a shape's triangles whatever the draw style; Coin's GL
   // rendering draws them as outlines or points (which cast nothing) or not at all.
   switch (action->getDrawStyle()) {

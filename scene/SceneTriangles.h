@@ -59,7 +59,8 @@ struct SceneTriangles {
   bool hasTransparent = false;          // some triangle lets light through
   bool hasColouredTransparent = false;  // ... and is not grey
   // Shapes that should cast but that Coin turns into lines or points (SoLineSet, SoPointSet,
-  // ...): they cast nothing. Type and DEF name of each, e.g. "LineSet 'Wire'".
+  // SoMarkerSet, ...) or draws as screen-aligned pixels (SoText2, SoImage): they cast nothing.
+  // Type and DEF name of each, e.g. "LineSet 'Wire'".
   std::vector<std::string> withoutTriangles;
 
   std::size_t triangleCount() const { return vertices.size() / 3; }

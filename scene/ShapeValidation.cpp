@@ -1,6 +1,7 @@
 #include "scene/ShapeValidation.h"
 
 #include "scene/SceneTriangles.h"
+#include "scene/WarnOnce.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/elements/SoCoordinateElement.h>
@@ -19,8 +20,6 @@
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include <algorithm>
-#include <mutex>
-#include <set>
 #include <utility>
 
 namespace ivshadow {
@@ -183,10 +182,7 @@ SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action, c
   if (defect.empty()) return SoCallbackAction::CONTINUE;
   // Casters are extracted again whenever the scene changes, and by every renderer in the
   // process: the warning is said once per shape.
-  static std::mutex mutex;
-  static std::set<const SoNode*> warned;
-  std::lock_guard<std::mutex> lock(mutex);
-  if (warned.insert(node).second)
+  if (firstWarning(node, "defective shape"))
     SoDebugError::postWarning("ivshadow",
                               "%s: %s; the shape casts no shadow and the reference "
                               "does not draw it",

@@ -167,10 +167,9 @@ TEST(RenderCommand, StatsReportPeeling) {
 // frame.
 TEST(RenderCommand, DualPeelingStopsEarlyOnEveryFrame) {
   const std::string dir = test::outputDir();
-  const test::ProcessResult result =
-      run({test::ivshadowExe(), "render", scene("peeled_glasses.iv"), "-o", dir + "/p.png",
-           "--size", "400x300", "--frames", "3", "--stats", dir + "/stats.json", "--set",
-           "Glasses.method=DUAL"});
+  const test::ProcessResult result = run(
+      {test::ivshadowExe(), "render", scene("peeled_glasses.iv"), "-o", dir + "/p.png", "--size",
+       "400x300", "--frames", "3", "--stats", dir + "/stats.json", "--set", "Glasses.method=DUAL"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   std::ifstream in(dir + "/stats.json");
   const nlohmann::json stats = nlohmann::json::parse(in);

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+
+namespace ivshadow {
+
+// The kinds of GL object the passes allocate and check.
+enum class GlAllocation { Texture, Buffer, Framebuffer };
+
+// Takes GL's pending errors off: an error raised before an allocation is not the
+// allocation's, and would otherwise be taken for its failure.
+void clearGlErrors();
+
+// After allocating objects of `kind` since clearGlErrors(): empty when GL raised no error;
+// else the error by name ("GL_OUT_OF_MEMORY"). Takes GL's errors off.
+// IVSHADOW_FAIL_GL, a comma-separated list of texture, buffer and framebuffer read once per
+// process, makes the kinds it names fail here as if GL had run out of memory: the one place
+// tests force the failures the passes must survive (docs/RELIABILITY.md).
+std::string glAllocationError(GlAllocation kind);
+
+// Empty when framebuffer object `framebuffer` is complete (glCheckNamedFramebufferStatus);
+// else its status by name. IVSHADOW_FAIL_GL=framebuffer reports every one incomplete.
+std::string framebufferIncompleteness(unsigned int framebuffer);
+
+}  // namespace ivshadow

@@ -1,0 +1,15 @@
+#pragma once
+
+#include <string>
+
+namespace ivshadow {
+
+// Whether this is the first time the process is about to warn about `what` of `subject` (a
+// node, or null for what concerns the process as a whole): the warnings of the plugin and of
+// the casters' extraction are said once, not on every frame or by every renderer. The keys
+// are the process's and guarded by one mutex, so that contexts rendering at once on several
+// threads neither race on the set nor say a warning twice. A node freed and another made at
+// its address is taken for the same node: one warning fewer, never one more.
+bool firstWarning(const void* subject, const std::string& what = std::string());
+
+}  // namespace ivshadow
