@@ -15,12 +15,15 @@ void main() {
        i != kNoFragment && count < IVSHADOW_MAX_FRAGMENTS_PER_PIXEL; i = fragments[i].next) {
     vec4 colour = fragments[i].colour;
     float depth = fragments[i].depth;
-    // Insertion by depth; surfaces at one depth (coincident caps) in the order of their
-    // colours' bits, so the picture does not depend on which fragment the GPU stored first.
+    // Insertion by depth; surfaces within kSameLayer of each other (coincident caps, whose
+    // depths round differently under another near and far plane) in the order of their
+    // colours' bits, so the picture depends neither on which fragment the GPU stored first
+    // nor on that rounding.
     uint key = packUnorm4x8(colour);
     int j = count++;
-    while (j > 0 && (depths[j - 1] > depth ||
-                     (depths[j - 1] == depth && packUnorm4x8(colours[j - 1]) > key))) {
+    while (j > 0 && (depths[j - 1] > depth + kSameLayer ||
+                     (abs(depths[j - 1] - depth) <= kSameLayer &&
+                      packUnorm4x8(colours[j - 1]) > key))) {
       depths[j] = depths[j - 1];
       colours[j] = colours[j - 1];
       --j;
