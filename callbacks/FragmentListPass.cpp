@@ -1,6 +1,7 @@
 #include "callbacks/FragmentListPass.h"
 
 #include "GlslSources.h"
+#include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/ShaderConstants.h"
@@ -19,11 +20,7 @@ constexpr GLuint kNoFragment = 0xffffffffu;
 }  // namespace
 
 std::unique_ptr<FragmentListPass> FragmentListPass::create(std::string& whyNot) {
-  // Image atomics (4.2) and shader storage (4.3); the rest of the plugin's peeling needs 4.5.
-  if (epoxy_gl_version() < 45) {
-    whyNot = "OpenGL 4.5 is needed for fragment lists";
-    return nullptr;
-  }
+  // Made by a PeelPass, which has checked for OpenGL 4.5 (image atomics and shader storage).
   std::unique_ptr<FragmentListPass> pass(new FragmentListPass);
   pass->resolve_ = GlProgram::link(
       composeShader(glsl::kPeelCompositeVert),
@@ -39,47 +36,60 @@ std::unique_ptr<FragmentListPass> FragmentListPass::create(std::string& whyNot) 
 
 FragmentListPass::~FragmentListPass() = default;
 
-std::uint64_t FragmentListPass::neededBytes() const {
-  return kHeaderBytes + used_ * std::uint64_t(kFragmentBytes);
+std::string FragmentListPass::tooLargeReason() const {
+  if (!failure_.empty()) return failure_;
+  return "the view needs " + std::to_string((kHeaderBytes + used_ * kFragmentBytes) >> 20) +
+         " MiB of fragments, more than GL gives";
 }
 
-void FragmentListPass::allocateImages(int width, int height) {
-  if (width == width_ && height == height_) return;
-  width_ = width;
-  height_ = height;
+std::string FragmentListPass::allocateImages(int width, int height) {
+  if (width == width_ && height == height_) return {};
+  width_ = height_ = 0;
+  clearGlErrors();
   heads_ = createTarget2D(GL_R32UI, width, height);
   counts_ = createTarget2D(GL_R32UI, width, height);
   opaqueDepth_ = createTarget2D(GL_DEPTH_COMPONENT32F, width, height);
+  std::string failure = glAllocationError(GlAllocation::Texture);
+  if (!failure.empty()) return "the fragment lists' images could not be made (" + failure + ")";
   framebuffer_ = createFramebuffer();
   glNamedFramebufferTexture(framebuffer_.get(), GL_DEPTH_ATTACHMENT, opaqueDepth_.get(), 0);
   // Depth only: the list pass writes its fragments to the buffer, no colour anywhere.
   glNamedFramebufferDrawBuffer(framebuffer_.get(), GL_NONE);
+  failure = framebufferIncompleteness(framebuffer_.get());
+  if (!failure.empty()) return "the fragment lists' framebuffer is incomplete (" + failure + ")";
+  width_ = width;
+  height_ = height;
+  return {};
 }
 
 bool FragmentListPass::allocateList(std::uint64_t fragments) {
   const std::uint64_t bytes = kHeaderBytes + fragments * std::uint64_t(kFragmentBytes);
   if (bytes > maxBytes_) return false;
-  while (glGetError() != GL_NO_ERROR) {
-  }
+  clearGlErrors();
   GlBuffer list = createBuffer();
   glNamedBufferData(list.get(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
-  if (glGetError() == GL_OUT_OF_MEMORY) return false;
+  if (!glAllocationError(GlAllocation::Buffer).empty()) return false;
   list_ = std::move(list);
   capacity_ = fragments;
   return true;
 }
 
-void FragmentListPass::begin(int x, int y, int width, int height) {
+bool FragmentListPass::begin(int x, int y, int width, int height) {
+  used_ = 0;
+  // Window coordinates index the images directly, so they reach the viewport's far corner.
+  failure_ = allocateImages(x + width, y + height);
+  if (!failure_.empty()) return false;
+  // Two fragments a pixel to begin with (an eighth of that where GL gives no more); finish()
+  // grows the buffer to what a view needs.
+  if (capacity_ == 0 && !allocateList(std::uint64_t(width) * std::uint64_t(height) * 2u) &&
+      !allocateList(std::uint64_t(width) * std::uint64_t(height) / 4u + 1u)) {
+    failure_ = "GL gives no storage for the fragment lists";
+    return false;
+  }
   saved_ = std::make_unique<GlStateScope>(
       GlStateScope::kFramebuffers | GlStateScope::kStorageBuffers | GlStateScope::kImageBindings);
   targetFramebuffer_ = saved_->drawFramebuffer();
   viewport_ = {x, y, width, height};
-  // Window coordinates index the images directly, so they reach the viewport's far corner.
-  allocateImages(x + width, y + height);
-  // Two fragments a pixel to begin with; finish() grows the buffer to what a view needs.
-  tooLarge_ = false;
-  if (capacity_ == 0 && !allocateList(std::uint64_t(width) * std::uint64_t(height) * 2u))
-    tooLarge_ = !allocateList(std::uint64_t(width) * std::uint64_t(height) / 4u + 1u);
 
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(targetFramebuffer_));
   glCopyTextureSubImage2D(opaqueDepth_.get(), 0, x, y, x, y, width, height);
@@ -88,7 +98,7 @@ void FragmentListPass::begin(int x, int y, int width, int height) {
   glClearTexImage(counts_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   const GLuint header[4] = {0u, GLuint(std::min<std::uint64_t>(capacity_, kNoFragment - 1u)), 0u,
                             0u};
-  if (list_) glNamedBufferSubData(list_.get(), 0, sizeof(header), header);
+  glNamedBufferSubData(list_.get(), 0, sizeof(header), header);
 
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kFragmentListBinding), list_.get());
@@ -96,6 +106,7 @@ void FragmentListPass::begin(int x, int y, int width, int height) {
                      GL_R32UI);
   glBindImageTexture(GLuint(kFragmentCountsUnit), counts_.get(), 0, GL_FALSE, 0, GL_READ_WRITE,
                      GL_R32UI);
+  return true;
 }
 
 FragmentListPass::Outcome FragmentListPass::finish() {
@@ -104,10 +115,9 @@ FragmentListPass::Outcome FragmentListPass::finish() {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                   GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   GLuint header[4] = {0u, 0u, 0u, 0u};
-  if (list_) glGetNamedBufferSubData(list_.get(), 0, sizeof(header), header);
+  glGetNamedBufferSubData(list_.get(), 0, sizeof(header), header);
   saved_.reset();
   used_ = header[0];
-  if (tooLarge_ || !list_) return Outcome::TooLarge;
   if (header[2] != 0u) return Outcome::Crowded;
   if (used_ <= capacity_) return Outcome::Stored;
   // A quarter more than this view needed, so that a view a little busier does not redo.

@@ -35,20 +35,23 @@ class FragmentListPass {
 
   // Saves GL state, sizes the images to cover the viewport (x, y, width, height) in window
   // coordinates, copies the opaque depth from the current framebuffer, empties the lists and
-  // switches to the list framebuffer with the buffer and images bound.
-  void begin(int x, int y, int width, int height);
-  // Waits for the list pass, restores the state begin() saved and says what it stored.
+  // switches to the list framebuffer with the buffer and images bound. False, with nothing
+  // changed, when GL cannot give the images or a first buffer (tooLargeReason() says why).
+  bool begin(int x, int y, int width, int height);
+  // After a begin() that returned true: waits for the list pass, restores the state begin()
+  // saved and says what it stored.
   Outcome finish();
   // Composites each pixel's sorted list over the framebuffer current at begin().
   void resolve();
   // Fragments the last pass stored (or tried to).
   std::uint64_t fragments() const { return used_; }
-  // Bytes the last view needed (the buffer's fragments), for messages.
-  std::uint64_t neededBytes() const;
+  // Why the view cannot be listed, after begin() returned false or finish() TooLarge.
+  std::string tooLargeReason() const;
 
  private:
   FragmentListPass() = default;
-  void allocateImages(int width, int height);
+  // Empty, or what GL could not give (GlAllocationCheck).
+  std::string allocateImages(int width, int height);
   bool allocateList(std::uint64_t fragments);
 
   GlProgram resolve_;
@@ -57,7 +60,7 @@ class FragmentListPass {
   std::uint64_t capacity_ = 0;  // fragments the list buffer holds
   std::uint64_t maxBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   std::uint64_t used_ = 0;
-  bool tooLarge_ = false;
+  std::string failure_;  // what begin() could not allocate
   int width_ = 0;
   int height_ = 0;
   GlTexture heads_;

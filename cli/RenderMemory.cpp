@@ -26,7 +26,8 @@ RenderMemory RenderMemory::of(SoNode* root, bool softwareRenderer, bool traced) 
   });
 
   RenderMemory memory{{kFrameBytesPerPixel, kFrameFixedBytes}, "a render"};
-  memory.cost.bytesPerPixel += kPeelingBytesPerPixel * (separators + groups);
+  memory.cost.bytesPerPixel +=
+      (kPeelingBytesPerPixel + kFragmentListBytesPerPixel) * (separators + groups);
   if (rays) memory.cost.bytesPerPixel += kRaysBytesPerPixel;
   if (rays) memory.what += " with traced (RAYS) shadows";
   std::string peelers;

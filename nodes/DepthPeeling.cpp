@@ -81,11 +81,16 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
   state->push();
   setPeelPassState(state);
   FragmentListPass::Outcome outcome = FragmentListPass::Outcome::TooLarge;
+  bool unbuilt = false;
   int passes = 0;
   // A second pass only when the first found the buffer too small (it is now large enough).
   for (int attempt = 0; attempt < 2; ++attempt) {
-    if (shading.bind(action, ShadingVariant::FragmentList) == nullptr) break;
-    lists->begin(origin[0], origin[1], size[0], size[1]);
+    // A variant that did not build: Coin has said why, and the view is peeled.
+    if (shading.bind(action, ShadingVariant::FragmentList) == nullptr) {
+      unbuilt = true;
+      break;
+    }
+    if (!lists->begin(origin[0], origin[1], size[0], size[1])) break;
     draw(action);
     outcome = lists->finish();
     ++passes;
@@ -103,10 +108,8 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
     warnListsNotUsed(options.owner, "crowded",
                      "a pixel holds more than " + std::to_string(kMaxFragmentsPerPixel) +
                          " transparent surfaces");
-  else if (passes > 0)
-    warnListsNotUsed(options.owner, "storage",
-                     "the view needs " + std::to_string(lists->neededBytes() >> 20) +
-                         " MiB of fragments, more than GL gives");
+  else if (!unbuilt)
+    warnListsNotUsed(options.owner, "storage", lists->tooLargeReason());
   return false;
 }
 
