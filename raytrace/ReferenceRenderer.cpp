@@ -21,11 +21,11 @@
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
-#include <Inventor/elements/SoDrawStyleElement.h>
 #include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoLightElement.h>
 #include <Inventor/lists/SoNodeList.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoImage.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoPointLight.h>
@@ -247,10 +247,10 @@ SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, cons
   // SoCallbackAction generates a shape's triangles whatever the draw style, as for the
   // casters (extractShadowCasters): GL draws outlines or points, which this does not draw.
   switch (action->getDrawStyle()) {
-    case SoDrawStyleElement::INVISIBLE:
+    case SoDrawStyle::INVISIBLE:
       return SoCallbackAction::PRUNE;
-    case SoDrawStyleElement::LINES:
-    case SoDrawStyleElement::POINTS:
+    case SoDrawStyle::LINES:
+    case SoDrawStyle::POINTS:
       notTriangles(action, data);
       return SoCallbackAction::PRUNE;
     default:

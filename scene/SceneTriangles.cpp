@@ -8,8 +8,8 @@
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
-#include <Inventor/elements/SoDrawStyleElement.h>
 #include <Inventor/elements/SoTextureQualityElement.h>
+#include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoImage.h>
 #include <Inventor/nodes/SoShape.h>
 #include <Inventor/nodes/SoText2.h>
@@ -175,10 +175,10 @@ SoCallbackAction::Response startShape(void* data, SoCallbackAction* action, cons
   // SoCallbackAction generates a shape's triangles whatever the draw style; Coin's GL
   // rendering draws them as outlines or points (which cast nothing) or not at all.
   switch (action->getDrawStyle()) {
-    case SoDrawStyleElement::INVISIBLE:
+    case SoDrawStyle::INVISIBLE:
       return SoCallbackAction::PRUNE;
-    case SoDrawStyleElement::LINES:
-    case SoDrawStyleElement::POINTS:
+    case SoDrawStyle::LINES:
+    case SoDrawStyle::POINTS:
       notTriangles(collector, action);
       return SoCallbackAction::PRUNE;
     default:

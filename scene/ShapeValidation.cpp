@@ -13,13 +13,18 @@
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoIndexedNurbsCurve.h>
+#include <Inventor/nodes/SoIndexedNurbsSurface.h>
 #include <Inventor/nodes/SoIndexedShape.h>
 #include <Inventor/nodes/SoNonIndexedShape.h>
+#include <Inventor/nodes/SoNurbsCurve.h>
+#include <Inventor/nodes/SoNurbsSurface.h>
 #include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoQuadMesh.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include <algorithm>
+#include <tuple>
 #include <utility>
 
 namespace ivshadow {
@@ -165,10 +170,112 @@ std::string indexedDefect(SoCallbackAction* action, const SoIndexedShape* shape,
   return {};
 }
 
+// GLU's largest NURBS order (MAXORDER of SGI's NURBS library, which Debian's libGLU is).
+constexpr long kMaxNurbsOrder = 24;
+
+// A NURBS knot vector against its control point count: Coin takes the order as knots minus
+// control points and reads the control points, the knots and (for normals, which it computes
+// itself) order-sized arrays without checking any of it; GLU refuses an order outside
+// 1..min(control points, 24) or decreasing knots, which Coin's normal code does not.
+std::string knotDefect(const char* points, long controlPoints, const char* knots,
+                       const SoMFFloat& vector) {
+  if (controlPoints < 1)
+    return std::string(points) + " " + std::to_string(controlPoints) + " is not positive";
+  const long order = vector.getNum() - controlPoints;
+  if (order < 1 || order > std::min(controlPoints, kMaxNurbsOrder))
+    return std::string(knots) + " holds " + std::to_string(vector.getNum()) + " knots for " +
+           std::to_string(controlPoints) + " control points: the order (knots minus control " +
+           "points) must lie in 1.." + std::to_string(std::min(controlPoints, kMaxNurbsOrder));
+  for (int i = 1; i < vector.getNum(); ++i)
+    if (!(vector[i] >= vector[i - 1]))
+      return std::string(knots) + "[" + std::to_string(i) + "] " + std::to_string(vector[i]) +
+             " is less than the knot before it";
+  return {};
+}
+
+// `need` control points read from the coordinates in force, or through `indices` (indexed
+// shapes), which must then hold that many entries, each inside the coordinates.
+std::string controlPointDefect(long need, long have, const SoMFInt32* indices, const char* name,
+                               const char* what) {
+  if (indices == nullptr) {
+    if (need > have)
+      return "the control points ask for " + std::to_string(need) + " " + what + "; there are " +
+             std::to_string(have);
+    return {};
+  }
+  if (indices->getNum() < need)
+    return std::string(name) + " holds " + std::to_string(indices->getNum()) + " indices for " +
+           std::to_string(need) + " control points";
+  // Every index is a control point: -1 ends nothing here.
+  for (int i = 0; i < indices->getNum(); ++i)
+    if ((*indices)[i] < 0 || (*indices)[i] >= have)
+      return std::string(name) + "[" + std::to_string(i) + "] " + std::to_string((*indices)[i]) +
+             " is outside the " + std::to_string(have) + " " + what;
+  return {};
+}
+
+std::string nurbsDefect(SoCallbackAction* action, const SoShape* shape) {
+  SoState* state = action->getState();
+  const long coordinates = SoCoordinateElement::getInstance(state)->getNum();
+  const bool indexedSurface = shape->isOfType(SoIndexedNurbsSurface::getClassTypeId());
+  if (shape->isOfType(SoNurbsSurface::getClassTypeId()) || indexedSurface) {
+    // The two surface nodes have the same fields, each declared on its own class.
+    const auto field = [shape](const char* name) { return shape->getField(name); };
+    const auto count = [&](const char* name) {
+      return long(static_cast<const SoSFInt32*>(field(name))->getValue());
+    };
+    const auto knots = [&](const char* name) -> const SoMFFloat& {
+      return *static_cast<const SoMFFloat*>(field(name));
+    };
+    const long u = count("numUControlPoints"), v = count("numVControlPoints");
+    for (const auto& [points, vector, number] : {std::tuple{"numUControlPoints", "uKnotVector", u},
+                                                 std::tuple{"numVControlPoints", "vKnotVector", v}})
+      if (std::string defect = knotDefect(points, number, vector, knots(vector)); !defect.empty())
+        return defect;
+    const auto* coordIndex =
+        indexedSurface ? static_cast<const SoMFInt32*>(field("coordIndex")) : nullptr;
+    if (std::string defect =
+            controlPointDefect(u * v, coordinates, coordIndex, "coordIndex", "coordinates");
+        !defect.empty())
+      return defect;
+    // Texture control points are read only when all four fields are given and the texture
+    // coordinates in force are explicit ones.
+    const long s = count("numSControlPoints"), t = count("numTControlPoints");
+    const long textureCoordinates = SoTextureCoordinateElement::getInstance(state)->getNum();
+    if (s == 0 || t == 0 || knots("sKnotVector").getNum() == 0 ||
+        knots("tKnotVector").getNum() == 0 || textureCoordinates == 0)
+      return {};
+    for (const auto& [points, vector, number] : {std::tuple{"numSControlPoints", "sKnotVector", s},
+                                                 std::tuple{"numTControlPoints", "tKnotVector", t}})
+      if (std::string defect = knotDefect(points, number, vector, knots(vector)); !defect.empty())
+        return defect;
+    const auto* textureIndex =
+        indexedSurface ? static_cast<const SoMFInt32*>(field("textureCoordIndex")) : nullptr;
+    if (textureIndex != nullptr && (textureIndex->getNum() == 0 || (*textureIndex)[0] == -1))
+      textureIndex = nullptr;
+    return controlPointDefect(s * t, textureCoordinates, textureIndex, "textureCoordIndex",
+                              "texture coordinates");
+  }
+  const bool indexedCurve = shape->isOfType(SoIndexedNurbsCurve::getClassTypeId());
+  if (shape->isOfType(SoNurbsCurve::getClassTypeId()) || indexedCurve) {
+    // The two curve nodes have the same fields, each declared on its own class.
+    const long points =
+        static_cast<const SoSFInt32*>(shape->getField("numControlPoints"))->getValue();
+    const auto* knots = static_cast<const SoMFFloat*>(shape->getField("knotVector"));
+    if (std::string defect = knotDefect("numControlPoints", points, "knotVector", *knots);
+        !defect.empty())
+      return defect;
+    const auto* coordIndex =
+        indexedCurve ? static_cast<const SoMFInt32*>(shape->getField("coordIndex")) : nullptr;
+    return controlPointDefect(points, coordinates, coordIndex, "coordIndex", "coordinates");
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string shapeDefect(SoCallbackAction* action, const SoShape* shape) {
-  if (!shape->isOfType(SoVertexShape::getClassTypeId())) return {};
+  if (!shape->isOfType(SoVertexShape::getClassTypeId())) return nurbsDefect(action, shape);
   const Counts counts = countsFor(action, static_cast<const SoVertexShape*>(shape));
   if (shape->isOfType(SoNonIndexedShape::getClassTypeId()))
     return nonIndexedDefect(static_cast<const SoNonIndexedShape*>(shape), counts);

@@ -67,6 +67,46 @@ const Case kCases[] = {
     {"vertex_property",
      "FaceSet { vertexProperty VertexProperty { vertex [ 0 0 0, 1 0 0 ] } numVertices 3 }",
      "FaceSet: numVertices asks for 3 vertices from index 0; the coordinates hold 2"},
+    // Found by SceneReaderFuzzer: a bundled NURBS scene with its vKnotVector erased (the
+    // default, one knot) made Coin's normal code allocate an array of negative order
+    // (std::bad_array_new_length: the process died).
+    {"nurbs_surface_no_knots",
+     "NurbsSurface { numUControlPoints 1 numVControlPoints 2 uKnotVector [ 0, 1 ] }",
+     "NurbsSurface: vKnotVector holds 1 knots for 2 control points: the order (knots minus "
+     "control points) must lie in 1..2"},
+    {"nurbs_surface_count",
+     "NurbsSurface { numUControlPoints 2 numVControlPoints 2 uKnotVector [ 0, 0, 1, 1 ] "
+     "vKnotVector [ 0, 0, 1, 1 ] }",
+     "NurbsSurface: the control points ask for 4 coordinates; there are 3"},
+    {"nurbs_surface_knots_decrease",
+     "NurbsSurface { numUControlPoints 1 numVControlPoints 3 uKnotVector [ 0, 1 ] "
+     "vKnotVector [ 0, 0, 1, 0.5 ] }",
+     "NurbsSurface: vKnotVector[3] 0.500000 is less than the knot before it"},
+    {"nurbs_surface_negative",
+     "NurbsSurface { numUControlPoints -3 numVControlPoints 1 vKnotVector [ 0, 1 ] }",
+     "NurbsSurface: numUControlPoints -3 is not positive"},
+    {"indexed_nurbs_surface",
+     "IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 1 uKnotVector [ 0, 0, 1, 1 ] "
+     "vKnotVector [ 0, 1 ] coordIndex [ 0, 8 ] }",
+     "IndexedNurbsSurface: coordIndex[1] 8 is outside the 3 coordinates"},
+    {"indexed_nurbs_surface_short",
+     "IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 1 uKnotVector [ 0, 0, 1, 1 ] "
+     "vKnotVector [ 0, 1 ] coordIndex [ 0 ] }",
+     "IndexedNurbsSurface: coordIndex holds 1 indices for 2 control points"},
+    {"nurbs_surface_texture",
+     "TextureCoordinate2 { point [ 0 0, 1 0 ] } NurbsSurface { numUControlPoints 1 "
+     "numVControlPoints 1 uKnotVector [ 0, 1 ] vKnotVector [ 0, 1 ] numSControlPoints 2 "
+     "numTControlPoints 2 sKnotVector [ 0, 0, 1, 1 ] tKnotVector [ 0, 0, 1, 1 ] }",
+     "NurbsSurface: the control points ask for 4 texture coordinates; there are 2"},
+    {"nurbs_curve_order", "NurbsCurve { numControlPoints 2 knotVector [ 0, 0, 0, 1, 1, 1 ] }",
+     "NurbsCurve: knotVector holds 6 knots for 2 control points: the order (knots minus "
+     "control points) must lie in 1..2"},
+    {"nurbs_curve_count", "NurbsCurve { numControlPoints 4 knotVector [ 0, 0, 0, 0, 1, 1, 1, 1 ] }",
+     "NurbsCurve: the control points ask for 4 coordinates; there are 3"},
+    {"indexed_nurbs_curve",
+     "IndexedNurbsCurve { numControlPoints 3 knotVector [ 0, 0, 0, 1, 1, 1 ] "
+     "coordIndex [ 0, -1, 2 ] }",
+     "IndexedNurbsCurve: coordIndex[1] -1 is outside the 3 coordinates"},
 };
 
 class DefectiveShape : public ::testing::TestWithParam<Case> {};
@@ -112,10 +152,21 @@ TEST(ShapeValidation, ValidShapesUsingEveryCountAndIndexAreKept) {
          "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 1, 3, 2, -1 ] materialIndex [ 0, 1, 1, -1, "
          "1, 1, 0, -1 ] }\n"
          "  MaterialBinding { value PER_VERTEX }\n  Material { diffuseColor [ 1 0 0, 0 1 0, 0 0 1 "
-         "] }\n  IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }\n}\n";
+         "] }\n  IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }\n"
+         // A bilinear patch over the four points, its texture over two of the four texture
+         // coordinates; a quadratic curve, and the same curve indexed.
+         "  TextureCoordinate2 { point [ 0 0, 1 0, 0 1, 1 1 ] }\n"
+         "  NurbsSurface { numUControlPoints 2 numVControlPoints 2 uKnotVector [ 0, 0, 1, 1 ] "
+         "vKnotVector [ 0, 0, 1, 1 ] numSControlPoints 2 numTControlPoints 1 sKnotVector [ 0, 0, "
+         "1, 1 ] tKnotVector [ 0, 1 ] }\n"
+         "  IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 uKnotVector [ 0, 0, 1, "
+         "1 ] vKnotVector [ 0, 0, 1, 1 ] coordIndex [ 3, 2, 1, 0 ] }\n"
+         "  NurbsCurve { numControlPoints 3 knotVector [ 0, 0, 0, 1, 1, 1 ] }\n"
+         "  IndexedNurbsCurve { numControlPoints 3 knotVector [ 0, 0, 0, 1, 1, 1 ] coordIndex [ "
+         "3, 1, 0 ] }\n}\n";
   const LoadedScene scene = loadScene(path);
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
-  EXPECT_EQ(countShapes(scene.root.get()), 7);
+  EXPECT_EQ(countShapes(scene.root.get()), 11);
 }
 
 // Applications hand the group graphs that never went through loadScene: the casters'
