@@ -3,6 +3,7 @@
 #include "image/AtomicFile.h"
 #include "scene/InputError.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -47,6 +48,19 @@ std::vector<float> readPfm(const std::string& path, int& width, int& height) {
     throw InputError(path + ":1: error: expected a colour PFM header 'PF', width, height, scale");
   if ((scale < 0.0f) != littleEndianHost())
     throw InputError(path + ":3: error: byte order of this PFM differs from the machine's");
+  // The header's size is checked against the data the file holds before anything is
+  // allocated: a header alone may ask for gigabytes (found by ImageReaderFuzzer: "8 118888888"
+  // asked for 11 GB).
+  const std::streamoff start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streamoff available = in.tellg() - start;
+  in.seekg(start);
+  const std::uint64_t need = std::uint64_t(width) * std::uint64_t(height) * 3 * sizeof(float);
+  if (start < 0 || available < 0 || std::uint64_t(available) < need)
+    throw InputError(path + ": error: the header asks for " + std::to_string(width) + " x " +
+                     std::to_string(height) + " pixels (" + std::to_string(need) +
+                     " bytes); the file holds " +
+                     std::to_string(std::max<std::streamoff>(available, 0)) + " bytes of pixels");
   std::vector<float> rgb(std::size_t(width) * std::size_t(height) * 3);
   for (int y = height - 1; y >= 0; --y)
     in.read(reinterpret_cast<char*>(&rgb[std::size_t(y) * std::size_t(width) * 3]),

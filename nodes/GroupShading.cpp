@@ -18,9 +18,13 @@
 
 namespace ivshadow {
 
-ShadingUniforms* GroupShading::begin(SoGLRenderAction* action, int textureUnits) {
+ShadingUniforms* GroupShading::begin(SoGLRenderAction* action, int textureUnits,
+                                     const ShadingFeatures& lights) {
   SoState* state = action->getState();
-  camera_ = programs_.bind(action, ShadingVariant::Shade);
+  const int fog = fogType(state);
+  features_ = lights;
+  features_.fog = fog != 0;
+  camera_ = programs_.bind(action, ShadingVariant::Shade, features_);
   if (camera_ == nullptr) return nullptr;
   syncTexGen(state);
   uniforms_ = ShadingUniforms{};
@@ -33,7 +37,7 @@ ShadingUniforms* GroupShading::begin(SoGLRenderAction* action, int textureUnits)
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column)
       uniforms_.eyeToLocal[row * 4 + column] = eyeToLocal[row][column];
-  uniforms_.fogType = fogType(state);
+  uniforms_.fogType = fog;
   return &uniforms_;
 }
 
@@ -44,7 +48,7 @@ void GroupShading::apply() {
 
 const UniformLocations* GroupShading::bind(SoGLRenderAction* action, ShadingVariant variant) {
   if (camera_ == nullptr) return nullptr;
-  const UniformLocations* program = programs_.bind(action, variant);
+  const UniformLocations* program = programs_.bind(action, variant, features_);
   if (program != nullptr) uniforms_.apply(*program);
   syncTexGen(action->getState());
   return program;

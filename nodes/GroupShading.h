@@ -24,16 +24,19 @@ class GroupShading {
   GroupShading(const GroupShading&) = delete;
   GroupShading& operator=(const GroupShading&) = delete;
 
-  // Binds the camera pass and starts the frame's uniforms from the state, the samplers' units
-  // taken from a context of `textureUnits` units. Null when the program did not build (Coin
-  // has said why): the caller then renders plainly.
-  ShadingUniforms* begin(SoGLRenderAction* action, int textureUnits);
+  // Binds the camera pass, compiled with what the frame's lights need (`lights`; fog is added
+  // from the state), and starts the frame's uniforms from the state, the samplers' units taken
+  // from a context of `textureUnits` units. Null when the program did not build (Coin has said
+  // why): the caller then renders plainly.
+  ShadingUniforms* begin(SoGLRenderAction* action, int textureUnits,
+                         const ShadingFeatures& lights);
   // The group's coordinates to the eye's, as a camera inside the group will set them.
   const SbMatrix& localToEye() const { return localToEye_; }
   // Sets the frame's uniforms on the camera pass and leaves the GL lights the scene does not
   // use dark.
   void apply();
-  // Between begin() and end(): binds `variant` with the frame's uniforms and returns it; null
+  // Between begin() and end(): binds `variant`, with the frame's features and uniforms, and
+  // returns it; null
   // when it did not build or outside a frame.
   const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
   void end() { camera_ = nullptr; }
@@ -52,6 +55,7 @@ class GroupShading {
   ShadingProgram programs_;
   ShadingUniforms uniforms_;
   const UniformLocations* camera_ = nullptr;  // the camera pass, bound by begin()
+  ShadingFeatures features_;                  // the frame's, set by begin()
   int outsideLights_ = 0;                     // GL lights on before the group
   SbMatrix localToEye_;
 };

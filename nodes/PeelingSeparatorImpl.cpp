@@ -70,7 +70,8 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   SoCacheElement::invalidate(state);
   contents_.update(action);
   state->push();
-  if (shading_.begin(action, pass->textureUnits()) == nullptr) {
+  // No deep shadow light of its own: the shading looks nothing up.
+  if (shading_.begin(action, pass->textureUnits(), ShadingFeatures{}) == nullptr) {
     state->pop();
     renderPlainly(action, inPath);
     return;

@@ -53,6 +53,13 @@ VariantSource sourceOf(ShadingVariant variant) {
   return {};
 }
 
+// Whether the variant's fragment program lights anything (and so compiles ShadingFeatures in):
+// the captures record colours and depths, the first peel pass depths only.
+bool lights(ShadingVariant variant) {
+  return variant != ShadingVariant::CaptureOpaque &&
+         variant != ShadingVariant::CaptureTransparent && variant != ShadingVariant::PeelInit;
+}
+
 // Making a variant sets fields (its sources), and so does binding one (Coin fills the coin_*
 // parameters in from the state): each notifies through Coin's notification counter and sensor
 // queue, which a Coin built without COIN_THREADSAFE (Debian's) does not guard. Contexts
@@ -67,8 +74,22 @@ std::mutex& programFieldsMutex() {
 ShadingProgram::ShadingProgram() = default;
 ShadingProgram::~ShadingProgram() = default;
 
-SoShaderProgram* ShadingProgram::node(ShadingVariant variant) {
-  CoinRef<SoShaderProgram>& program = nodes_[std::size_t(variant)];
+std::string ShadingFeatures::defines() const {
+  std::string text;
+  if (maps) text += "#define IVSHADOW_WITH_MAPS\n";
+  if (rays) text += "#define IVSHADOW_WITH_RAYS\n";
+  if (nearest) text += "#define IVSHADOW_WITH_NEAREST_TEXEL\n";
+  if (filtered) text += "#define IVSHADOW_WITH_FILTERED_MAPS\n";
+  if (fog) text += "#define IVSHADOW_WITH_FOG\n";
+  return text;
+}
+
+int ShadingProgram::keyOf(ShadingVariant variant, const ShadingFeatures& features) {
+  return int(variant) * ShadingFeatures::kKeys + features.key();
+}
+
+SoShaderProgram* ShadingProgram::node(ShadingVariant variant, const ShadingFeatures& features) {
+  CoinRef<SoShaderProgram>& program = nodes_[keyOf(variant, features)];
   if (program) return program.get();
   const VariantSource source = sourceOf(variant);
   program = CoinRef<SoShaderProgram>(new SoShaderProgram);
@@ -77,7 +98,8 @@ SoShaderProgram* ShadingProgram::node(ShadingVariant variant) {
   vertex->sourceProgram = composeShader(glsl::kShadingVert).c_str();
   auto* fragment = new SoFragmentShader;
   fragment->sourceType = SoShaderObject::GLSL_PROGRAM;
-  fragment->sourceProgram = composeShader(source.fragment, source.defines).c_str();
+  fragment->sourceProgram =
+      composeShader(source.fragment, source.defines + features.defines()).c_str();
   // Coin fills these in from its state whenever they change (SoShaderObject::coin_*).
   for (const char* name : source.coinParameters) {
     auto* parameter = new SoShaderParameter1i;
@@ -89,10 +111,12 @@ SoShaderProgram* ShadingProgram::node(ShadingVariant variant) {
   return program.get();
 }
 
-const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVariant variant) {
+const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVariant variant,
+                                             const ShadingFeatures& requested) {
+  const ShadingFeatures features = lights(variant) ? requested : ShadingFeatures{};
   {
     const std::lock_guard<std::mutex> lock(programFieldsMutex());
-    node(variant)->GLRender(action);
+    node(variant, features)->GLRender(action);
   }
   const unsigned int program = currentProgram();
   if (program == 0) return nullptr;
@@ -105,12 +129,13 @@ const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVa
   SoGLLazyElement::getInstance(action->getState())
       ->reset(action->getState(), SoLazyElement::LIGHT_MODEL_MASK | SoLazyElement::TWOSIDE_MASK);
   Linked& context = linked(action->getState());
-  UniformLocations& locations = context.locations[std::size_t(variant)];
+  const int key = keyOf(variant, features);
+  UniformLocations& locations = context.locations[key];
   // Coin links a variant once per context; a new name means it linked it anew, with every
   // uniform at 0.
   if (locations.program() != program) {
     locations = UniformLocations(program);
-    context.texGen[std::size_t(variant)] = TexGenModes{};
+    context.texGen[key] = TexGenModes{};
   }
   return &locations;
 }
@@ -123,22 +148,22 @@ ShadingProgram::Linked& ShadingProgram::linked(SoState* state) {
 const UniformLocations* ShadingProgram::current(SoState* state) {
   const unsigned int program = currentProgram();
   if (program == 0) return nullptr;
-  for (const UniformLocations& locations : linked(state).locations)
+  for (const auto& [key, locations] : linked(state).locations)
     if (locations.program() == program) return &locations;
   return nullptr;
 }
 
 void ShadingProgram::sendTexGen(SoState* state, const TexGenModes& modes) {
   Linked& context = linked(state);
-  for (std::size_t i = 0; i < context.locations.size(); ++i) {
-    if (context.locations[i].program() == 0 || context.texGen[i] == modes) continue;
-    setTexGenModes(context.locations[i], modes);
-    context.texGen[i] = modes;
+  for (const auto& [key, locations] : context.locations) {
+    if (locations.program() == 0 || context.texGen[key] == modes) continue;
+    setTexGenModes(locations, modes);
+    context.texGen[key] = modes;
   }
 }
 
 bool ShadingProgram::anyTexGen(SoState* state) {
-  for (const TexGenModes& modes : linked(state).texGen)
+  for (const auto& [key, modes] : linked(state).texGen)
     if (modes != TexGenModes{}) return true;
   return false;
 }

@@ -5,7 +5,8 @@
 #include "nodes/PerContext.h"
 #include "scene/CoinRef.h"
 
-#include <array>
+#include <map>
+#include <string>
 
 class SoGLRenderAction;
 class SoState;
@@ -25,7 +26,27 @@ enum class ShadingVariant : int {
   CaptureTransparent,  // capture.frag: their transparent captures
   FragmentList,        // fragment_list.frag: fragment lists' one pass (FragmentListPass)
 };
-inline constexpr int kShadingVariants = 8;
+
+// The parts of the lighting code a frame needs, each compiled into the variants only where
+// some light or the state needs it: llvmpipe runs both sides of every branch for every
+// fragment, so code a branch skips still costs its full price (docs/PERFORMANCE.md, "Shader
+// variants"). A flag off leaves its code out; a flag on where nothing needs it costs time,
+// never correctness.
+struct ShadingFeatures {
+  bool maps = false;      // some light looks its visibility up in a deep shadow map
+  bool rays = false;      // some light's visibility was traced per pixel (method RAYS)
+  bool nearest = false;   // some map is read at the nearest texel (filter NONE)
+  bool filtered = false;  // some map is filtered over a texel square (PCF; 1 wide: bilinear)
+  bool fog = false;       // the state has fog (SoEnvironment fogType other than NONE)
+
+  // A distinct number per combination, 0 for none, below kKeys.
+  static constexpr int kKeys = 32;
+  int key() const {
+    return int(maps) | int(rays) << 1 | int(nearest) << 2 | int(filtered) << 3 | int(fog) << 4;
+  }
+  // The #defines that compile the parts in (callbacks/glsl/lighting.glsl).
+  std::string defines() const;
+};
 
 // The variants as Coin SoShaderProgram nodes, so Coin compiles each per context (when first
 // used), binds it through SoGLShaderProgramElement (which SoShadowStyle switches off for
@@ -40,9 +61,11 @@ class ShadingProgram {
   ShadingProgram(const ShadingProgram&) = delete;
   ShadingProgram& operator=(const ShadingProgram&) = delete;
 
-  // Binds `variant` in the action's current state (the caller pushes and pops it) and returns
-  // its program and uniform locations, or null when it did not build (Coin has said why).
-  const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
+  // Binds `variant`, compiled with `features`, in the action's current state (the caller
+  // pushes and pops it) and returns its program and uniform locations, or null when it did not
+  // build (Coin has said why). Variants that light nothing ignore `features`.
+  const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant,
+                               const ShadingFeatures& features);
   // The variant GL has current in the state's context, or null when the current program is
   // none of them (a SoShadowStyle switched shading off, or a program of someone else's).
   const UniformLocations* current(SoState* state);
@@ -53,12 +76,14 @@ class ShadingProgram {
   bool anyTexGen(SoState* state);
 
  private:
-  SoShaderProgram* node(ShadingVariant variant);
+  // A variant with its features, as one number.
+  static int keyOf(ShadingVariant variant, const ShadingFeatures& features);
+  SoShaderProgram* node(ShadingVariant variant, const ShadingFeatures& features);
 
-  std::array<CoinRef<SoShaderProgram>, kShadingVariants> nodes_;
+  std::map<int, CoinRef<SoShaderProgram>> nodes_;  // by keyOf, made when first bound
   struct Linked {
-    std::array<UniformLocations, kShadingVariants> locations;
-    std::array<TexGenModes, kShadingVariants> texGen{};  // uTexGen as last sent
+    std::map<int, UniformLocations> locations;  // by keyOf
+    std::map<int, TexGenModes> texGen;          // uTexGen as last sent
   };
   Linked& linked(SoState* state);
 

@@ -64,6 +64,21 @@ void warnNoShadow(const SoLight& light, const std::string& failure) {
                             failure.c_str());
 }
 
+// What the shading must compile in for the first `count` slots, the ones it is given.
+ShadingFeatures featuresOf(const std::vector<MapState>& maps, std::size_t count) {
+  ShadingFeatures features;
+  for (std::size_t slot = 0; slot < std::min(count, maps.size()); ++slot) {
+    const MapState& map = maps[slot];
+    if (map.rays) {
+      features.rays = true;
+      continue;
+    }
+    features.maps = true;
+    (map.settings.filterWidth > 0 ? features.filtered : features.nearest) = true;
+  }
+  return features;
+}
+
 }  // namespace
 
 TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner,
@@ -284,7 +299,9 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     refitToView(action, context);
 
   state->push();
-  ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits());
+  ShadingUniforms* uniforms =
+      shading_.begin(action, context.pass->textureUnits(),
+                     featuresOf(context.maps, contents_.lights().size()));
   if (uniforms == nullptr) {
     // Coin bound no program for the shading variant. When it failed to compile or link Coin
     // has said why; when it declined to draw it at all it says nothing, and the group would

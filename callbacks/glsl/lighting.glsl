@@ -41,6 +41,10 @@ uniform sampler2DArray uRayDepth;       // window depth of each captured layer (
 uniform sampler2DArray uRayVisibility;  // layer ray * uRayLayers + captured layer
 uniform int uRayLayers;  // the ray textures are indexed by window coordinates
 
+// Each part below is compiled in only where the frame needs it (IVSHADOW_WITH_*, from
+// nodes/ShadingProgram.h's ShadingFeatures): llvmpipe runs both sides of every branch for
+// every fragment, so a part a branch skips would still cost its full price.
+#ifdef IVSHADOW_WITH_RAYS
 // The traced visibility of the captured surface this fragment is (same depth). A fragment
 // deeper than every captured transparent layer takes the layer nearest in depth.
 vec3 rayVisibility(int ray) {
@@ -63,7 +67,9 @@ vec3 rayVisibility(int ray) {
   if (best < 0) return vec3(1.0);
   return texelFetch(uRayVisibility, ivec3(pixel, ray * uRayLayers + best), 0).rgb;
 }
+#endif
 
+#ifdef IVSHADOW_WITH_MAPS
 vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
   vec3 visibility = vec3(1.0);
   int first = uMapFaceFirst[slot * 6 + face];
@@ -77,6 +83,7 @@ vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
   }
   return visibility;
 }
+#endif
 
 // The receiver's geometric normal in the group's coordinates, the plane of its triangle (the
 // shading normal may bend away from it). beginShading() computes it in uniform control flow:
@@ -84,11 +91,15 @@ vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
 // passes shade only some fragments.
 vec3 gFaceNormal = vec3(0.0);
 void beginShading() {
+#ifdef IVSHADOW_WITH_MAPS
   vec3 p = (uEyeToLocal * vec4(vEyePosition, 1.0)).xyz;
   vec3 n = cross(dFdx(p), dFdy(p));
   float length2 = dot(n, n);
   gFaceNormal = length2 > 0.0 ? n * inversesqrt(length2) : vec3(0.0);
+#endif
 }
+
+#ifdef IVSHADOW_WITH_MAPS
 
 // The map's view of the group's coordinates: (x w, y w, depth, w), ndc = xy / w, depth
 // as the build stores it (dsm_build.frag): a one-face map's lookup matrix, or a cube face's.
@@ -148,12 +159,18 @@ vec3 deepShadowVisibility(int slot, vec3 localPosition) {
   float reach = 10.0 * (1.0 + width) * texel;
   vec2 at = (ndc * 0.5 + 0.5) * resolution;
   int last = int(resolution) - 1;
-  if (width <= 0.0) {
+#ifdef IVSHADOW_WITH_NEAREST_TEXEL
+#ifdef IVSHADOW_WITH_FILTERED_MAPS
+  if (width <= 0.0)
+#endif
+  {
     ivec2 centre = clamp(ivec2(floor(at)), ivec2(0), ivec2(last));
     vec2 centreNdc = (vec2(centre) + 0.5) / resolution * 2.0 - 1.0;
     float receiver = plane ? planeDepthAt(centreNdc, mapped, e1, e2, reach) : depth;
     return visibilityAt(slot, centre, face, receiver - bias);
   }
+#endif
+#ifdef IVSHADOW_WITH_FILTERED_MAPS
   // PCF: the mean of the map's nearest-texel visibility over a width x width square centred
   // on the point, each texel weighted by its overlap with the square (width 1: bilinear).
   vec2 low = at - 0.5 * width, high = at + 0.5 * width;
@@ -170,8 +187,11 @@ vec3 deepShadowVisibility(int slot, vec3 localPosition) {
     }
   }
   return sum / (width * width);
+#endif
 }
+#endif
 
+#if defined(IVSHADOW_WITH_MAPS) || defined(IVSHADOW_WITH_RAYS)
 // The slot of the GL light, found by its position (a directional light's: its direction):
 // Coin numbers GL lights by traversal and reuses a number when a separator ends, so only the
 // position says which light it is.
@@ -185,6 +205,19 @@ int mapOfLight(gl_LightSourceParameters light) {
   }
   return -1;
 }
+
+// The visibility of the light in `slot` from this fragment.
+vec3 shadowVisibility(int slot, vec3 localPosition) {
+#if defined(IVSHADOW_WITH_MAPS) && defined(IVSHADOW_WITH_RAYS)
+  return uMapRay[slot] >= 0 ? rayVisibility(uMapRay[slot])
+                            : deepShadowVisibility(slot, localPosition);
+#elif defined(IVSHADOW_WITH_RAYS)
+  return rayVisibility(uMapRay[slot]);
+#else
+  return deepShadowVisibility(slot, localPosition);
+#endif
+}
+#endif
 
 vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColour) {
   gl_LightSourceParameters light = gl_LightSource[i];
@@ -213,10 +246,10 @@ vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColou
     if (nDotH > 0.0)
       direct += pow(nDotH, gl_FrontMaterial.shininess) * light.specular.rgb *
                 gl_FrontMaterial.specular.rgb;
+#if defined(IVSHADOW_WITH_MAPS) || defined(IVSHADOW_WITH_RAYS)
     int slot = mapOfLight(light);
-    if (slot >= 0)
-      direct *= uMapRay[slot] >= 0 ? rayVisibility(uMapRay[slot])
-                                   : deepShadowVisibility(slot, localPosition);
+    if (slot >= 0) direct *= shadowVisibility(slot, localPosition);
+#endif
     colour += direct;
   }
   return attenuation * colour;
@@ -236,6 +269,7 @@ vec4 shade(vec4 texel) {
   }
   if (coin_texunit0_model != kTextureNone)
     colour = applyTextureModel(colour, texel, coin_texunit0_model, gl_TextureEnvColor[0].rgb);
+#ifdef IVSHADOW_WITH_FOG
   if (uFogType != 0) {
     float z = gl_FogFragCoord;
     float fog = uFogType == 1   ? (gl_Fog.end - z) * gl_Fog.scale
@@ -243,6 +277,7 @@ vec4 shade(vec4 texel) {
                                 : exp(-gl_Fog.density * gl_Fog.density * z * z);
     colour.rgb = mix(gl_Fog.color.rgb, colour.rgb, clamp(fog, 0.0, 1.0));
   }
+#endif
   return colour;
 }
 

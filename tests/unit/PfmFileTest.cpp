@@ -1,0 +1,61 @@
+#include "image/PfmFile.h"
+#include "scene/InputError.h"
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace ivshadow {
+namespace {
+
+std::string writeText(const std::string& name, const std::string& bytes) {
+  const std::string path = test::outputDir() + "/" + name;
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+std::string messageOf(const std::string& path) {
+  int width = 0, height = 0;
+  try {
+    readPfm(path, width, height);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(read)";
+}
+
+TEST(PfmFile, RoundTripsEveryFloatAndRowOrder) {
+  std::vector<float> rgb;
+  for (int i = 0; i < 5 * 2 * 3; ++i) rgb.push_back(0.25f * float(i) - 3.0f);
+  const std::string path = test::outputDir() + "/roundtrip.pfm";
+  writePfm(path, 5, 2, rgb);
+  int width = 0, height = 0;
+  EXPECT_EQ(readPfm(path, width, height), rgb);
+  EXPECT_EQ(width, 5);
+  EXPECT_EQ(height, 2);
+}
+
+// Found by ImageReaderFuzzer: a header asking for 8 x 118,888,888 pixels made the reader
+// allocate 11 GB before it found that the file holds 3 bytes of them.
+TEST(PfmFile, AHeaderAskingForMoreThanTheFileHoldsIsRefusedBeforeAllocating) {
+  const std::string path = writeText("huge.pfm", std::string("PF\n8 118888888\n-1.0\n") + "abc");
+  EXPECT_EQ(messageOf(path), path +
+                                 ": error: the header asks for 8 x 118888888 pixels (11413333248 "
+                                 "bytes); the file holds 3 bytes of pixels");
+}
+
+TEST(PfmFile, AShortFileAndABadHeaderAreRefusedWithTheirLine) {
+  const std::string shortFile = writeText("short.pfm", "PF\n2 1\n-1.0\n" + std::string(20, '\0'));
+  EXPECT_EQ(messageOf(shortFile), shortFile +
+                                      ": error: the header asks for 2 x 1 pixels (24 bytes); the "
+                                      "file holds 20 bytes of pixels");
+  const std::string grey = writeText("grey.pfm", "Pf\n2 1\n-1.0\n" + std::string(8, '\0'));
+  EXPECT_EQ(messageOf(grey),
+            grey + ":1: error: expected a colour PFM header 'PF', width, height, scale");
+}
+
+}  // namespace
+}  // namespace ivshadow
