@@ -12,6 +12,7 @@
 #include <Inventor/elements/SoTextureCoordinateElement.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/fields/SoMFInt32.h>
+#include <Inventor/nodes/SoFaceSet.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedNurbsCurve.h>
 #include <Inventor/nodes/SoIndexedNurbsSurface.h>
@@ -21,6 +22,7 @@
 #include <Inventor/nodes/SoNurbsSurface.h>
 #include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoQuadMesh.h>
+#include <Inventor/nodes/SoTriangleStripSet.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include <algorithm>
@@ -92,16 +94,36 @@ std::string nonIndexedDefect(const SoNonIndexedShape* shape, const Counts& count
       return needMore("numPoints", points, start, counts.coordinates);
     return {};
   }
-  // FaceSet, LineSet, TriangleStripSet: one count per face, line or strip; -1 ("the rest of
-  // the coordinates") is allowed last.
+  // FaceSet, LineSet, TriangleStripSet: one count per face, line or strip. Coin reads -1 as
+  // "the rest of the coordinates" only as the one value (SoNonIndexedShape::
+  // fixNumVerticesPointers), and a lone 0 as nothing to draw; its generatePrimitives
+  // dereferences null for a face or strip of fewer than three vertices (found by
+  // SceneReaderFuzzer: a FaceSet of two coordinates).
   const auto* field = dynamic_cast<const SoMFInt32*>(shape->getField("numVertices"));
   if (field == nullptr) return {};
+  const bool polygons = shape->isOfType(SoFaceSet::getClassTypeId()) ||
+                        shape->isOfType(SoTriangleStripSet::getClassTypeId());
+  const long minimum = polygons ? 3 : 0;
+  const char* unit = shape->isOfType(SoFaceSet::getClassTypeId()) ? "a face" : "a strip";
+  if (field->getNum() == 1 && (*field)[0] == 0) return {};
+  if (field->getNum() == 1 && (*field)[0] == -1) {
+    const long rest = counts.coordinates - start;
+    if (counts.coordinates > 1 && rest < minimum)
+      return "numVertices -1 leaves " + std::to_string(rest) + " vertices from index " +
+             std::to_string(start) + "; " + unit + " needs at least 3";
+    return {};
+  }
   long total = 0;
   for (int i = 0; i < field->getNum(); ++i) {
     const long count = (*field)[i];
-    if (count == -1 && i == field->getNum() - 1) return {};
+    if (count == -1)
+      return "numVertices[" + std::to_string(i) +
+             "] -1 (the rest of the coordinates) must be the only value";
     if (count < 0)
       return "numVertices[" + std::to_string(i) + "] " + std::to_string(count) + " is negative";
+    if (count < minimum)
+      return "numVertices[" + std::to_string(i) + "] " + std::to_string(count) + ": " + unit +
+             " needs at least 3 vertices";
     total += count;
     if (start + total > counts.coordinates)
       return needMore("numVertices", total, start, counts.coordinates);

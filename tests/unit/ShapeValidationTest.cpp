@@ -39,6 +39,18 @@ const Case kCases[] = {
      "coordinates hold 3"},
     {"point_set", "PointSet { numPoints 50 }",
      "PointSet: numPoints asks for 50 vertices from index 0; the coordinates hold 3"},
+    // Found by SceneReaderFuzzer: Coin's generatePrimitives dereferences null for a face or a
+    // strip of fewer than three vertices, and reads -1 as "the rest" only as the one value.
+    {"face_set_two_coordinates", "FaceSet { startIndex 1 }",
+     "FaceSet: numVertices -1 leaves 2 vertices from index 1; a face needs at least 3"},
+    {"face_set_short_face", "FaceSet { numVertices [ 1, 1 ] }",
+     "FaceSet: numVertices[0] 1: a face needs at least 3 vertices"},
+    {"face_set_empty_face", "FaceSet { numVertices [ 3, 0 ] }",
+     "FaceSet: numVertices[1] 0: a face needs at least 3 vertices"},
+    {"face_set_rest_after_faces", "FaceSet { numVertices [ 3, -1 ] }",
+     "FaceSet: numVertices[1] -1 (the rest of the coordinates) must be the only value"},
+    {"strip_short", "TriangleStripSet { numVertices 2 }",
+     "TriangleStripSet: numVertices[0] 2: a strip needs at least 3 vertices"},
     {"indexed_coordinate", "DEF Wall IndexedFaceSet { coordIndex [ 0, 1, 17, -1 ] }",
      "IndexedFaceSet 'Wall': coordIndex[2] 17 is outside the 3 coordinates"},
     {"indexed_negative", "IndexedFaceSet { coordIndex [ 0, 1, -7, -1 ] }",
@@ -143,7 +155,7 @@ TEST(ShapeValidation, ValidShapesUsingEveryCountAndIndexAreKept) {
   std::ofstream(path)
       << "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] "
          "}\n"
-         "  FaceSet { numVertices [ 3, -1 ] startIndex 1 }\n"
+         "  FaceSet { numVertices -1 startIndex 1 }\n  FaceSet { numVertices 0 }\n"
          "  TriangleStripSet { numVertices 4 }\n  QuadMesh { verticesPerRow 2 verticesPerColumn 2 "
          "}\n"
          "  PointSet { numPoints -1 }\n  LineSet { numVertices [ 2, 2 ] }\n"
@@ -166,7 +178,7 @@ TEST(ShapeValidation, ValidShapesUsingEveryCountAndIndexAreKept) {
          "3, 1, 0 ] }\n}\n";
   const LoadedScene scene = loadScene(path);
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
-  EXPECT_EQ(countShapes(scene.root.get()), 11);
+  EXPECT_EQ(countShapes(scene.root.get()), 12);
 }
 
 // Applications hand the group graphs that never went through loadScene: the casters'
