@@ -48,6 +48,9 @@ std::string assignment(const std::string& text, const std::string& path, int lin
   return target + "=" + value;
 }
 
+// The most variants a file (a range, or a crossed sweep) may make.
+constexpr std::size_t kMaxVariants = 10000;
+
 std::vector<std::string> sweepValues(const std::string& values, const std::string& path, int line) {
   std::vector<std::string> out;
   const auto range = values.find("..");
@@ -59,9 +62,15 @@ std::vector<std::string> sweepValues(const std::string& values, const std::strin
         !std::isfinite(from) || !std::isfinite(to))
       fail(path, line, "expected a range A .. B step S with S > 0, found \"" + values + "\"");
     const double count = std::floor((to - from) / step + 1e-9) + 1.0;
-    if (count < 1 || count > 10000)
+    if (!(count >= 1.0 && count <= double(kMaxVariants))) {
+      // Printed as a double: a range of 1e300 values has no integer type to convert to
+      // (VariantsFileFuzzer found the conversion's undefined behaviour).
+      std::ostringstream given;
+      given << count;
       fail(path, line,
-           "the range gives " + std::to_string(long(count)) + " values; expected 1 to 10000");
+           "the range gives " + given.str() + " values; expected 1 to " +
+               std::to_string(kMaxVariants));
+    }
     for (long i = 0; i < long(count); ++i) {
       std::ostringstream value;
       value << from + double(i) * step;
@@ -98,7 +107,6 @@ std::vector<std::string> factors(const std::string& text) {
 // combination of values, the first factor varying slowest, named NAME-V1-V2-...
 std::vector<Variant> crossedSweep(const std::string& name, const std::string& rest,
                                   const std::string& path, int line) {
-  constexpr std::size_t kMaxVariants = 10000;
   std::vector<Variant> out{{name, line, {}}};
   for (const std::string& factor : factors(rest)) {
     const std::string swept = assignment(trim(factor), path, line);

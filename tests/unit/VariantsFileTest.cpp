@@ -114,6 +114,10 @@ TEST(VariantsFile, ErrorsNameTheLine) {
       {"variant a\nvariant a\n", "v:2: error: a second variant named \"a\""},
       {"sweep s Lamp.intensity = 1 .. 0 step 1\n", "v:1: error: the range gives 0 values"},
       {"sweep s Lamp.intensity = 0 .. 1 step -1\n", "v:1: error: expected a range"},
+      // Found by VariantsFileFuzzer: the count of a range this long overflowed the integer it
+      // was printed as (undefined behaviour).
+      {"sweep s Lamp.maxLayers = 0 .. 2888888888888888888888888888 step 1\n",
+       "v:1: error: the range gives 2.88889e+27 values; expected 1 to 10000"},
       {"sweep s Lamp.intensity = 1 || 2\n", "v:1: error: an empty value"},
       {"# nothing\n", "v:1: error: no variants"},
       {"sweep s A.x = 1 | 2 * \n", "v:1: error: expected NODE.field = VALUE"},
