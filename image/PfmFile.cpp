@@ -55,11 +55,13 @@ std::vector<float> readPfm(const std::string& path, int& width, int& height) {
   in.seekg(0, std::ios::end);
   const std::streamoff available = in.tellg() - start;
   in.seekg(start);
-  const std::uint64_t need = std::uint64_t(width) * std::uint64_t(height) * 3 * sizeof(float);
-  if (start < 0 || available < 0 || std::uint64_t(available) < need)
+  // Compared as pixels, not bytes: width x height x 12 can pass 2^64 and wrap.
+  constexpr std::uint64_t kPixelBytes = 3 * sizeof(float);
+  const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+  if (start < 0 || available < 0 || std::uint64_t(available) / kPixelBytes < pixels)
     throw InputError(path + ": error: the header asks for " + std::to_string(width) + " x " +
-                     std::to_string(height) + " pixels (" + std::to_string(need) +
-                     " bytes); the file holds " +
+                     std::to_string(height) + " pixels of " + std::to_string(kPixelBytes) +
+                     " bytes; the file holds " +
                      std::to_string(std::max<std::streamoff>(available, 0)) + " bytes of pixels");
   std::vector<float> rgb(std::size_t(width) * std::size_t(height) * 3);
   for (int y = height - 1; y >= 0; --y)

@@ -36,8 +36,7 @@ class GroupShading {
   // use dark.
   void apply();
   // Between begin() and end(): binds `variant`, with the frame's features and uniforms, and
-  // returns it; null
-  // when it did not build or outside a frame.
+  // returns it; null when it did not build or outside a frame.
   const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
   void end() { camera_ = nullptr; }
   // Tells the bound program how Coin's texture coordinate function in force generates

@@ -78,8 +78,10 @@ std::string ShadingFeatures::defines() const {
   std::string text;
   if (maps) text += "#define IVSHADOW_WITH_MAPS\n";
   if (rays) text += "#define IVSHADOW_WITH_RAYS\n";
-  if (nearest) text += "#define IVSHADOW_WITH_NEAREST_TEXEL\n";
-  if (filtered) text += "#define IVSHADOW_WITH_FILTERED_MAPS\n";
+  // Maps with neither lookup named: both, so that every map is still read.
+  const bool anyLookup = nearest || filtered;
+  if (nearest || (maps && !anyLookup)) text += "#define IVSHADOW_WITH_NEAREST_TEXEL\n";
+  if (filtered || (maps && !anyLookup)) text += "#define IVSHADOW_WITH_FILTERED_MAPS\n";
   if (fog) text += "#define IVSHADOW_WITH_FOG\n";
   return text;
 }

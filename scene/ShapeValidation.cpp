@@ -7,6 +7,7 @@
 #include <Inventor/elements/SoCoordinateElement.h>
 #include <Inventor/elements/SoLazyElement.h>
 #include <Inventor/elements/SoMaterialBindingElement.h>
+#include <Inventor/elements/SoMultiTextureEnabledElement.h>
 #include <Inventor/elements/SoNormalBindingElement.h>
 #include <Inventor/elements/SoNormalElement.h>
 #include <Inventor/elements/SoTextureCoordinateElement.h>
@@ -96,9 +97,10 @@ std::string nonIndexedDefect(const SoNonIndexedShape* shape, const Counts& count
   }
   // FaceSet, LineSet, TriangleStripSet: one count per face, line or strip. Coin reads -1 as
   // "the rest of the coordinates" only as the one value (SoNonIndexedShape::
-  // fixNumVerticesPointers), and a lone 0 as nothing to draw; its generatePrimitives
-  // dereferences null for a face or strip of fewer than three vertices (found by
-  // SceneReaderFuzzer: a FaceSet of two coordinates).
+  // fixNumVerticesPointers), and a lone 0 as nothing to draw. Any other count below three
+  // breaks its generatePrimitives (found by SceneReaderFuzzer: a FaceSet of two coordinates):
+  // SoFaceSet's loop over a face of 0 vertices runs away and one of 1 or 2 reads its empty
+  // normal cache; SoTriangleStripSet's default normals run away on a strip of fewer than 3.
   const auto* field = dynamic_cast<const SoMFInt32*>(shape->getField("numVertices"));
   if (field == nullptr) return {};
   const bool polygons = shape->isOfType(SoFaceSet::getClassTypeId()) ||
@@ -260,11 +262,15 @@ std::string nurbsDefect(SoCallbackAction* action, const SoShape* shape) {
             controlPointDefect(u * v, coordinates, coordIndex, "coordIndex", "coordinates");
         !defect.empty())
       return defect;
-    // Texture control points are read only when all four fields are given and the texture
-    // coordinates in force are explicit ones.
+    // Texture control points are read only when all four fields are given, texture unit 0
+    // is on (or the action keeps no such state) and the texture coordinates in force are
+    // explicit ones (sogl_render_nurbs_surface).
     const long s = count("numSControlPoints"), t = count("numTControlPoints");
     const long textureCoordinates = SoTextureCoordinateElement::getInstance(state)->getNum();
-    if (s == 0 || t == 0 || knots("sKnotVector").getNum() == 0 ||
+    const bool textured =
+        !state->isElementEnabled(SoMultiTextureEnabledElement::getClassStackIndex()) ||
+        SoMultiTextureEnabledElement::get(state, 0);
+    if (!textured || s == 0 || t == 0 || knots("sKnotVector").getNum() == 0 ||
         knots("tKnotVector").getNum() == 0 || textureCoordinates == 0)
       return {};
     for (const auto& [points, vector, number] : {std::tuple{"numSControlPoints", "sKnotVector", s},
@@ -273,7 +279,8 @@ std::string nurbsDefect(SoCallbackAction* action, const SoShape* shape) {
         return defect;
     const auto* textureIndex =
         indexedSurface ? static_cast<const SoMFInt32*>(field("textureCoordIndex")) : nullptr;
-    if (textureIndex != nullptr && (textureIndex->getNum() == 0 || (*textureIndex)[0] == -1))
+    // Coin indexes them only when the first index is one (SoIndexedNurbsSurface).
+    if (textureIndex != nullptr && (textureIndex->getNum() == 0 || (*textureIndex)[0] < 0))
       textureIndex = nullptr;
     return controlPointDefect(s * t, textureCoordinates, textureIndex, "textureCoordIndex",
                               "texture coordinates");

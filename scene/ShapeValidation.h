@@ -12,13 +12,20 @@ class SoShape;
 namespace ivshadow {
 
 // What is wrong with `shape`'s vertex data in the traversal state of `action`, or an empty
-// string when nothing is: counts that ask for more vertices than the coordinates in force
-// hold (FaceSet, LineSet, TriangleStripSet, QuadMesh, PointSet: startIndex, numVertices,
-// verticesPerRow x verticesPerColumn, numPoints), negative counts, and indices past the end of
-// the coordinates, or of the materials, normals and texture coordinates they index
-// (coordIndex, materialIndex, normalIndex, textureCoordIndex of indexed shapes). Coin's own GL
-// rendering checks these and warns; its generatePrimitives, which SoCallbackAction runs, reads
-// whatever memory the counts name, so these checks come first.
+// string when nothing is:
+// - counts that ask for more vertices than the coordinates in force hold (FaceSet, LineSet,
+//   TriangleStripSet, QuadMesh, PointSet: startIndex, numVertices, verticesPerRow x
+//   verticesPerColumn, numPoints), negative counts, a -1 in numVertices beside other values,
+//   and faces or strips of fewer than three vertices;
+// - indices past the end of the coordinates, or of the materials, normals and texture
+//   coordinates they index (coordIndex, materialIndex, normalIndex, textureCoordIndex of
+//   indexed shapes);
+// - NURBS surfaces and curves (indexed or not) whose knot vectors do not fit their control
+//   points (an order, knots minus control points, outside 1..min(control points, 24), or
+//   decreasing knots), whose control points ask for more coordinates (or indices) than there
+//   are, or whose texture control points ask for more texture coordinates.
+// Coin's own GL rendering checks some of these and warns; its generatePrimitives, which
+// SoCallbackAction runs, reads whatever memory the counts name, so these checks come first.
 IVSHADOW_INTERNAL std::string shapeDefect(SoCallbackAction* action, const SoShape* shape);
 
 // A pre-callback for SoShape (any user data): prunes a shape with a defect, so that no

@@ -41,9 +41,8 @@ uniform sampler2DArray uRayDepth;       // window depth of each captured layer (
 uniform sampler2DArray uRayVisibility;  // layer ray * uRayLayers + captured layer
 uniform int uRayLayers;  // the ray textures are indexed by window coordinates
 
-// Each part below is compiled in only where the frame needs it (IVSHADOW_WITH_*, from
-// nodes/ShadingProgram.h's ShadingFeatures): llvmpipe runs both sides of every branch for
-// every fragment, so a part a branch skips would still cost its full price.
+// Each part below is compiled in only where the frame needs it (IVSHADOW_WITH_*: why, in
+// nodes/ShadingProgram.h's ShadingFeatures).
 #ifdef IVSHADOW_WITH_RAYS
 // The traced visibility of the captured surface this fragment is (same depth). A fragment
 // deeper than every captured transparent layer takes the layer nearest in depth.

@@ -1,6 +1,5 @@
 // The shading is compiled with only the parts a frame needs (nodes/ShadingProgram.h,
-// ShadingFeatures): llvmpipe runs every branch for every fragment, so a part left in costs
-// even where no light uses it. A probe inside the group reads, while the group's program is
+// ShadingFeatures, says why). A probe inside the group reads, while the group's program is
 // bound, which parts' uniforms that program has: a uniform GL reports active is one the
 // compiled code reads.
 #include "image/ImageComparison.h"
@@ -87,23 +86,31 @@ TEST_F(ShadingVariantsGLTest, FogAboveTheGroupCompilesFogIn) {
   EXPECT_EQ(partsOf(scene), (std::set<Parts>{{true, false, true}}));
 }
 
-// Two lights at the same place, one with each method: both lookups are compiled into one
-// program, and each light still gets its own shadow: the picture is the one two map lights
-// give, within one 8-bit step (the map and the rays each agree with the analytic picture to
-// that on this filter: DeepShadow's and RayShadow's analytic catalogues).
+// Two lights, one with each method: both lookups are compiled into one program, and each
+// light gets its own shadow: the picture is the one two map lights at the same places give,
+// within one 8-bit step (the map and the rays each agree with the analytic picture to that on
+// this filter: DeepShadow's and RayShadow's analytic catalogues). The second light stands
+// 0.05 aside, beyond the shading's 1e-3 match of a GL light to its slot, so that it is found
+// as itself and not as the first.
 TEST_F(ShadingVariantsGLTest, AMapAndATracedLightShareOneProgramWithBothLookups) {
   ShadowScene scene = glassScene("MAP");
   scene.lightCount = 2;
-  EXPECT_EQ(partsOf(scene), (std::set<Parts>{{true, false, false}}));
+  const std::string second = "DEF Lamp1 DeepShadowLight { location 0 0 1 intensity 0.5 method MAP";
+  const auto aside = [&second](const std::string& method) {
+    return [&second, method](std::string& text) {
+      ASSERT_NE(text.find(second), std::string::npos);
+      text.replace(text.find(second), second.size(),
+                   "DEF Lamp1 DeepShadowLight { location 0.05 0 1 intensity 0.5 method " + method);
+    };
+  };
+  EXPECT_EQ(partsOf(scene, aside("MAP")), (std::set<Parts>{{true, false, false}}));
   const Image twoMaps = picture_;
-  const std::set<Parts> mixed = partsOf(scene, [](std::string& text) {
-    const std::string second =
-        "DEF Lamp1 DeepShadowLight { location 0 0 1 intensity 0.5 method MAP";
-    ASSERT_NE(text.find(second), std::string::npos);
-    text.replace(text.find(second) + second.size() - 3, 3, "RAYS");
-  });
-  EXPECT_EQ(mixed, (std::set<Parts>{{true, true, false}}));
+  EXPECT_EQ(partsOf(scene, aside("RAYS")), (std::set<Parts>{{true, true, false}}));
   EXPECT_LE(ImageComparison::compare(picture_, twoMaps, "mixed", "maps").all.maxError, 1);
+  // And the traced light's shadow is its own: with it at the first light's place instead, the
+  // picture differs where the two shadows do not overlap.
+  partsOf(scene);
+  EXPECT_GT(ImageComparison::compare(picture_, twoMaps, "together", "aside").all.maxError, 10);
 }
 
 }  // namespace

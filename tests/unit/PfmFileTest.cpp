@@ -43,14 +43,24 @@ TEST(PfmFile, RoundTripsEveryFloatAndRowOrder) {
 TEST(PfmFile, AHeaderAskingForMoreThanTheFileHoldsIsRefusedBeforeAllocating) {
   const std::string path = writeText("huge.pfm", std::string("PF\n8 118888888\n-1.0\n") + "abc");
   EXPECT_EQ(messageOf(path), path +
-                                 ": error: the header asks for 8 x 118888888 pixels (11413333248 "
-                                 "bytes); the file holds 3 bytes of pixels");
+                                 ": error: the header asks for 8 x 118888888 pixels of 12 bytes; "
+                                 "the file holds 3 bytes of pixels");
+}
+
+// 842443544 x 1824726041 pixels of 12 bytes is 32 bytes modulo 2^64: a check in bytes let
+// this header through to an allocation of 4.6e18 floats.
+TEST(PfmFile, AHeaderWhoseByteCountWrapsIsRefused) {
+  const std::string path =
+      writeText("wraps.pfm", "PF\n842443544 1824726041\n-1.0\n" + std::string(32, '\0'));
+  EXPECT_EQ(messageOf(path), path +
+                                 ": error: the header asks for 842443544 x 1824726041 pixels of "
+                                 "12 bytes; the file holds 32 bytes of pixels");
 }
 
 TEST(PfmFile, AShortFileAndABadHeaderAreRefusedWithTheirLine) {
   const std::string shortFile = writeText("short.pfm", "PF\n2 1\n-1.0\n" + std::string(20, '\0'));
   EXPECT_EQ(messageOf(shortFile), shortFile +
-                                      ": error: the header asks for 2 x 1 pixels (24 bytes); the "
+                                      ": error: the header asks for 2 x 1 pixels of 12 bytes; the "
                                       "file holds 20 bytes of pixels");
   const std::string grey = writeText("grey.pfm", "Pf\n2 1\n-1.0\n" + std::string(8, '\0'));
   EXPECT_EQ(messageOf(grey),

@@ -106,7 +106,8 @@ const Case kCases[] = {
      "vKnotVector [ 0, 1 ] coordIndex [ 0 ] }",
      "IndexedNurbsSurface: coordIndex holds 1 indices for 2 control points"},
     {"nurbs_surface_texture",
-     "TextureCoordinate2 { point [ 0 0, 1 0 ] } NurbsSurface { numUControlPoints 1 "
+     "Texture2 { image 1 1 3 0xffffff } TextureCoordinate2 { point [ 0 0, 1 0 ] } "
+     "NurbsSurface { numUControlPoints 1 "
      "numVControlPoints 1 uKnotVector [ 0, 1 ] vKnotVector [ 0, 1 ] numSControlPoints 2 "
      "numTControlPoints 2 sKnotVector [ 0, 0, 1, 1 ] tKnotVector [ 0, 0, 1, 1 ] }",
      "NurbsSurface: the control points ask for 4 texture coordinates; there are 2"},
