@@ -161,6 +161,14 @@ class Checker {
                          " includes " +
                          (file == open_.back() ? "itself" : "a file that includes it") +
                          " (the scene would never end)");
+    // Debian's Coin 4.0 reports a File it cannot find with the name as printf's format
+    // (SoInput::pushFile): a '%' in it crashed the reader (found by SceneReaderFuzzer:
+    // File { name "a%s.iv" }). Only a missing file is reported, so only that is refused.
+    std::error_code ec;
+    if (name.text.find('%') != std::string::npos && !fs::exists(resolved, ec))
+      throw InputError(locationPrefix(path, name.line) + "error: File " + name.text +
+                       ": no such file beside " + fs::path(path).filename().string() +
+                       ", and Coin cannot report a missing name holding '%'");
     checkFile(resolved.string(), nesting);
   }
 

@@ -136,6 +136,22 @@ TEST(SceneFileCheck, AFileNodeNamingADirectoryIsLeftToCoinsMessage) {
   }
 }
 
+// Found by SceneReaderFuzzer: Coin 4.0 reports a missing File with its name as printf's
+// format, and `render` died on File { name "a%s.iv" }. A file that is there is read.
+TEST(SceneFileCheck, AMissingFileWhoseNameHoldsAPercentSignIsRefusedAtItsLine) {
+  init();
+  const std::string path =
+      write("percent.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a%s.iv\" }\n}\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":4: error: File a%s.iv: no such file beside percent.iv, and "
+                                  "Coin cannot report a missing name holding '%'");
+  write("b%d.iv", "#Inventor V2.1 ascii\nCube { }\n");
+  const std::string present =
+      write("present.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"b%d.iv\" } }\n");
+  EXPECT_EQ(checkError(present), "");
+  EXPECT_TRUE(static_cast<bool>(loadScene(present).root));
+}
+
 TEST(SceneFileCheck, BinaryFilesAreLeftToCoin) {
   const std::string binary = write("binary.iv", "#Inventor V2.1 binary\n" + std::string(3000, '{'));
   EXPECT_EQ(checkError(binary), "");
