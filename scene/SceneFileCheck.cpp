@@ -3,6 +3,7 @@
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <filesystem>
@@ -92,10 +93,13 @@ class Checker {
     std::ifstream in(path, std::ios::binary);
     if (!in) return;
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t headerEnd = text.find('\n');
-    const bool ascii = text.rfind("#Inventor", 0) == 0
-                           ? text.substr(0, headerEnd).find("ascii") != std::string::npos
-                           : text.rfind("#VRML", 0) == 0;
+    // The header as Coin reads it: its reader drops NUL bytes from the line (found by
+    // SceneReaderFuzzer: "#Inventor V2.1 asci", 80 NULs and "i" was read as ASCII, and the
+    // cycle it held, never checked, overflowed the stack).
+    std::string header = text.substr(0, text.find('\n'));
+    header.erase(std::remove(header.begin(), header.end(), '\0'), header.end());
+    const bool ascii = header.rfind("#Inventor", 0) == 0 ? header.find("ascii") != std::string::npos
+                                                         : header.rfind("#VRML", 0) == 0;
     if (!ascii) return;
     open_.push_back(canonicalPath(path));
 

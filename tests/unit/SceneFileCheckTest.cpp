@@ -152,6 +152,17 @@ TEST(SceneFileCheck, AMissingFileWhoseNameHoldsAPercentSignIsRefusedAtItsLine) {
   EXPECT_TRUE(static_cast<bool>(loadScene(present).root));
 }
 
+// Found by SceneReaderFuzzer: Coin drops NUL bytes from the header line, so this header is
+// an ASCII one to Coin, and the cycle below it overflowed the stack unchecked.
+TEST(SceneFileCheck, AHeaderWithNulBytesIsReadAsCoinReadsIt) {
+  const std::string path =
+      write("nul_header.iv", std::string("#Inventor V2.1 asci") + std::string(80, '\0') +
+                                 "i\nDEF Room Separator {\n  Separator { USE Room }\n}\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":3: error: USE Room inside the node DEF Room itself (a node "
+                                  "that contains itself cannot be traversed)");
+}
+
 TEST(SceneFileCheck, BinaryFilesAreLeftToCoin) {
   const std::string binary = write("binary.iv", "#Inventor V2.1 binary\n" + std::string(3000, '{'));
   EXPECT_EQ(checkError(binary), "");
