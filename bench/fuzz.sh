@@ -2,10 +2,10 @@
 # Builds the libFuzzer harnesses (fuzz/, clang, AddressSanitizer + UBSan) in build-fuzz/ and
 # runs each for up to SECONDS (default 60; a finding stops it sooner) on one core, seeded from
 # the bundled scenes, malformed files, variants files and images. Prints a Markdown table
-# (seconds run, runs, findings) and writes it into docs/RELIABILITY.md between its "fuzz
-# table" markers. This run's findings (crash-*, leak-*, oom-*, timeout-* files) are kept in
+# (seconds run, runs, findings) and writes its rows into docs/RELIABILITY.md's table between
+# the "fuzz table" markers (the rows of harnesses not run stay). This run's findings (crash-*, leak-*, oom-*, timeout-* files) are kept in
 # build-fuzz/findings/HARNESS/; fix each and add it to the tests as a regression case.
-#   bench/fuzz.sh [SECONDS]
+#   bench/fuzz.sh [SECONDS [HARNESS...]]   (every harness when none is named)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -14,7 +14,12 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   CXX=clang++ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIVSHADOW_FUZZ=ON \
     -DBUILD_TESTING=OFF >/dev/null
 fi
-harnesses=(SceneReaderFuzzer FieldAssignmentFuzzer VariantsFileFuzzer ImageReaderFuzzer)
+all=(SceneReaderFuzzer FieldAssignmentFuzzer VariantsFileFuzzer ImageReaderFuzzer)
+harnesses=("${@:2}")
+[ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
+for harness in "${harnesses[@]}"; do
+  [[ " ${all[*]} " == *" $harness "* ]] || { echo "no harness $harness: ${all[*]}" >&2; exit 2; }
+done
 cmake --build "$build" -j "$(nproc)" --target "${harnesses[@]}" >/dev/null
 
 seed() {
@@ -52,7 +57,10 @@ table="| harness | seconds | runs | findings |
 for harness in "${harnesses[@]}"; do
   corpus=$build/corpus/$harness findings=$build/findings/$harness
   seed "$harness" "$corpus"
-  rm -rf "$findings" && mkdir -p "$findings"
+  # The last run's findings move aside (findings/HARNESS.previous), kept until the next run.
+  rm -rf "$findings.previous"
+  [ -d "$findings" ] && mv "$findings" "$findings.previous"
+  mkdir -p "$findings"
   log=$build/$harness.log
   began=$(date +%s)
   "$build/bin/$harness" "$corpus" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=20 \
@@ -65,12 +73,18 @@ for harness in "${harnesses[@]}"; do
   echo "$harness: ${runs:-0} runs in $ran s, $found findings ($log)" >&2
 done
 echo "$table"
-python3 - "$table" <<'PY'
+python3 - "$table" "${all[@]}" <<'PY'
 import re, sys
 path = "docs/RELIABILITY.md"
 text = open(path).read()
-table = sys.argv[1]
-new = re.sub(r"(<!-- fuzz table -->\n).*?(\n<!-- /fuzz table -->)",
-             lambda m: m.group(1) + table + m.group(2), text, flags=re.S)
-open(path, "w").write(new)
+table, order = sys.argv[1], sys.argv[2:]
+start, end = "<!-- fuzz table -->\n", "\n<!-- /fuzz table -->"
+old = text[text.index(start) + len(start):text.index(end)]
+def rows(block):
+    return {line.split("|")[1].strip(): line for line in block.splitlines()
+            if line.startswith("| ") and not line.startswith("| harness")}
+merged = {**rows(old), **rows(table)}
+lines = table.splitlines()[:2] + [merged[name] for name in order if name in merged]
+text = text.replace(start + old + end, start + "\n".join(lines) + end)
+open(path, "w").write(text)
 PY
