@@ -54,14 +54,15 @@ int lineOfFailure(const Variant& variant, const std::string& error) {
   return variant.line;
 }
 
-// Files a render killed while writing leaves: its output's temporary (AtomicFile's
-// ".NAME.png.tmpPID") in the output directory.
+// Files a render killed while writing leaves: the temporaries (AtomicFile's ".FILE.tmpPID")
+// of its picture and of its statistics scratch file, in the output directory.
 void removeTemporaries(const std::string& dir, const std::string& name) {
   std::error_code ec;
-  const std::string prefix = "." + name + ".png.tmp";
+  const std::string prefixes[] = {"." + name + ".png.tmp", ".." + name + ".stats.json.tmp"};
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    if (entry.path().filename().string().rfind(prefix, 0) == 0)
-      std::filesystem::remove(entry.path(), ec);
+    for (const std::string& prefix : prefixes)
+      if (entry.path().filename().string().rfind(prefix, 0) == 0)
+        std::filesystem::remove(entry.path(), ec);
 }
 
 // The variants this run renders: those of its shard, and of those the ones --only names.
