@@ -27,7 +27,6 @@
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include <algorithm>
-#include <tuple>
 #include <utility>
 
 namespace ivshadow {
@@ -251,11 +250,18 @@ std::string nurbsDefect(SoCallbackAction* action, const SoShape* shape) {
     const auto knots = [&](const char* name) -> const SoMFFloat& {
       return *static_cast<const SoMFFloat*>(field(name));
     };
+    // Both directions' knots against their control points: (u, v), or the texture's (s, t).
+    const auto directionsDefect = [&](const char* first, const char* firstKnots, const char* second,
+                                      const char* secondKnots) {
+      std::string defect = knotDefect(first, count(first), firstKnots, knots(firstKnots));
+      return defect.empty() ? knotDefect(second, count(second), secondKnots, knots(secondKnots))
+                            : defect;
+    };
     const long u = count("numUControlPoints"), v = count("numVControlPoints");
-    for (const auto& [points, vector, number] : {std::tuple{"numUControlPoints", "uKnotVector", u},
-                                                 std::tuple{"numVControlPoints", "vKnotVector", v}})
-      if (std::string defect = knotDefect(points, number, vector, knots(vector)); !defect.empty())
-        return defect;
+    if (std::string defect = directionsDefect("numUControlPoints", "uKnotVector",
+                                              "numVControlPoints", "vKnotVector");
+        !defect.empty())
+      return defect;
     const auto* coordIndex =
         indexedSurface ? static_cast<const SoMFInt32*>(field("coordIndex")) : nullptr;
     if (std::string defect =
@@ -273,10 +279,10 @@ std::string nurbsDefect(SoCallbackAction* action, const SoShape* shape) {
     if (!textured || s == 0 || t == 0 || knots("sKnotVector").getNum() == 0 ||
         knots("tKnotVector").getNum() == 0 || textureCoordinates == 0)
       return {};
-    for (const auto& [points, vector, number] : {std::tuple{"numSControlPoints", "sKnotVector", s},
-                                                 std::tuple{"numTControlPoints", "tKnotVector", t}})
-      if (std::string defect = knotDefect(points, number, vector, knots(vector)); !defect.empty())
-        return defect;
+    if (std::string defect = directionsDefect("numSControlPoints", "sKnotVector",
+                                              "numTControlPoints", "tKnotVector");
+        !defect.empty())
+      return defect;
     const auto* textureIndex =
         indexedSurface ? static_cast<const SoMFInt32*>(field("textureCoordIndex")) : nullptr;
     // Coin indexes them only when the first index is one (SoIndexedNurbsSurface).

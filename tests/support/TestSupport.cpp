@@ -57,6 +57,12 @@ std::string outputDir() {
   return dir.string();
 }
 
+std::string writeOutputFile(const std::string& name, const std::string& bytes) {
+  const std::string path = outputDir() + "/" + name;
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
 int startProcess(const std::vector<std::string>& arguments,
                  const std::vector<std::string>& environment, const std::string& outPath,
                  const std::string& errPath) {

@@ -17,6 +17,8 @@ std::string viewerExe();
 // A fresh, empty directory for the current test's files:
 // <build>/test-output/<suite>.<test>/.
 std::string outputDir();
+// Writes `bytes` as they are to outputDir()/`name` and returns its path.
+std::string writeOutputFile(const std::string& name, const std::string& bytes);
 
 struct ProcessResult {
   int exitCode = -1;

@@ -4,18 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
 namespace ivshadow {
 namespace {
-
-std::string writeText(const std::string& name, const std::string& bytes) {
-  const std::string path = test::outputDir() + "/" + name;
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
-}
 
 std::string messageOf(const std::string& path) {
   int width = 0, height = 0;
@@ -41,7 +34,8 @@ TEST(PfmFile, RoundTripsEveryFloatAndRowOrder) {
 // Found by ImageReaderFuzzer: a header asking for 8 x 118,888,888 pixels made the reader
 // allocate 11 GB before it found that the file holds 3 bytes of them.
 TEST(PfmFile, AHeaderAskingForMoreThanTheFileHoldsIsRefusedBeforeAllocating) {
-  const std::string path = writeText("huge.pfm", std::string("PF\n8 118888888\n-1.0\n") + "abc");
+  const std::string path =
+      test::writeOutputFile("huge.pfm", std::string("PF\n8 118888888\n-1.0\n") + "abc");
   EXPECT_EQ(messageOf(path), path +
                                  ": error: the header asks for 8 x 118888888 pixels of 12 bytes; "
                                  "the file holds 3 bytes of pixels");
@@ -50,19 +44,21 @@ TEST(PfmFile, AHeaderAskingForMoreThanTheFileHoldsIsRefusedBeforeAllocating) {
 // 842443544 x 1824726041 pixels of 12 bytes is 32 bytes modulo 2^64: a check in bytes let
 // this header through to an allocation of 4.6e18 floats.
 TEST(PfmFile, AHeaderWhoseByteCountWrapsIsRefused) {
-  const std::string path =
-      writeText("wraps.pfm", "PF\n842443544 1824726041\n-1.0\n" + std::string(32, '\0'));
+  const std::string path = test::writeOutputFile(
+      "wraps.pfm", "PF\n842443544 1824726041\n-1.0\n" + std::string(32, '\0'));
   EXPECT_EQ(messageOf(path), path +
                                  ": error: the header asks for 842443544 x 1824726041 pixels of "
                                  "12 bytes; the file holds 32 bytes of pixels");
 }
 
 TEST(PfmFile, AShortFileAndABadHeaderAreRefusedWithTheirLine) {
-  const std::string shortFile = writeText("short.pfm", "PF\n2 1\n-1.0\n" + std::string(20, '\0'));
+  const std::string shortFile =
+      test::writeOutputFile("short.pfm", "PF\n2 1\n-1.0\n" + std::string(20, '\0'));
   EXPECT_EQ(messageOf(shortFile), shortFile +
                                       ": error: the header asks for 2 x 1 pixels of 12 bytes; the "
                                       "file holds 20 bytes of pixels");
-  const std::string grey = writeText("grey.pfm", "Pf\n2 1\n-1.0\n" + std::string(8, '\0'));
+  const std::string grey =
+      test::writeOutputFile("grey.pfm", "Pf\n2 1\n-1.0\n" + std::string(8, '\0'));
   EXPECT_EQ(messageOf(grey),
             grey + ":1: error: expected a colour PFM header 'PF', width, height, scale");
 }

@@ -8,16 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 namespace ivshadow {
 namespace {
-
-std::string write(const std::string& name, const std::string& text) {
-  const std::string path = test::outputDir() + "/" + name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
 
 std::string checkError(const std::string& path) {
   try {
@@ -38,8 +30,8 @@ std::string nested(int levels) {
 
 // The limit counts braces: `levels` separators and the cube's own brace.
 TEST(SceneFileCheck, NestingUpToTheLimitIsReadAndOneLevelMoreIsRefusedAtItsLine) {
-  EXPECT_EQ(checkError(write("at_limit.iv", nested(kMaxSceneNesting - 1))), "");
-  const std::string deeper = write("deeper.iv", nested(kMaxSceneNesting));
+  EXPECT_EQ(checkError(test::writeOutputFile("at_limit.iv", nested(kMaxSceneNesting - 1))), "");
+  const std::string deeper = test::writeOutputFile("deeper.iv", nested(kMaxSceneNesting));
   // Line 1 is the header, line k + 1 opens brace k; the cube opens brace kMaxSceneNesting + 1.
   EXPECT_EQ(checkError(deeper), deeper + ":" + std::to_string(kMaxSceneNesting + 2) +
                                     ": error: nodes nested more than " +
@@ -49,7 +41,7 @@ TEST(SceneFileCheck, NestingUpToTheLimitIsReadAndOneLevelMoreIsRefusedAtItsLine)
 TEST(SceneFileCheck, HundredThousandNestedSeparatorsAreRefusedBeforeCoinReadsThem) {
   // 20,000 already crashed Coin's reader (SceneFileCheck.h); loadScene must refuse, not crash.
   init();
-  const std::string path = write("deep.iv", nested(100000));
+  const std::string path = test::writeOutputFile("deep.iv", nested(100000));
   try {
     loadScene(path);
     ADD_FAILURE() << "a scene nested 100,000 levels deep was read";
@@ -60,11 +52,11 @@ TEST(SceneFileCheck, HundredThousandNestedSeparatorsAreRefusedBeforeCoinReadsThe
 }
 
 TEST(SceneFileCheck, NestingCountsAcrossIncludedFiles) {
-  write("inner.iv", nested(kMaxSceneNesting - 3));  // 998 braces of its own
+  test::writeOutputFile("inner.iv", nested(kMaxSceneNesting - 3));  // 998 braces of its own
   const std::string outer =
-      write("outer.iv",
-            "#Inventor V2.1 ascii\nSeparator {\n  Separator {\n    File { name "
-            "\"inner.iv\" }\n  }\n}\n");
+      test::writeOutputFile("outer.iv",
+                            "#Inventor V2.1 ascii\nSeparator {\n  Separator {\n    File { name "
+                            "\"inner.iv\" }\n  }\n}\n");
   // Two separators and the File's brace above the included file's 998: one too many.
   const std::string error = checkError(outer);
   EXPECT_EQ(error.rfind(test::outputDir() + "/inner.iv:", 0), 0u) << error;
@@ -72,62 +64,67 @@ TEST(SceneFileCheck, NestingCountsAcrossIncludedFiles) {
 }
 
 TEST(SceneFileCheck, LongNamesAreRefusedAtTheirLineAndStringsAreNotNames) {
-  const std::string at =
-      write("name_at_limit.iv", "#Inventor V2.1 ascii\nDEF " +
-                                    std::string(kMaxSceneTokenLength, 'A') + " Separator { }\n");
+  const std::string at = test::writeOutputFile(
+      "name_at_limit.iv",
+      "#Inventor V2.1 ascii\nDEF " + std::string(kMaxSceneTokenLength, 'A') + " Separator { }\n");
   EXPECT_EQ(checkError(at), "");
   const std::string longer =
-      write("long_name.iv",
-            "#Inventor V2.1 ascii\n\nDEF " + std::string(1000000, 'A') + " Separator { }\n");
+      test::writeOutputFile("long_name.iv", "#Inventor V2.1 ascii\n\nDEF " +
+                                                std::string(1000000, 'A') + " Separator { }\n");
   EXPECT_EQ(checkError(longer), longer +
                                     ":3: error: a name or value of 1000000 characters (at "
                                     "most 1000 are read)");
   // A long quoted string (an Info's text, a file name) is a value Coin reads without trouble.
-  const std::string info = write("long_string.iv", "#Inventor V2.1 ascii\nInfo { string \"" +
-                                                       std::string(50000, 'x') + "\" }\n");
+  const std::string info =
+      test::writeOutputFile("long_string.iv", "#Inventor V2.1 ascii\nInfo { string \"" +
+                                                  std::string(50000, 'x') + "\" }\n");
   EXPECT_EQ(checkError(info), "");
 }
 
 TEST(SceneFileCheck, UseOfAnOpenDefinitionIsACycleAndOtherUsesAreNot) {
-  const std::string cycle = write("cycle.iv",
-                                  "#Inventor V2.1 ascii\nDEF A Separator {\n  Separator {\n"
-                                  "    USE A\n  }\n}\n");
+  const std::string cycle =
+      test::writeOutputFile("cycle.iv",
+                            "#Inventor V2.1 ascii\nDEF A Separator {\n  Separator {\n"
+                            "    USE A\n  }\n}\n");
   EXPECT_EQ(checkError(cycle), cycle +
                                    ":4: error: USE A inside the node DEF A itself (a node "
                                    "that contains itself cannot be traversed)");
   // Ordinary instancing: A is closed when it is used, and the inner DEF A (a new definition
   // that hides the open one) is closed before its USE.
-  const std::string shared = write("shared.iv",
-                                   "#Inventor V2.1 ascii\nSeparator {\n  DEF A Cube { }\n  USE A\n"
-                                   "  DEF B Separator {\n    DEF B Sphere { }\n    USE B\n  }\n"
-                                   "  USE B\n}\n");
+  const std::string shared =
+      test::writeOutputFile("shared.iv",
+                            "#Inventor V2.1 ascii\nSeparator {\n  DEF A Cube { }\n  USE A\n"
+                            "  DEF B Separator {\n    DEF B Sphere { }\n    USE B\n  }\n"
+                            "  USE B\n}\n");
   EXPECT_EQ(checkError(shared), "");
   // Braces and USE inside strings and comments are not syntax.
-  const std::string quoted = write("quoted.iv",
-                                   "#Inventor V2.1 ascii\nDEF A Separator {\n  Info { string "
-                                   "\"USE A { \\\" }\" }\n  # USE A\n}\n");
+  const std::string quoted =
+      test::writeOutputFile("quoted.iv",
+                            "#Inventor V2.1 ascii\nDEF A Separator {\n  Info { string "
+                            "\"USE A { \\\" }\" }\n  # USE A\n}\n");
   EXPECT_EQ(checkError(quoted), "");
 }
 
 TEST(SceneFileCheck, FilesIncludingThemselvesDirectlyOrThroughOthersAreRefused) {
-  const std::string a =
-      write("a.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"b.iv\" }\n}\n");
-  const std::string b =
-      write("b.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a.iv\" }\n}\n");
+  const std::string a = test::writeOutputFile(
+      "a.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"b.iv\" }\n}\n");
+  const std::string b = test::writeOutputFile(
+      "b.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a.iv\" }\n}\n");
   EXPECT_EQ(checkError(a), b + ":4: error: File a.iv includes a file that includes it (the scene "
                                "would never end)");
-  const std::string twice = write("twice.iv",
-                                  "#Inventor V2.1 ascii\nSeparator {\n  File { name \"leaf.iv\" }\n"
-                                  "  File { name \"leaf.iv\" }\n}\n");
-  write("leaf.iv", "#Inventor V2.1 ascii\nCube { }\n");
+  const std::string twice =
+      test::writeOutputFile("twice.iv",
+                            "#Inventor V2.1 ascii\nSeparator {\n  File { name \"leaf.iv\" }\n"
+                            "  File { name \"leaf.iv\" }\n}\n");
+  test::writeOutputFile("leaf.iv", "#Inventor V2.1 ascii\nCube { }\n");
   EXPECT_EQ(checkError(twice), "") << "including one file twice is no cycle";
 }
 
 // Found by SceneReaderFuzzer: a File naming a directory made the check read a directory.
 TEST(SceneFileCheck, AFileNodeNamingADirectoryIsLeftToCoinsMessage) {
   init();
-  const std::string path =
-      write("directory.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \".\" }\n}\n");
+  const std::string path = test::writeOutputFile(
+      "directory.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \".\" }\n}\n");
   EXPECT_EQ(checkError(path), "");
   try {
     loadScene(path);
@@ -140,14 +137,14 @@ TEST(SceneFileCheck, AFileNodeNamingADirectoryIsLeftToCoinsMessage) {
 // format, and `render` died on File { name "a%s.iv" }. A file that is there is read.
 TEST(SceneFileCheck, AMissingFileWhoseNameHoldsAPercentSignIsRefusedAtItsLine) {
   init();
-  const std::string path =
-      write("percent.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a%s.iv\" }\n}\n");
+  const std::string path = test::writeOutputFile(
+      "percent.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a%s.iv\" }\n}\n");
   EXPECT_EQ(checkError(path), path +
                                   ":4: error: File a%s.iv: no such file beside percent.iv, and "
                                   "Coin cannot report a missing name holding '%'");
-  write("b%d.iv", "#Inventor V2.1 ascii\nCube { }\n");
-  const std::string present =
-      write("present.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"b%d.iv\" } }\n");
+  test::writeOutputFile("b%d.iv", "#Inventor V2.1 ascii\nCube { }\n");
+  const std::string present = test::writeOutputFile(
+      "present.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"b%d.iv\" } }\n");
   EXPECT_EQ(checkError(present), "");
   EXPECT_TRUE(static_cast<bool>(loadScene(present).root));
 }
@@ -155,16 +152,17 @@ TEST(SceneFileCheck, AMissingFileWhoseNameHoldsAPercentSignIsRefusedAtItsLine) {
 // Found by SceneReaderFuzzer: Coin drops NUL bytes from the header line, so this header is
 // an ASCII one to Coin, and the cycle below it overflowed the stack unchecked.
 TEST(SceneFileCheck, AHeaderWithNulBytesIsReadAsCoinReadsIt) {
-  const std::string path =
-      write("nul_header.iv", std::string("#Inventor V2.1 asci") + std::string(80, '\0') +
-                                 "i\nDEF Room Separator {\n  Separator { USE Room }\n}\n");
+  const std::string path = test::writeOutputFile(
+      "nul_header.iv", std::string("#Inventor V2.1 asci") + std::string(80, '\0') +
+                           "i\nDEF Room Separator {\n  Separator { USE Room }\n}\n");
   EXPECT_EQ(checkError(path), path +
                                   ":3: error: USE Room inside the node DEF Room itself (a node "
                                   "that contains itself cannot be traversed)");
 }
 
 TEST(SceneFileCheck, BinaryFilesAreLeftToCoin) {
-  const std::string binary = write("binary.iv", "#Inventor V2.1 binary\n" + std::string(3000, '{'));
+  const std::string binary =
+      test::writeOutputFile("binary.iv", "#Inventor V2.1 binary\n" + std::string(3000, '{'));
   EXPECT_EQ(checkError(binary), "");
 }
 
