@@ -8,6 +8,8 @@
 
 #include <epoxy/gl.h>
 
+#include <cmath>
+
 namespace ivshadow {
 namespace {
 
@@ -127,12 +129,14 @@ void RayShadowPass::endCapture() {
 
 std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
                                   bool surfacesChanged,
-                                  const std::vector<std::uint16_t>& visibility, int rays) {
+                                  const std::vector<std::uint16_t>& visibility,
+                                  const std::vector<int>& traced, int rays, bool positions) {
   const auto release = [this] {
     uploadedLayers_ = 0;
     uploadedRays_ = 0;
     shadingDepth_.reset();
     shadingVisibility_.reset();
+    shadingPosition_.reset();
     shadingWidth_ = shadingHeight_ = 0;
   };
   if (count == 0 || rays == 0) {
@@ -143,6 +147,7 @@ std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int c
   if (width != shadingWidth_ || height != shadingHeight_ || count != uploadedLayers_ ||
       rays != uploadedRays_) {
     clearGlErrors();
+    shadingPosition_.reset();
     shadingDepth_ = createTexture(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(shadingDepth_.get(), 1, GL_R32F, width, height, count);
     shadingVisibility_ = createTexture(GL_TEXTURE_2D_ARRAY);
@@ -157,10 +162,25 @@ std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int c
       release();
       return "GL could not allocate the traced shadows' textures (" + failure + ")";
     }
+    // A light nothing writes (its casters could not be traced) shows no shadow.
+    const float lit[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearTexImage(shadingVisibility_.get(), 0, GL_RGBA, GL_FLOAT, lit);
     shadingWidth_ = width;
     shadingHeight_ = height;
     surfacesChanged = true;  // new textures hold no depths yet
   }
+  if (positions && !shadingPosition_) {
+    clearGlErrors();
+    shadingPosition_ = createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(shadingPosition_.get(), 1, GL_RGBA32F, width, height, count);
+    const std::string failure = glAllocationError(GlAllocation::Texture);
+    if (!failure.empty()) {
+      release();
+      return "GL could not allocate the captured positions' texture (" + failure + ")";
+    }
+    surfacesChanged = true;
+  }
+  if (!positions) shadingPosition_.reset();
   uploadedLayers_ = count;
   uploadedRays_ = rays;
   const PixelStoreScope pixelStore;
@@ -174,8 +194,23 @@ std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int c
     glTextureSubImage3D(shadingDepth_.get(), 0, 0, 0, l, width, height, 1, GL_RED, GL_FLOAT,
                         depth.data());
   }
-  glTextureSubImage3D(shadingVisibility_.get(), 0, 0, 0, 0, width, height, count * rays, GL_RGBA,
-                      GL_HALF_FLOAT, visibility.data());
+  // The positions as captured, for the shadow volumes: a distance computed from them is
+  // good to the float precision of the group's coordinates, where one computed from the
+  // window depth loses the ratio of distance to near plane (a factor 250 at 50 units with a
+  // near plane at 0.2).
+  std::vector<float>& position = positionScratch_;
+  for (int l = 0; surfacesChanged && positions && l < count; ++l) {
+    const SurfaceLayer& layer = layers[std::size_t(l)];
+    position.assign(layer.position.begin(), layer.position.end());
+    for (std::size_t i = 0; i < depth.size(); ++i)
+      if (!layer.traced(i)) position[i * 4 + 3] = 1.0f;
+    glTextureSubImage3D(shadingPosition_.get(), 0, 0, 0, l, width, height, 1, GL_RGBA, GL_FLOAT,
+                        position.data());
+  }
+  const std::size_t slab = depth.size() * 4 * std::size_t(count);
+  for (std::size_t i = 0; i < traced.size() && (i + 1) * slab <= visibility.size(); ++i)
+    glTextureSubImage3D(shadingVisibility_.get(), 0, 0, 0, traced[i] * count, width, height, count,
+                        GL_RGBA, GL_HALF_FLOAT, visibility.data() + i * slab);
   return {};
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
+#include "callbacks/ShaderConstants.h"
 #include "scene/ShadowTypes.h"
 
 #include <cstdint>
@@ -22,7 +23,7 @@ class UniformLocations;
 //   upload(); bind() while the children are shaded.
 class RayShadowPass {
  public:
-  static constexpr int kMaxTransparentLayers = 4;
+  static constexpr int kMaxTransparentLayers = kMaxScreenLayers - 1;
 
   // `firstUnit`: the first of the kRayUnits units of the ray samplers
   // (DeepShadowPass::rayUnit(0)).
@@ -41,14 +42,27 @@ class RayShadowPass {
   // Restores the GL state.
   void endCapture();
 
-  // Uploads the captured depths of the first `count` layers and the visibility of `rays`
-  // lights for the shading pass. `surfacesChanged` false: the layers are the ones uploaded
-  // last (only the lights moved), whose depths the textures still hold.
-  // Empty when uploaded; else what GL said when allocating the textures, which then hold
-  // nothing (layers() is 0: the lights are shaded without shadows).
+  // Uploads the captured depths of the first `count` layers for the shading pass, sized for
+  // `lights` screen-space lights (RAYS and VOLUMES), and the visibility that the CPU traced
+  // for some of them: light i of `visibility` is screen light traced[i]. `surfacesChanged`
+  // false: the layers are the ones uploaded last (only the lights moved), whose depths the
+  // textures still hold. `positions`: the layers' positions too (positionTexture()), for the
+  // shadow volumes. Empty when uploaded; else what GL said when allocating the textures,
+  // which then hold nothing (layers() is 0: the lights are shaded without shadows).
   std::string upload(const std::vector<SurfaceLayer>& layers, int count, bool surfacesChanged,
-                     const std::vector<std::uint16_t>& visibility, int rays);
+                     const std::vector<std::uint16_t>& visibility, const std::vector<int>& traced,
+                     int lights, bool positions);
   int layers() const { return uploadedLayers_; }
+  // The textures upload() filled, for a pass that writes a screen light's visibility on the
+  // GPU (ShadowVolumePass): window depth per layer, and visibility per light and layer
+  // (layer light * layers() + captured layer).
+  unsigned int depthTexture() const { return shadingDepth_.get(); }
+  unsigned int visibilityTexture() const { return shadingVisibility_.get(); }
+  // Per layer the captured position in the group's coordinates and the window depth (1
+  // where nothing is traced); 0 unless upload() was asked for it.
+  unsigned int positionTexture() const { return shadingPosition_.get(); }
+  int width() const { return shadingWidth_; }
+  int height() const { return shadingHeight_; }
   // Binds the shading textures until the returned scope ends.
   std::unique_ptr<GlStateScope> bind() const;
 
@@ -68,11 +82,13 @@ class RayShadowPass {
   std::vector<int> viewport_;
   GlTexture shadingDepth_;
   GlTexture shadingVisibility_;
+  GlTexture shadingPosition_;
   int uploadedLayers_ = 0;
   int uploadedRays_ = 0;
   int shadingWidth_ = 0;
   int shadingHeight_ = 0;
   std::vector<float> depthScratch_;
+  std::vector<float> positionScratch_;
 };
 
 }  // namespace ivshadow

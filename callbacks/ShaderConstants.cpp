@@ -37,6 +37,8 @@ std::string shaderConstantDefines() {
        << "#define IVSHADOW_FRAGMENT_HEADS_UNIT " << kFragmentHeadsUnit << "\n"
        << "#define IVSHADOW_FRAGMENT_COUNTS_UNIT " << kFragmentCountsUnit << "\n"
        << "#define IVSHADOW_MAX_FRAGMENTS_PER_PIXEL " << kMaxFragmentsPerPixel << "\n"
+       << "#define IVSHADOW_MAX_SCREEN_LAYERS " << kMaxScreenLayers << "\n"
+       << "#define IVSHADOW_VOLUME_DEPTH_TOLERANCE " << kVolumeDepthTolerance << "\n"
        << "#define IVSHADOW_MAP_CUBE " << int(MapProjection::Cube) << "\n"
        << "#define IVSHADOW_MAP_PERSPECTIVE " << int(MapProjection::Perspective) << "\n"
        << "#define IVSHADOW_MAP_ORTHOGRAPHIC " << int(MapProjection::Orthographic) << "\n"

@@ -94,6 +94,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["ray_layers"] = shadows.rayLayers;
   stats["passes"]["bvh_build_ms"] = shadows.bvhBuildMs;
   stats["rays_traced"] = shadows.raysTraced;
+  stats["volume_faces"] = shadows.volumeFaces;
   stats["ray_frames"] = shadows.rayFrames;
   stats["ray_captures"] = shadows.rayCaptures;
   stats["bvh_bytes"] = shadows.bvhBytes;

@@ -11,7 +11,7 @@ RenderMemory RenderMemory::of(SoNode* root, bool softwareRenderer, bool traced) 
   bool rays = traced;
   forEachNodeOfType<SoDeepShadowLight>(root, [&](SoDeepShadowLight& light) {
     const int method = light.method.getValue();
-    rays = rays || method == SoDeepShadowLight::RAYS ||
+    rays = rays || method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES ||
            (method == SoDeepShadowLight::AUTO_METHOD && softwareRenderer);
   });
   int separators = 0;

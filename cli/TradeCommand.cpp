@@ -48,7 +48,9 @@ std::vector<Node*> allNodes(SoNode* root) {
 
 struct Setting {
   std::string label;
-  bool rays = false;
+  // SoDeepShadowLight::Method: MAP sweeps the map's settings; RAYS and VOLUMES, exact, have
+  // none.
+  int method = SoDeepShadowLight::MAP;
   int resolution = 0;
   int layers = 0;
   std::string precision;
@@ -104,9 +106,11 @@ int runTrade(const TradeOptions& options) {
                          std::to_string(kMaxMapLayers));
     checkList(options.precisions, {"half", "float"}, "--precision");
     checkList(options.filters, {"none", "bilinear", "pcf"}, "--filter");
-    checkList(options.methods, {"map", "rays"}, "--method");
-    const bool maps = std::count(options.methods.begin(), options.methods.end(), "map") > 0;
-    const bool rays = std::count(options.methods.begin(), options.methods.end(), "rays") > 0;
+    checkList(options.methods, {"map", "rays", "volumes"}, "--method");
+    const auto asked = [&](const char* method) {
+      return std::count(options.methods.begin(), options.methods.end(), method) > 0;
+    };
+    const bool maps = asked("map"), rays = asked("rays"), volumes = asked("volumes");
 
     init();
     LoadedScene scene = loadScene(options.scene);
@@ -120,7 +124,7 @@ int runTrade(const TradeOptions& options) {
                        "there is no deep shadow setting to trade");
     // One process holds the reference and the renders, the traced setting's among them, at
     // once.
-    const MemoryCost render = RenderMemory::of(scene.root.get(), false, rays).cost;
+    const MemoryCost render = RenderMemory::of(scene.root.get(), false, rays || volumes).cost;
     MemoryBudget::check(size,
                         {kReferenceCost.bytesPerPixel + render.bytesPerPixel,
                          kReferenceCost.fixedBytes + render.fixedBytes},
@@ -136,15 +140,18 @@ int runTrade(const TradeOptions& options) {
     AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
 
     std::vector<Setting> settings;
-    if (rays) settings.push_back(Setting{"rays (exact)", true, 0, 0, "", ""});
+    if (rays) settings.push_back(Setting{"rays (exact)", SoDeepShadowLight::RAYS, 0, 0, "", ""});
+    if (volumes)
+      settings.push_back(
+          Setting{"shadow volumes (exact, hard)", SoDeepShadowLight::VOLUMES, 0, 0, "", ""});
     for (int resolution : maps ? options.resolutions : std::vector<int>{})
       for (int layers : options.layers)
         for (const std::string& precision : options.precisions)
           for (const std::string& filter : options.filters)
-            settings.push_back(Setting{std::to_string(resolution) + " " + std::to_string(layers) +
-                                           "L " + precision +
-                                           (filter == "none" ? "" : " " + filter),
-                                       false, resolution, layers, precision, filter});
+            settings.push_back(
+                Setting{std::to_string(resolution) + " " + std::to_string(layers) + "L " +
+                            precision + (filter == "none" ? "" : " " + filter),
+                        SoDeepShadowLight::MAP, resolution, layers, precision, filter});
     const int total = int(settings.size()) + 2;
     ProgressBar bar;
     int done = 0;
@@ -182,8 +189,8 @@ int runTrade(const TradeOptions& options) {
 
     for (const Setting& setting : settings) {
       for (SoDeepShadowLight* light : lights) {
-        light->method.setValue(setting.rays ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP);
-        if (setting.rays) continue;
+        light->method.setValue(setting.method);
+        if (setting.method != SoDeepShadowLight::MAP) continue;
         light->resolution.setValue(setting.resolution);
         light->maxLayers.setValue(setting.layers);
         light->precision.setValue(setting.precision == "half" ? SoDeepShadowLight::HALF
@@ -195,21 +202,26 @@ int runTrade(const TradeOptions& options) {
       }
       Row row;
       row.setting = setting;
-      row.kind = setting.rays ? "rays" : "deep shadow map";
+      const bool screen = setting.method != SoDeepShadowLight::MAP;
+      row.kind = setting.method == SoDeepShadowLight::RAYS      ? "rays"
+                 : setting.method == SoDeepShadowLight::VOLUMES ? "shadow volumes"
+                                                                : "deep shadow map";
       // Each build is timed on its own (touching a light forces one), median of --frames.
       std::vector<double> builds;
       for (int i = 0; i < options.frames; ++i) {
         if (i > 0)
           for (SoDeepShadowLight* light : lights) light->location.touch();
         renderer->render(view.root.get());
-        // A map is built when the light moves; traced shadows are traced again instead.
+        // A map is built when the light moves; traced shadows are traced (or the volumes
+        // drawn) again instead.
         const DeepShadowStatistics built = collectDeepShadowStatistics(view.root.get());
-        builds.push_back(setting.rays ? built.raysMs : built.lastBuildMs);
+        builds.push_back(screen ? built.raysMs : built.lastBuildMs);
       }
       row.buildMs = FrameStatistics::median(builds);
       const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
       for (const DeepShadowLightStatistics& light : stats.lights) row.bytes += light.bytes;
-      if (setting.rays) row.bytes = stats.bvhBytes;  // the casters' BVH instead of a map
+      if (setting.method == SoDeepShadowLight::RAYS)
+        row.bytes = stats.bvhBytes;  // the casters' BVH instead of a map
       row.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
       row.metrics = ImageComparison::compare(exact, renderer->read(), "reference", "render");
       rows.push_back(row);

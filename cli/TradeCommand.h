@@ -13,7 +13,8 @@ struct TradeOptions {
   std::vector<int> layers{1, 2, 4, 8};
   std::vector<std::string> precisions{"half", "float"};
   std::vector<std::string> filters{"none", "bilinear", "pcf"};
-  std::vector<std::string> methods{"map", "rays"};  // rays: one setting, exact
+  // rays and volumes: one setting each, exact
+  std::vector<std::string> methods{"map", "rays", "volumes"};
   int frames = 5;
 };
 

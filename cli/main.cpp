@@ -187,7 +187,7 @@ int main(int argc, char** argv) {
   tradeCommand->add_option("--filter", trade.filters, "none, bilinear (PCF over one texel) and/or pcf (3 x 3 texels)")
       ->delimiter(',')
       ->capture_default_str();
-  tradeCommand->add_option("--method", trade.methods, "map and/or rays")
+  tradeCommand->add_option("--method", trade.methods, "map, rays and/or volumes")
       ->delimiter(',')
       ->capture_default_str();
   tradeCommand->add_option("--frames", trade.frames, "Frames timed per setting (median)")

@@ -20,6 +20,7 @@ void addDeepShadowEnumValues(SoFieldData* fieldData) {
   fieldData->addEnumValue("Method", "AUTO", SoDeepShadowLight::AUTO_METHOD);
   fieldData->addEnumValue("Method", "MAP", SoDeepShadowLight::MAP);
   fieldData->addEnumValue("Method", "RAYS", SoDeepShadowLight::RAYS);
+  fieldData->addEnumValue("Method", "VOLUMES", SoDeepShadowLight::VOLUMES);
 }
 
 }  // namespace ivshadow

@@ -38,6 +38,7 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.rayLayers = std::max(total.rayLayers, stats.rayLayers);
     total.bvhBuildMs += stats.bvhBuildMs;
     total.raysTraced += stats.raysTraced;
+    total.volumeFaces += stats.volumeFaces;
     total.bvhBytes += stats.bvhBytes;
     total.rayFrames += stats.rayFrames;
     total.rayCaptures += stats.rayCaptures;

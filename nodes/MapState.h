@@ -30,7 +30,8 @@ struct MapState {
   glm::vec3 coveredHigh{0.0f};
   std::array<int, 6> faceFirst{};
   std::array<int, 6> faceLayers{};
-  bool rays = false;  // method RAYS: no map, traced per pixel
+  bool rays = false;     // method RAYS or VOLUMES: no map, a visibility per pixel
+  bool volumes = false;  // ... VOLUMES: drawn by shadow volumes, not traced
   ShadowColourModel model = ShadowColourModel::Monochrome;
 };
 

@@ -2,6 +2,7 @@
 
 #include "callbacks/GlStateScope.h"
 #include "callbacks/RayShadowPass.h"
+#include "callbacks/ShadowVolumePass.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
@@ -11,6 +12,7 @@
 #include "nodes/SuspendedRenderCaches.h"
 #include "nodes/TransparencyOverride.h"
 #include "raytrace/ScreenShadowTracer.h"
+#include "raytrace/ShadowVolumes.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoDepthBufferElement.h>
@@ -19,6 +21,7 @@
 #include <Inventor/elements/SoProjectionMatrixElement.h>
 #include <Inventor/elements/SoViewingMatrixElement.h>
 #include <Inventor/elements/SoViewportRegionElement.h>
+#include <Inventor/errors/SoDebugError.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <chrono>
@@ -26,7 +29,8 @@
 
 namespace ivshadow {
 
-RayMethod::RayMethod(int textureUnit) : pass_(std::make_unique<RayShadowPass>(textureUnit)) {}
+RayMethod::RayMethod(int textureUnit)
+    : pass_(std::make_unique<RayShadowPass>(textureUnit)), textureUnit_(textureUnit) {}
 
 RayMethod::~RayMethod() = default;
 
@@ -61,8 +65,14 @@ std::string RayMethod::update(SoGLRenderAction* action, const GroupContents& con
   const auto captured = std::chrono::steady_clock::now();
 
   std::vector<RayLight> lights;
+  std::vector<int> tracedLights;  // screen light of each traced one
+  int screenLights = 0, volumeLights = 0;
   for (const MapState& map : maps) {
     if (!map.rays) continue;
+    ++screenLights;
+    if (map.volumes) ++volumeLights;
+    if (map.volumes || !casters.scene()) continue;
+    tracedLights.push_back(screenLights - 1);
     RayLight light;
     for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
     light.directional = map.kind == LightKind::Directional;
@@ -74,10 +84,12 @@ std::string RayMethod::update(SoGLRenderAction* action, const GroupContents& con
           ? traceScreenShadows(*casters.scene(), surfaces_, capturedLayers_, lights, visibility_)
           : 0;
   const auto tracedAt = std::chrono::steady_clock::now();
+  if (traced == 0) visibility_.clear();
   const std::string uploaded =
-      pass_->upload(surfaces_, int(capturedLayers_), recapture, visibility_,
-                    visibility_.empty() ? 0 : int(lights.size()));
+      pass_->upload(surfaces_, int(capturedLayers_), recapture, visibility_, tracedLights,
+                    screenLights, volumeLights > 0);
   if (failure.empty()) failure = uploaded;
+  if (failure.empty()) failure = drawVolumes(state, contents, maps, statistics);
   traced_ = key;
   traceValid_ = true;
   statistics.raysTraced = traced;
@@ -141,7 +153,91 @@ std::string RayMethod::capture(SoGLRenderAction* action, const GroupContents& co
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 
   capturedLayers_ = layerCount;
+  receivers_.makeEmpty();
+  for (std::size_t l = 0; l < layerCount; ++l) {
+    const SurfaceLayer& layer = layers[l];
+    const std::size_t pixels = layer.position.size() / 4;
+    for (std::size_t i = 0; i < pixels; ++i)
+      if (layer.traced(i))
+        receivers_.extendBy(
+            SbVec3f(layer.position[i * 4], layer.position[i * 4 + 1], layer.position[i * 4 + 2]));
+  }
   return failure;
+}
+
+std::string RayMethod::drawVolumes(SoState* state, const GroupContents& contents,
+                                   const std::vector<MapState>& maps,
+                                   DeepShadowStatistics& statistics) {
+  statistics.volumeFaces = 0;
+  if (pass_->layers() == 0) return {};
+  ShadowVolumePass::View view{};
+  const SbMatrix toEye = SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state);
+  const SbMatrix& projection = SoProjectionMatrixElement::get(state);
+  // A perspective view draws the volumes with its far plane at infinity (seeds/000 eq. 2.1):
+  // faces beyond the scene are kept and those in front of the near plane, which are never
+  // beyond a surface, are clipped. Clamping depth instead would keep faces reaching behind
+  // the eye too, where the rasteriser's clipping of coordinates near w = 0 leaves cracks
+  // between faces (single pixels counted once too often). A parallel view has no such place
+  // and clamps.
+  SbMatrix volumeProjection = projection;
+  view.depthClamp = projection[3][3] != 0.0f;
+  if (!view.depthClamp) {
+    const float near = projection[3][2] / (projection[2][2] - 1.0f);
+    volumeProjection[2][2] = -1.0f;
+    volumeProjection[3][2] = -2.0f * near;
+  }
+  const SbMatrix toClip = toEye * volumeProjection;
+  for (int i = 0; i < 16; ++i) {
+    view.localToEye[i] = toEye[i / 4][i % 4];
+    view.localToClip[i] = toClip[i / 4][i % 4];
+  }
+  view.winding = toEye.det3() < 0.0f ? -1.0f : 1.0f;
+  const SbViewportRegion& region = SoViewportRegionElement::get(state);
+  const SbVec2s origin = region.getViewportOriginPixels();
+  const SbVec2s size = region.getViewportSizePixels();
+  view.viewport[0] = origin[0];
+  view.viewport[1] = origin[1];
+  view.viewport[2] = size[0];
+  view.viewport[3] = size[1];
+  int screenLight = -1;
+  for (const MapState& map : maps) {
+    if (!map.rays) continue;
+    ++screenLight;
+    if (!map.volumes) continue;
+    if (!volumePass_ && volumePassFailure_.empty()) {
+      volumePass_ = ShadowVolumePass::create(volumePassFailure_);
+      if (!volumePass_ && volumePassFailure_.empty()) volumePassFailure_ = "unknown";
+    }
+    if (!volumePass_) return "the shadow volumes cannot be drawn here (" + volumePassFailure_ + ")";
+    Volumes& volumes = volumes_[std::size_t(map.model)];
+    if (!volumes.volumes || volumes.version != contents.castersVersion()) {
+      volumes.volumes = std::make_unique<ShadowVolumes>(contents.casters(), map.model);
+      volumes.version = contents.castersVersion();
+      // Once per set of casters: every VOLUMES light of the group casts from the same ones.
+      if (volumes.volumes->approximatedTriangles() > 0 && warnedVersion_ != volumes.version) {
+        warnedVersion_ = volumes.version;
+        SoDebugError::postWarning(
+            "SoDeepShadowLight",
+            "method VOLUMES: %zu of the casters' triangles change colour across their face "
+            "(per-vertex colours or a texture); each casts one colour, its mean",
+            volumes.volumes->approximatedTriangles());
+      }
+    }
+    const glm::vec3 light(map.position[0], map.position[1], map.position[2]);
+    // Nothing captured: the volumes need reach only past the casters.
+    const SbBox3f& box = receivers_.isEmpty() ? contents.casters().bounds : receivers_;
+    const SbVec3f& low = box.getMin();
+    const SbVec3f& high = box.getMax();
+    volumes.volumes->build(light, map.kind == LightKind::Directional,
+                           glm::vec3(low[0], low[1], low[2]), glm::vec3(high[0], high[1], high[2]),
+                           faces_);
+    statistics.volumeFaces += faces_.size() / 3;
+    const std::string failure = volumePass_->draw(
+        faces_, view, pass_->positionTexture(), pass_->layers(), pass_->visibilityTexture(),
+        screenLight * pass_->layers(), pass_->width(), pass_->height(), textureUnit_);
+    if (!failure.empty()) return failure;
+  }
+  return {};
 }
 
 }  // namespace ivshadow

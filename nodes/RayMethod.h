@@ -3,6 +3,8 @@
 #include "callbacks/GlPassTimer.h"
 #include "scene/ShadowTypes.h"
 
+#include <Inventor/SbBox3f.h>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include <vector>
 
 class SoGLRenderAction;
+class SoState;
 
 namespace ivshadow {
 
@@ -19,13 +22,17 @@ class GroupContents;
 class GroupShading;
 class RayCasters;
 class RayShadowPass;
+class ShadowVolumePass;
+class ShadowVolumes;
 struct DeepShadowStatistics;
 struct MapState;
 
-// The RAYS method of one group in one GL context: captures the surfaces the camera sees of
-// the group's children (the capture variants of the group's shading), traces one shadow ray
-// per surface and RAYS light through the group's casters (RayCasters, on the process's one
-// Embree device) and hands the visibility to the shading pass (RayShadowPass). A frame whose
+// The screen-space methods of one group in one GL context, RAYS and VOLUMES: captures the
+// surfaces the camera sees of the group's children (the capture variants of the group's
+// shading), traces one shadow ray per surface and RAYS light through the group's casters
+// (RayCasters, on the process's one Embree device), draws each VOLUMES light's shadow volumes
+// against the same surfaces (ShadowVolumes, ShadowVolumePass) and hands the visibility to the
+// shading pass (RayShadowPass). A frame whose
 // view, lights and casters are unchanged reuses the last trace; one where only lights changed
 // reuses the captured surfaces and traces them again.
 class RayMethod {
@@ -83,12 +90,29 @@ class RayMethod {
                       GroupShading& shading, const ChildrenRenderer& renderChildren, bool inPath,
                       DeepShadowStatistics& statistics);
 
+  // Draws the VOLUMES lights' volumes into the visibility upload() sized; empty or why not.
+  std::string drawVolumes(SoState* state, const GroupContents& contents,
+                          const std::vector<MapState>& maps, DeepShadowStatistics& statistics);
+
   std::unique_ptr<RayShadowPass> pass_;
+  int textureUnit_ = 0;
+  // The casters' volumes per colour model (ShadowColourModel), and the casters' version they
+  // were made of.
+  struct Volumes {
+    std::uint64_t version = 0;
+    std::unique_ptr<ShadowVolumes> volumes;
+  };
+  std::array<Volumes, 3> volumes_;
+  std::unique_ptr<ShadowVolumePass> volumePass_;
+  std::string volumePassFailure_;    // set once the pass could not be made in this context
+  std::uint64_t warnedVersion_ = 0;  // the casters last warned about
+  std::vector<VolumeVertex> faces_;
   GlPassTimer captureTimer_;
   // The last capture and the last trace's visibility, kept so that a trace of the same view
   // needs no capture and so that their memory is reused.
   std::vector<SurfaceLayer> surfaces_;
   std::size_t capturedLayers_ = 0;
+  SbBox3f receivers_;  // the captured surfaces' bounds, which the shadow volumes must reach
   std::vector<std::uint16_t> visibility_;
   TraceKey traced_;
   bool traceValid_ = false;

@@ -46,7 +46,9 @@ namespace ivshadow {
 namespace {
 
 const char* methodName(int method) {
-  return method == SoDeepShadowLight::RAYS ? "RAYS" : "MAP";
+  return method == SoDeepShadowLight::RAYS      ? "RAYS"
+         : method == SoDeepShadowLight::VOLUMES ? "VOLUMES"
+                                                : "MAP";
 }
 
 std::string lightName(const SoLight& light) {
@@ -137,7 +139,10 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
       !rayCasters_.ready(casters, contents_.castersVersion(), entry.light, lightName(*entry.light),
                          "using its deep shadow map", statistics_))
     method = SoDeepShadowLight::MAP;
-  map.rays = method == SoDeepShadowLight::RAYS;
+  // VOLUMES shares the capture and the shading lookup of RAYS; only what fills the
+  // visibility differs (RayMethod).
+  map.rays = method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES;
+  map.volumes = method == SoDeepShadowLight::VOLUMES;
   map.model = castingColourModel(*entry.light, group, casters.hasColouredTransparent);
   map.coloured = map.model != ShadowColourModel::Monochrome;
   DeepShadowLightStatistics& light = statistics_.lights[slot];

@@ -32,4 +32,12 @@ struct SurfaceLayer {
   }
 };
 
+// One corner of a shadow volume's face (raytrace/ShadowVolumes builds them, the GL pass draws
+// them): where it is in the group's coordinates (w 1) and what a point inside the volume
+// loses per channel, as log transmittance (weight[3] unused: the vertex is 32 bytes).
+struct VolumeVertex {
+  float position[4];
+  float weight[4];
+};
+
 }  // namespace ivshadow

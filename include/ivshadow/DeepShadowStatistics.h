@@ -41,7 +41,8 @@ struct DeepShadowStatistics {
   double totalBuildMs = 0.0;
   int rebuilds = 0;  // times the maps were rebuilt
   int casterTriangles = 0;
-  // The RAYS method (lights that trace shadow rays instead of keeping a map).
+  // The RAYS and VOLUMES methods (lights that trace shadow rays or draw shadow volumes for the
+  // visible surfaces instead of keeping a map).
   double raysMs = 0.0;           // last trace: capture passes, tracing and upload, wall time
   double rayCaptureMs = 0.0;     // ... of which the capture traversals and read-backs (0 when
                                  //     it traced the surfaces captured before: a moved light)
@@ -49,6 +50,7 @@ struct DeepShadowStatistics {
   int rayLayers = 0;             // surface layers captured in the last trace
   double bvhBuildMs = 0.0;       // last build of the casters' Embree scene
   std::uint64_t raysTraced = 0;  // last trace
+  std::uint64_t volumeFaces = 0;  // last trace: shadow volume triangles of VOLUMES lights
   std::uint64_t bvhBytes = 0;    // what Embree holds for the casters
   int rayFrames = 0;             // frames that traced (others reused an unchanged trace)
   int rayCaptures = 0;           // frames that captured the visible surfaces for their trace

@@ -23,7 +23,8 @@
         intensity 1
         color 1 1 1
         location 0 0 1
-        method AUTO          # AUTO, MAP (deep shadow map) or RAYS (exact, Embree on the CPU)
+        method AUTO          # AUTO, MAP (deep shadow map), RAYS (exact, Embree on the CPU)
+                             #   or VOLUMES (exact hard shadows, shadow volumes in GL)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
         maxLayers 4          # peeled layers per face, 1 .. 64
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
@@ -42,6 +43,13 @@
   multiplying the transmittance of every surface crossed; resolution, maxLayers, bias,
   precision and filter then do not apply. AUTO picks RAYS on software rasterisers (llvmpipe,
   softpipe, swrast), where it is both faster and exact, and MAP on GPUs.
+
+  With `method VOLUMES` the same visible surfaces are shadowed by transparent shadow volumes
+  drawn in GL (after Kim et al. 2007): each caster triangle's volume carries its log
+  transmittance per channel, and the sum over the volumes behind which a surface lies is its
+  log visibility, so the shadow is exact and hard like RAYS without tracing on the CPU. A
+  caster whose colour varies across a triangle (per-vertex colours, textures) casts its mean
+  colour, with one warning per light.
 
   Out-of-range values are clamped when the map is built, with one warning naming the node and
   the field.
@@ -70,7 +78,8 @@ class IVSHADOW_API SoDeepShadowLight : public SoPointLight {
   enum Method {
     AUTO_METHOD = 0,  //!< RAYS on a software rasteriser, MAP on a GPU (file name: AUTO)
     MAP = 1,          //!< the cube deep shadow map
-    RAYS = 2          //!< exact shadow rays on the CPU (Embree)
+    RAYS = 2,         //!< exact shadow rays on the CPU (Embree)
+    VOLUMES = 3       //!< exact hard shadows by transparent shadow volumes (GL)
   };
   enum Filter {
     NONE,  //!< nearest texel

@@ -65,7 +65,8 @@ struct PeelStatistics;
         isActive TRUE            # FALSE renders the children like a plain SoSeparator
         castingLights ALL_LIGHTS # ALL_LIGHTS or DEEP_SHADOW_LIGHTS
         # The shadows of the ordinary lights (SoDeepShadowLight nodes use their own fields):
-        method AUTO          # AUTO, MAP (deep shadow map) or RAYS (exact, Embree on the CPU)
+        method AUTO          # AUTO, MAP (deep shadow map), RAYS (exact, Embree on the CPU)
+                             #   or VOLUMES (exact hard shadows, shadow volumes in GL)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
         maxLayers 4          # peeled layers per face, 1 .. 64
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver

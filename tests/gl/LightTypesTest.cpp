@@ -118,10 +118,17 @@ ExpectedImage pictureOf(double s, const std::vector<LightTerm>& terms) {
 // a 32-bit float (MAP) and rounded once to 8 bits: one step bounds it, the 1/255.
 constexpr double kTolerance = 1.0;
 
-enum class Method { Map, Rays, Reference };
+enum class Method { Map, Rays, Volumes, Reference };
+
+const char* fileName(Method method) {
+  return method == Method::Map ? "MAP" : method == Method::Volumes ? "VOLUMES" : "RAYS";
+}
 
 std::string methodName(const ::testing::TestParamInfo<Method>& info) {
-  return info.param == Method::Map ? "Map" : info.param == Method::Rays ? "Rays" : "Reference";
+  return info.param == Method::Map       ? "Map"
+         : info.param == Method::Rays    ? "Rays"
+         : info.param == Method::Volumes ? "Volumes"
+                                         : "Reference";
 }
 
 class LightTypes : public ::testing::TestWithParam<Method> {
@@ -129,8 +136,7 @@ class LightTypes : public ::testing::TestWithParam<Method> {
   void expectPicture(const std::string& lights, double s, const std::vector<LightTerm>& terms,
                      const std::string& extraGroupFields = "", const std::string& more = "") {
     const std::string fields =
-        std::string(GetParam() == Method::Map ? "method MAP" : "method RAYS") + " " +
-        extraGroupFields;
+        std::string("method ") + fileName(GetParam()) + " " + extraGroupFields;
     const std::string text = sceneWith(lights, fields, s, more);
     const Image image = GetParam() == Method::Reference ? referenceIv(text, ShadowScene::kSize)
                                                         : renderIv(text, ShadowScene::kSize);
@@ -241,7 +247,8 @@ TEST_P(LightTypes, DirectionalLightsMapCoversWhatTheViewShowsOfFarCasters) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, LightTypes,
-                         ::testing::Values(Method::Map, Method::Rays, Method::Reference),
+                         ::testing::Values(Method::Map, Method::Rays, Method::Volumes,
+                                           Method::Reference),
                          methodName);
 
 // The map of each light type: what it is and where its layers are (a one-face map peels face

@@ -50,8 +50,8 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
     ASSERT_EQ(fields.size(), header.size()) << line;
     rows[fields[0]] = fields;
   }
-  // Two baselines, 2 x 2 map settings and the traced one.
-  ASSERT_EQ(rows.size(), 7u);
+  // Two baselines, 2 x 2 map settings, the traced one and the shadow volumes.
+  ASSERT_EQ(rows.size(), 8u);
   const auto value = [&](const std::string& row, const std::string& column) {
     const auto at = std::find(header.begin(), header.end(), column) - header.begin();
     return std::stod(rows.at(row).at(std::size_t(at)));
@@ -64,6 +64,11 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
   // Exact shadows: no map setting comes closer (what is left is the camera view's error).
   EXPECT_LE(value("rays (exact)", "rmse"), value("512 4L float", "rmse"));
   EXPECT_GT(value("rays (exact)", "map_bytes"), 0.0);  // the BVH
+  // The volumes are exact too, but for the scene's textured checkerboard, whose volume casts
+  // its mean colour: still closer than the coarse map, and they keep no map.
+  EXPECT_LT(value("shadow volumes (exact, hard)", "rmse"), value("32 1L float", "rmse"));
+  EXPECT_EQ(value("shadow volumes (exact, hard)", "map_bytes"), 0.0);
+  EXPECT_GT(value("shadow volumes (exact, hard)", "build_ms"), 0.0);
   EXPECT_GT(value("512 4L float", "build_ms"), 0.0);
   EXPECT_GT(value("512 4L float", "map_bytes"), value("32 1L float", "map_bytes"));
   EXPECT_EQ(readPng(dir + "/trade.png").width(), 1000);
