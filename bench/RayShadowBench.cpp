@@ -3,7 +3,8 @@
 // 640 x 480 / 1920 x 1080, and the casters' Embree build against triangles. Run:
 // build/bin/ivshadow_bench --benchmark_filter='MethodFrame|BvhBuild'. RaysAgainstCoin puts
 // RAYS next to plain Coin (no shadows) in the same run: static, light moving, camera moving
-// (--benchmark_filter=RaysAgainstCoin), with the pass times of the last frame. Times are wall clock, GPU finished.
+// (--benchmark_filter=RaysAgainstCoin), with the pass times of the last frame. Times are wall
+// clock, GPU finished.
 #include "BenchScenes.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
@@ -72,12 +73,18 @@ void MethodFrame(benchmark::State& state) {
   state.counters["triangles"] = stats.casterTriangles;
   state.counters["map_MB"] = stats.lights.empty() ? 0.0 : double(stats.lights[0].bytes) / 1048576.0;
   state.counters["bvh_MB"] = double(stats.bvhBytes) / 1048576.0;
-  if (state.range(3) == SoDeepShadowLight::RAYS) {
+  const int method = int(state.range(3));
+  if (method != SoDeepShadowLight::MAP) {
     state.counters["capture_ms"] = stats.rayCaptureMs;  // the last trace's parts
     state.counters["trace_ms"] = stats.rayTraceMs;
+    // VOLUMES: building the volumes on the CPU and drawing them, after the upload.
+    state.counters["draw_ms"] = stats.raysMs - stats.rayCaptureMs - stats.rayTraceMs;
+    state.counters["volume_faces"] = double(stats.volumeFaces);
     state.counters["layers"] = stats.rayLayers;
   }
-  state.SetLabel(std::string(state.range(3) == SoDeepShadowLight::RAYS ? "RAYS" : "MAP") +
+  state.SetLabel(std::string(method == SoDeepShadowLight::RAYS      ? "RAYS"
+                             : method == SoDeepShadowLight::VOLUMES ? "VOLUMES"
+                                                                    : "MAP") +
                  (moving ? " moving light" : " static"));
 }
 
@@ -155,7 +162,8 @@ void RaysAgainstCoin(benchmark::State& state) {
 void frames(benchmark::internal::Benchmark* b) {
   for (int triangles : {1000, 100000, 1000000})
     for (const auto& size : {std::pair<int, int>{640, 480}, std::pair<int, int>{1920, 1080}})
-      for (int method : {int(SoDeepShadowLight::MAP), int(SoDeepShadowLight::RAYS)})
+      for (int method : {int(SoDeepShadowLight::MAP), int(SoDeepShadowLight::RAYS),
+                         int(SoDeepShadowLight::VOLUMES)})
         for (int moving : {0, 1}) b->Args({triangles, size.first, size.second, method, moving});
   b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 }
