@@ -106,8 +106,15 @@ std::string ShadowVolumePass::draw(const std::vector<VolumeVertex>& faces, const
   for (int layer = 0; layer < layers; ++layer)
     glClearNamedFramebufferfv(sumsFramebuffer_.get(), GL_COLOR, layer, zero);
   if (!faces.empty()) {
+    clearGlErrors();
     glNamedBufferData(faceBuffer_.get(), GLsizeiptr(faces.size() * sizeof(VolumeVertex)),
                       faces.data(), GL_STREAM_DRAW);
+    const std::string noBuffer = glAllocationError(GlAllocation::Buffer);
+    if (!noBuffer.empty()) {
+      glFrontFace(GLenum(frontFace));
+      return "GL could not hold the " + std::to_string(faces.size() / 3) +
+             " shadow volume faces (" + noBuffer + ")";
+    }
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
@@ -129,15 +136,25 @@ std::string ShadowVolumePass::draw(const std::vector<VolumeVertex>& faces, const
                                    GLenum(GL_COLOR_ATTACHMENT0 + layer), visibilityArray, 0,
                                    first + layer);
   glNamedFramebufferDrawBuffers(visibilityFramebuffer_.get(), layers, buffers.data());
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, visibilityFramebuffer_.get());
-  glUseProgram(resolve_.name());
-  resolve_.setInt("uVolumeSums", unit);
-  resolve_.setInt("uVolumeLayers", layers);
-  glBindTextureUnit(GLuint(unit), sums_.get());
-  glBindVertexArray(emptyArray_.get());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  failure = framebufferIncompleteness(visibilityFramebuffer_.get());
+  if (failure.empty()) {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, visibilityFramebuffer_.get());
+    glUseProgram(resolve_.name());
+    resolve_.setInt("uVolumeSums", unit);
+    resolve_.setInt("uVolumeLayers", layers);
+    glBindTextureUnit(GLuint(unit), sums_.get());
+    glBindVertexArray(emptyArray_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  } else {
+    failure = "the shadow volumes' framebuffer is incomplete (" + failure + ")";
+  }
+  // Attached textures stay alive and bound the framebuffer's size: none is kept between
+  // draws, whose visibility textures and layer counts change.
+  for (int layer = 0; layer < kMaxScreenLayers; ++layer)
+    glNamedFramebufferTexture(visibilityFramebuffer_.get(), GLenum(GL_COLOR_ATTACHMENT0 + layer), 0,
+                              0);
   glFrontFace(GLenum(frontFace));
-  return {};
+  return failure;
 }
 
 }  // namespace ivshadow

@@ -1,8 +1,8 @@
 #include "cli/GroupTransparency.h"
 
-#include "nodes/NodesOfType.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/NodesOfType.h"
 #include "scene/TransparencyType.h"
 
 namespace ivshadow {

@@ -8,10 +8,11 @@
 namespace ivshadow {
 
 RenderMemory RenderMemory::of(SoNode* root, bool softwareRenderer, bool traced) {
-  bool rays = traced;
+  bool rays = traced, volumes = false;
   forEachNodeOfType<SoDeepShadowLight>(root, [&](SoDeepShadowLight& light) {
     const int method = light.method.getValue();
-    rays = rays || method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES ||
+    volumes = volumes || method == SoDeepShadowLight::VOLUMES;
+    rays = rays || method == SoDeepShadowLight::RAYS || volumes ||
            (method == SoDeepShadowLight::AUTO_METHOD && softwareRenderer);
   });
   int separators = 0;
@@ -29,6 +30,7 @@ RenderMemory RenderMemory::of(SoNode* root, bool softwareRenderer, bool traced) 
   memory.cost.bytesPerPixel +=
       (kPeelingBytesPerPixel + kFragmentListBytesPerPixel) * (separators + groups);
   if (rays) memory.cost.bytesPerPixel += kRaysBytesPerPixel;
+  if (volumes) memory.cost.bytesPerPixel += kVolumesBytesPerPixel;
   if (rays) memory.what += " with traced (RAYS) shadows";
   std::string peelers;
   if (separators > 0)

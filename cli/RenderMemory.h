@@ -26,6 +26,10 @@ inline constexpr double kFragmentListBytesPerPixel = 12.0 + 2.0 * kFragmentBytes
 // Captured surface layers, their read-back and the rays on the CPU: 292 measured with
 // coloured_shadows.iv, 368 with peeled_glasses.iv, which captures more layers; the larger.
 inline constexpr double kRaysBytesPerPixel = 370.0;
+// A VOLUMES light's besides, counted from the layouts (callbacks/ShadowVolumePass.h,
+// RayShadowPass.h), not measured: the RGBA32F sums and the captured positions of
+// kMaxScreenLayers layers each, and the positions' upload copy.
+inline constexpr double kVolumesBytesPerPixel = (16.0 + 16.0) * kMaxScreenLayers + 16.0;
 inline constexpr MemoryCost kReferenceCost{16.0, 64.0 * (1 << 20)};
 
 // The cost of rendering `root`: the frame, each peeling separator, and traced shadows when a

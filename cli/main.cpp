@@ -184,7 +184,9 @@ int main(int argc, char** argv) {
   tradeCommand->add_option("--precision", trade.precisions, "half and/or float")
       ->delimiter(',')
       ->capture_default_str();
-  tradeCommand->add_option("--filter", trade.filters, "none, bilinear (PCF over one texel) and/or pcf (3 x 3 texels)")
+  tradeCommand
+      ->add_option("--filter", trade.filters,
+                   "none, bilinear (PCF over one texel) and/or pcf (3 x 3 texels)")
       ->delimiter(',')
       ->capture_default_str();
   tradeCommand->add_option("--method", trade.methods, "map, rays and/or volumes")

@@ -10,7 +10,9 @@
 #include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoLightElement.h>
 #include <Inventor/elements/SoModelMatrixElement.h>
+#include <Inventor/elements/SoProjectionMatrixElement.h>
 #include <Inventor/elements/SoViewingMatrixElement.h>
+#include <Inventor/elements/SoViewportRegionElement.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoEnvironment.h>
 
@@ -32,7 +34,7 @@ ShadingUniforms* GroupShading::begin(SoGLRenderAction* action, int textureUnits,
   outsideLights_ = SoLightElement::getLights(state).getLength();
   uniforms_.lightCount =
       std::min(ShadingUniforms::kMaxLights, outsideLights_ + contents_.lightsOn());
-  localToEye_ = findLocalToEye(state);
+  findView(state);
   const SbMatrix eyeToLocal = localToEye_.inverse();
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column)
@@ -66,22 +68,32 @@ void GroupShading::syncTexGen(SoState* state, bool generated) {
   programs_.sendTexGen(state, generated ? currentTexGenModes() : TexGenModes{});
 }
 
-SbMatrix GroupShading::findLocalToEye(SoState* state) const {
-  if (!contents_.cameraPath())
-    return SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state);
+void GroupShading::findView(SoState* state) {
+  if (!contents_.cameraPath()) {
+    localToEye_ = SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state);
+    projection_ = SoProjectionMatrixElement::get(state);
+    return;
+  }
   // A camera inside the group is traversed after the group sets its uniforms; the viewing
-  // matrix it will set, relative to the group's coordinates, is what maps them to the eye.
-  SbMatrix viewing = SbMatrix::identity();
-  SoCallbackAction action;
+  // matrix it will set, relative to the group's coordinates, is what maps them to the eye,
+  // and its projection (for this viewport's aspect) what the eye's coordinates go through.
+  struct View {
+    SbMatrix viewing = SbMatrix::identity();
+    SbMatrix projection = SbMatrix::identity();
+  } view;
+  SoCallbackAction action(SoViewportRegionElement::get(state));
   action.addPostCallback(
       SoCamera::getClassTypeId(),
       [](void* data, SoCallbackAction* a, const SoNode*) {
-        *static_cast<SbMatrix*>(data) = a->getViewingMatrix();
+        auto* found = static_cast<View*>(data);
+        found->viewing = a->getViewingMatrix();
+        found->projection = a->getProjectionMatrix();
         return SoCallbackAction::CONTINUE;
       },
-      &viewing);
+      &view);
   action.apply(contents_.cameraPath());
-  return viewing;
+  localToEye_ = view.viewing;
+  projection_ = view.projection;
 }
 
 int GroupShading::fogType(SoState* state) const {

@@ -28,10 +28,11 @@ class GroupShading {
   // from the state), and starts the frame's uniforms from the state, the samplers' units taken
   // from a context of `textureUnits` units. Null when the program did not build (Coin has said
   // why): the caller then renders plainly.
-  ShadingUniforms* begin(SoGLRenderAction* action, int textureUnits,
-                         const ShadingFeatures& lights);
-  // The group's coordinates to the eye's, as a camera inside the group will set them.
+  ShadingUniforms* begin(SoGLRenderAction* action, int textureUnits, const ShadingFeatures& lights);
+  // The group's coordinates to the eye's, and the eye's to clip coordinates, as a camera
+  // inside the group will set them (begin() finds them).
   const SbMatrix& localToEye() const { return localToEye_; }
+  const SbMatrix& projection() const { return projection_; }
   // Sets the frame's uniforms on the camera pass and leaves the GL lights the scene does not
   // use dark.
   void apply();
@@ -47,7 +48,8 @@ class GroupShading {
   void syncTexGen(SoState* state, bool generated);
 
  private:
-  SbMatrix findLocalToEye(SoState* state) const;
+  // Sets localToEye_ and projection_.
+  void findView(SoState* state);
   int fogType(SoState* state) const;
 
   const GroupContents& contents_;
@@ -57,6 +59,7 @@ class GroupShading {
   ShadingFeatures features_;                  // the frame's, set by begin()
   int outsideLights_ = 0;                     // GL lights on before the group
   SbMatrix localToEye_;
+  SbMatrix projection_;
 };
 
 }  // namespace ivshadow

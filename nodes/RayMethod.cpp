@@ -89,7 +89,8 @@ std::string RayMethod::update(SoGLRenderAction* action, const GroupContents& con
       pass_->upload(surfaces_, int(capturedLayers_), recapture, visibility_, tracedLights,
                     screenLights, volumeLights > 0);
   if (failure.empty()) failure = uploaded;
-  if (failure.empty()) failure = drawVolumes(state, contents, maps, statistics);
+  volumeFailure_.clear();
+  if (failure.empty()) drawVolumes(state, shading, contents, maps, statistics);
   traced_ = key;
   traceValid_ = true;
   statistics.raysTraced = traced;
@@ -165,14 +166,23 @@ std::string RayMethod::capture(SoGLRenderAction* action, const GroupContents& co
   return failure;
 }
 
-std::string RayMethod::drawVolumes(SoState* state, const GroupContents& contents,
-                                   const std::vector<MapState>& maps,
-                                   DeepShadowStatistics& statistics) {
+bool RayMethod::volumesAvailable(std::string& whyNot) {
+  if (!volumePass_ && volumePassFailure_.empty()) {
+    volumePass_ = ShadowVolumePass::create(volumePassFailure_);
+    if (!volumePass_ && volumePassFailure_.empty()) volumePassFailure_ = "unknown";
+  }
+  whyNot = volumePassFailure_;
+  return volumePass_ != nullptr;
+}
+
+void RayMethod::drawVolumes(SoState* state, const GroupShading& shading,
+                            const GroupContents& contents, const std::vector<MapState>& maps,
+                            DeepShadowStatistics& statistics) {
   statistics.volumeFaces = 0;
-  if (pass_->layers() == 0) return {};
+  if (pass_->layers() == 0) return;
   ShadowVolumePass::View view{};
-  const SbMatrix toEye = SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state);
-  const SbMatrix& projection = SoProjectionMatrixElement::get(state);
+  const SbMatrix& toEye = shading.localToEye();
+  const SbMatrix& projection = shading.projection();
   // A perspective view draws the volumes with its far plane at infinity (seeds/000 eq. 2.1):
   // faces beyond the scene are kept and those in front of the near plane, which are never
   // beyond a surface, are clipped. Clamping depth instead would keep faces reaching behind
@@ -204,23 +214,22 @@ std::string RayMethod::drawVolumes(SoState* state, const GroupContents& contents
     if (!map.rays) continue;
     ++screenLight;
     if (!map.volumes) continue;
-    if (!volumePass_ && volumePassFailure_.empty()) {
-      volumePass_ = ShadowVolumePass::create(volumePassFailure_);
-      if (!volumePass_ && volumePassFailure_.empty()) volumePassFailure_ = "unknown";
-    }
-    if (!volumePass_) return "the shadow volumes cannot be drawn here (" + volumePassFailure_ + ")";
+    // The group asked volumesAvailable() before it gave the light this method.
+    if (!volumePass_) continue;
     Volumes& volumes = volumes_[std::size_t(map.model)];
     if (!volumes.volumes || volumes.version != contents.castersVersion()) {
       volumes.volumes = std::make_unique<ShadowVolumes>(contents.casters(), map.model);
       volumes.version = contents.castersVersion();
-      // Once per set of casters: every VOLUMES light of the group casts from the same ones.
-      if (volumes.volumes->approximatedTriangles() > 0 && warnedVersion_ != volumes.version) {
-        warnedVersion_ = volumes.version;
+      // Once while the count stays: every VOLUMES light of the group casts from the same
+      // casters, which are read again after changes that need not touch these triangles.
+      const std::size_t approximated = volumes.volumes->approximatedTriangles();
+      if (approximated > 0 && approximated != warnedApproximated_) {
+        warnedApproximated_ = approximated;
         SoDebugError::postWarning(
             "SoDeepShadowLight",
             "method VOLUMES: %zu of the casters' triangles change colour across their face "
             "(per-vertex colours or a texture); each casts one colour, its mean",
-            volumes.volumes->approximatedTriangles());
+            approximated);
       }
     }
     const glm::vec3 light(map.position[0], map.position[1], map.position[2]);
@@ -235,9 +244,8 @@ std::string RayMethod::drawVolumes(SoState* state, const GroupContents& contents
     const std::string failure = volumePass_->draw(
         faces_, view, pass_->positionTexture(), pass_->layers(), pass_->visibilityTexture(),
         screenLight * pass_->layers(), pass_->width(), pass_->height(), textureUnit_);
-    if (!failure.empty()) return failure;
+    if (!failure.empty()) volumeFailure_ = failure;
   }
-  return {};
 }
 
 }  // namespace ivshadow

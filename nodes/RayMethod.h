@@ -57,6 +57,12 @@ class RayMethod {
                      DeepShadowStatistics& statistics);
   // The traced visibility as the shading pass binds it.
   RayShadowPass& pass() { return *pass_; }
+  // Whether VOLUMES lights can be drawn in this context (the pass is made on first asking);
+  // else why not, and the caller gives them another method.
+  bool volumesAvailable(std::string& whyNot);
+  // After update(): empty, or why the last frame's VOLUMES lights got no shadow (GL could not
+  // allocate what the volumes need); the other lights are not affected.
+  const std::string& volumeFailure() const { return volumeFailure_; }
 
  private:
   // What the captured surfaces depend on: the view and what the children draw. The casters'
@@ -90,9 +96,10 @@ class RayMethod {
                       GroupShading& shading, const ChildrenRenderer& renderChildren, bool inPath,
                       DeepShadowStatistics& statistics);
 
-  // Draws the VOLUMES lights' volumes into the visibility upload() sized; empty or why not.
-  std::string drawVolumes(SoState* state, const GroupContents& contents,
-                          const std::vector<MapState>& maps, DeepShadowStatistics& statistics);
+  // Draws the VOLUMES lights' volumes into the visibility upload() sized, with the view the
+  // group's shading found (a camera inside the group included); sets volumeFailure_.
+  void drawVolumes(SoState* state, const GroupShading& shading, const GroupContents& contents,
+                   const std::vector<MapState>& maps, DeepShadowStatistics& statistics);
 
   std::unique_ptr<RayShadowPass> pass_;
   int textureUnit_ = 0;
@@ -104,8 +111,9 @@ class RayMethod {
   };
   std::array<Volumes, 3> volumes_;
   std::unique_ptr<ShadowVolumePass> volumePass_;
-  std::string volumePassFailure_;    // set once the pass could not be made in this context
-  std::uint64_t warnedVersion_ = 0;  // the casters last warned about
+  std::string volumePassFailure_;  // set once the pass could not be made in this context
+  std::string volumeFailure_;
+  std::size_t warnedApproximated_ = 0;  // the count of triangles last warned about
   std::vector<VolumeVertex> faces_;
   GlPassTimer captureTimer_;
   // The last capture and the last trace's visibility, kept so that a trace of the same view

@@ -135,6 +135,19 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
                              "light %s: method AUTO uses %s on %s", lightName(*entry.light).c_str(),
                              methodName(method), context.renderer.c_str());
   }
+  if (method == SoDeepShadowLight::VOLUMES) {
+    if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
+    std::string whyNot;
+    if (!context.rays->volumesAvailable(whyNot)) {
+      // The exact answer by the other exact method; RAYS itself falls back to the map.
+      if (firstWarning(entry.light, "volumes: " + whyNot))
+        SoDebugError::postWarning(entry.deep ? "SoDeepShadowLight" : "SoTransparentShadowGroup",
+                                  "light %s: method VOLUMES cannot be drawn here (%s); it traces "
+                                  "shadow rays instead",
+                                  lightName(*entry.light).c_str(), whyNot.c_str());
+      method = SoDeepShadowLight::RAYS;
+    }
+  }
   if (method == SoDeepShadowLight::RAYS &&
       !rayCasters_.ready(casters, contents_.castersVersion(), entry.light, lightName(*entry.light),
                          "using its deep shadow map", statistics_))
@@ -304,9 +317,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     refitToView(action, context);
 
   state->push();
-  ShadingUniforms* uniforms =
-      shading_.begin(action, context.pass->textureUnits(),
-                     featuresOf(context.maps, contents_.lights().size()));
+  ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits(),
+                                             featuresOf(context.maps, contents_.lights().size()));
   if (uniforms == nullptr) {
     // Coin bound no program for the shading variant. When it failed to compile or link Coin
     // has said why; when it declined to draw it at all it says nothing, and the group would
@@ -364,6 +376,10 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     if (!failure.empty())
       for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot)
         if (context.maps[slot].rays) warnNoShadow(*contents_.lights()[slot].light, failure);
+    const std::string& volumes = context.rays->volumeFailure();
+    if (failure.empty() && !volumes.empty())
+      for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot)
+        if (context.maps[slot].volumes) warnNoShadow(*contents_.lights()[slot].light, volumes);
     uniforms->rayLayers = context.rays->pass().layers();
     shading_.apply();
   }

@@ -1,7 +1,6 @@
 #include "raytrace/ShadowVolumes.h"
 
 #include "raytrace/SurfaceOptics.h"
-#include "raytrace/TJunctionSplit.h"
 #include "scene/SceneTriangles.h"
 
 #include <glm/geometric.hpp>
@@ -93,22 +92,6 @@ ShadowVolumes::ShadowVolumes(const SceneTriangles& casters, ShadowColourModel mo
     }
   }
 
-  buildEdges();
-  // Edges whose sides do not cancel (a mesh's rim, or where another mesh's corner meets the
-  // edge) may hold T-junctions, which would leave cracks between the volumes' faces.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> open;
-  for (const Edge& edge : edges_) {
-    int sum = 0;
-    for (std::uint32_t s = edge.firstSide; s < edge.firstSide + edge.sideCount; ++s)
-      sum += sides_[s].second;
-    if (sum != 0) open.emplace_back(edge.from, edge.to);
-  }
-  const std::vector<std::uint32_t> origin = splitTJunctions(corners_, triangles_, open);
-  if (origin.size() == weights_.size()) return;  // nothing was split
-  std::vector<glm::vec3> weights;
-  weights.reserve(origin.size());
-  for (std::uint32_t t : origin) weights.push_back(weights_[t]);
-  weights_ = std::move(weights);
   buildEdges();
 }
 

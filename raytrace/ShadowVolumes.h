@@ -27,10 +27,11 @@ struct SceneTriangles;
 // of its triangles' signed weights (the "multiplicity" of the document, here per channel,
 // so one shape of many colours or an open or inconsistently oriented mesh needs no special
 // case). Edges are shared where corners are bitwise equal, as Coin generates them for the
-// vertices of one mesh, and meshes are split where one's corner lies on another's edge
-// (splitTJunctions), so that the faces meet edge to edge. Faces are wound counter-clockwise
-// seen from outside the volume. Each corner's far image depends on the corner alone, so
-// shared edges stay watertight.
+// vertices of one mesh. Summing is linear, so the faces are the sum of closed per-triangle
+// volumes whatever is merged: a T-junction (one mesh's corner on another's edge) needs no
+// splitting, as each triangle's own volume stays closed over its own corners. Faces are
+// wound counter-clockwise seen from outside the volume. Each corner's far image depends on
+// the corner alone, so shared edges stay watertight.
 class IVSHADOW_INTERNAL ShadowVolumes {
  public:
   // A surface letting through less than this counts as this: the log of an opaque caster

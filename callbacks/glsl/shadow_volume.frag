@@ -22,14 +22,14 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float leaving = gl_FrontFacing ? -uWinding : uWinding;
   // Coincident: an entering face is beyond the surface, a leaving one in front of it.
-  float reach = 1.0 + leaving * IVSHADOW_VOLUME_DEPTH_TOLERANCE;
+  float tolerance = leaving * IVSHADOW_VOLUME_DEPTH_TOLERANCE;
   for (int layer = 0; layer < IVSHADOW_MAX_SCREEN_LAYERS; ++layer) {
     vec4 add = vec4(0.0);
     vec4 captured =
         layer < uVolumeLayers ? texelFetch(uVolumePosition, ivec3(pixel, layer), 0) : vec4(1.0);
     if (captured.w < 1.0) {
       float surface = -(uLocalToEye * vec4(captured.xyz, 1.0)).z;
-      if (vDistance >= surface * reach)
+      if (vDistance >= surface + tolerance * abs(surface))
         add = vec4(leaving * vWeight, 0.0);
     }
     oLayer[layer] = add;
