@@ -239,7 +239,8 @@ int runTrade(const TradeOptions& options) {
     for (const Row& row : rows) {
       csv << csvLine(row) << '\n';
       points.push_back(TradePoint{row.setting.label, row.buildMs + row.frameMs,
-                                  row.metrics.all.rmse, row.kind == "baseline", false});
+                                  row.metrics.all.rmse, row.kind == "baseline", false,
+                                  row.kind == "rays" || row.kind == "shadow volumes"});
     }
     markParetoFront(points);
     writePng(options.outputDir + "/reference.png", exact);

@@ -128,11 +128,14 @@ void writeTradePlot(const std::string& path, const std::string& title,
       painter.setPen(QPen(QColor(120, 120, 120), 1));
       painter.setBrush(QColor(160, 160, 160));
       painter.drawEllipse(at, 3.5, 3.5);
+      // Below the dot: the front's and the baselines' labels sit above theirs.
+      if (p.method) painter.drawText(at + QPointF(8, 14), QString::fromStdString(p.label));
     }
   }
   painter.setPen(Qt::black);
   painter.drawText(QRectF(kLeft + 10, kTop + 8, plotW - 20, 20), Qt::AlignRight,
-                   "red: Pareto front (labelled)   grey: other settings   blue squares: baselines");
+                   "red: Pareto front (labelled)   grey: other settings (methods named)   "
+                   "blue squares: baselines");
   painter.end();
 
   AtomicFile file(path);

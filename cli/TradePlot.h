@@ -11,6 +11,9 @@ struct TradePoint {
   double error = 0.0;   // y: RMSE in 8-bit steps against the reference
   bool baseline = false;
   bool pareto = false;
+  // A method's one setting (RAYS, VOLUMES): named wherever it falls, so that every method is
+  // on the chart by name, not only those on the front.
+  bool method = false;
 };
 
 // Marks the points no other point beats in both time and error (the Pareto front).

@@ -156,6 +156,12 @@ void ShadowVolumes::build(const glm::vec3& light, bool directional, const glm::v
     glm::vec3 p[3];
     for (int k = 0; k < 3; ++k) p[k] = corners_[triangles_[t * 3 + std::size_t(k)]];
     const glm::vec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
+    // Corners in a row to float precision: a volume of no width, whose faces would only be
+    // drawn for nothing (skipping it leaves every other volume closed).
+    const float longest =
+        std::max({glm::dot(p[1] - p[0], p[1] - p[0]), glm::dot(p[2] - p[1], p[2] - p[1]),
+                  glm::dot(p[0] - p[2], p[0] - p[2])});
+    if (glm::dot(normal, normal) <= 1e-12f * longest * longest) continue;
     const float towards = glm::dot(normal, directional ? light : light - p[0]);
     if (!(towards != 0.0f) || !std::isfinite(towards)) continue;
     facing[t] = towards > 0.0f ? 1 : -1;

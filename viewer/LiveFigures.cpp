@@ -46,12 +46,15 @@ QString LiveFigures::text() const {
                .arg(peeling.passes);
   const bool tracing =
       std::any_of(shadows.lights.begin(), shadows.lights.end(),
-                  [](const DeepShadowLightStatistics& light) { return light.method == "RAYS"; });
+                  [](const DeepShadowLightStatistics& light) { return light.method != "MAP"; });
   if (tracing) {
-    lines << QString("rays       %1 ms, capture GPU %2 ms, %3 rays%4 (BVH %5 ms, %6)")
+    lines << QString(
+                 "rays       %1 ms, capture GPU %2 ms, %3 rays, %4 volume faces%5 (BVH %6 ms, "
+                 "%7)")
                  .arg(shadows.raysMs, 0, 'f', 1)
                  .arg(shadows.gpuCaptureMs, 0, 'f', 1)
                  .arg(shadows.raysTraced)
+                 .arg(shadows.volumeFaces)
                  .arg(tracedThisFrame ? " (this frame)" : "")
                  .arg(shadows.bvhBuildMs, 0, 'f', 1)
                  .arg(mebibytes(shadows.bvhBytes));
@@ -65,9 +68,10 @@ QString LiveFigures::text() const {
   const char* const faceNames[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   for (const DeepShadowLightStatistics& light : shadows.lights) {
     const QString name = light.name.empty() ? QString("light") : QString::fromStdString(light.name);
-    if (light.method == "RAYS") {
-      // Traced shadows keep no map: no layers, no memory of their own.
-      lines << name + ": shadow rays, no map";
+    if (light.method != "MAP") {
+      // Traced shadows and shadow volumes keep no map: no layers, no memory of their own.
+      lines << name + (light.method == "VOLUMES" ? ": shadow volumes, no map"
+                                                 : ": shadow rays, no map");
       continue;
     }
     total += light.bytes;
@@ -99,6 +103,7 @@ std::string LiveFigures::json() const {
                    {"rays_capture_gpu_ms", shadows.gpuCaptureMs},
                    {"shading_gpu_ms", shadows.gpuShadingMs}};
   out["rays_traced"] = shadows.raysTraced;
+  out["volume_faces"] = shadows.volumeFaces;
   out["dsm_rebuilds"] = shadows.rebuilds;
   std::uint64_t bytes = 0;
   nlohmann::json lights = nlohmann::json::array();

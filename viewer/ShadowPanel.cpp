@@ -323,7 +323,8 @@ void ShadowPanel::addEntry(SoNode* node, const QString& label) {
     CollapsibleSection* rays = addSection(kRays, page);
     auto* note = wrappingLabel(
         "method RAYS traces one shadow ray per pixel on the CPU (Embree): exact, no map, so "
-        "the Map fields do not apply. AUTO picks it on software rasterisers.",
+        "the Map fields do not apply. AUTO picks it on software rasterisers. method VOLUMES "
+        "draws shadow volumes in GL for the same pixels: exact hard shadows, no map either.",
         rays);
     rays->form()->addRow(note);
     layout->addWidget(rays);
