@@ -112,24 +112,31 @@ void writeTradePlot(const std::string& path, const std::string& title,
   for (std::size_t i = 1; i < front.size(); ++i)
     painter.drawLine(QPointF(x(front[i - 1]->timeMs), y(front[i - 1]->error)),
                      QPointF(x(front[i]->timeMs), y(front[i]->error)));
+  // A label right of its point, or left of it where it would leave the image.
+  const auto label = [&](const QPointF& at, double dy, const std::string& text) {
+    const QString t = QString::fromStdString(text);
+    const double width = painter.fontMetrics().horizontalAdvance(t);
+    const double left = at.x() + 8 + width > kWidth - 4 ? at.x() - 8 - width : at.x() + 8;
+    painter.drawText(QPointF(left, at.y() + dy), t);
+  };
   for (const TradePoint& p : points) {
     const QPointF at(x(p.timeMs), y(p.error));
     if (p.baseline) {
       painter.setPen(QPen(QColor(30, 90, 200), 2));
       painter.setBrush(Qt::NoBrush);
       painter.drawRect(QRectF(at.x() - 5, at.y() - 5, 10, 10));
-      painter.drawText(at + QPointF(8, -6), QString::fromStdString(p.label));
+      label(at, -6, p.label);
     } else if (p.pareto) {
       painter.setPen(QPen(QColor(200, 40, 40), 1));
       painter.setBrush(QColor(200, 40, 40));
       painter.drawEllipse(at, 5, 5);
-      painter.drawText(at + QPointF(8, -6), QString::fromStdString(p.label));
+      label(at, -6, p.label);
     } else {
       painter.setPen(QPen(QColor(120, 120, 120), 1));
       painter.setBrush(QColor(160, 160, 160));
       painter.drawEllipse(at, 3.5, 3.5);
       // Below the dot: the front's and the baselines' labels sit above theirs.
-      if (p.method) painter.drawText(at + QPointF(8, 14), QString::fromStdString(p.label));
+      if (p.method) label(at, 14, p.label);
     }
   }
   painter.setPen(Qt::black);
