@@ -54,9 +54,8 @@ class RayShadowPass {
                      int lights, bool positions);
   int layers() const { return uploadedLayers_; }
   // The textures upload() filled, for a pass that writes a screen light's visibility on the
-  // GPU (ShadowVolumePass): window depth per layer, and visibility per light and layer
-  // (layer light * layers() + captured layer).
-  unsigned int depthTexture() const { return shadingDepth_.get(); }
+  // GPU (ShadowVolumePass): visibility per light and layer (layer light * layers() + captured
+  // layer), and their size.
   unsigned int visibilityTexture() const { return shadingVisibility_.get(); }
   // Per layer the captured position in the group's coordinates and the window depth (1
   // where nothing is traced); 0 unless upload() was asked for it.

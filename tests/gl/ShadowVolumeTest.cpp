@@ -1,16 +1,13 @@
-// SoDeepShadowLight's VOLUMES method: the analytic pictures of the deep shadow tests (exact
-// hard shadows, so no layer, resolution or bias error to allow for), a camera standing inside
-// a shadow volume, agreement with the exact reference on the bundled scenes, and what is
-// drawn again when.
+// SoDeepShadowLight's VOLUMES method where it differs from RAYS: a camera standing inside a
+// shadow volume, what is drawn again when, and textured casters. The analytic pictures, a
+// camera inside the group and agreement with the exact reference hold for both methods and
+// are tested for both (tests/gl/RayShadowTest.cpp, ScreenShadows*).
 #include "headless/OffscreenRenderer.h"
-#include "image/ImageComparison.h"
 #include "ivshadow/DeepShadowStatistics.h"
-#include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 
-#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
@@ -28,28 +25,6 @@ constexpr double kTolerance = 1.0;
 ShadowScene withVolumes(ShadowScene scene) {
   scene.method = "VOLUMES";
   return scene;
-}
-
-class ShadowVolumesAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
-
-TEST_P(ShadowVolumesAnalytic, MatchesThePicture) {
-  const Image image = renderIv(withVolumes(GetParam().scene).text(), ShadowScene::kSize);
-  const std::string failure = compareWithExpectation(image, GetParam().picture(), kTolerance);
-  EXPECT_TRUE(failure.empty()) << failure;
-}
-
-INSTANTIATE_TEST_SUITE_P(Cases, ShadowVolumesAnalytic, ::testing::ValuesIn(analyticCases()),
-                         analyticCaseName);
-
-TEST(ShadowVolumes, EverySurfaceCountsWhateverMaxLayersSays) {
-  ShadowScene scene;
-  scene.filters = {kRedGlass, kGreenGlass};
-  scene.lightFields = "maxLayers 1";
-  scene = withVolumes(scene);
-  const Image image = renderIv(scene.text(), ShadowScene::kSize);
-  const std::string failure =
-      compareWithExpectation(image, ShadowPicture{&scene, ColourModel::Saturate}, kTolerance);
-  EXPECT_TRUE(failure.empty()) << failure;
 }
 
 TEST(ShadowVolumes, ACameraInsideAVolumeSeesTheShadowItStandsIn) {
@@ -173,60 +148,6 @@ TEST(ShadowVolumes, ATexturedCasterCastsItsMeanColourAndSaysSoOnce) {
   const double expected = 0.5 * 255.0 / std::sqrt(1.0 + x * x + y * y);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(image.pixel(px, py)[c], expected, kTolerance);
 }
-
-TEST(ShadowVolumes, ACameraInsideTheGroupDrawsWithItsView) {
-  // The group is traversed before a camera inside it: the volumes must be drawn with the
-  // view that camera sets, not the one above the group (none here).
-  ShadowScene scene;
-  scene.filters = {kRedGlass, kGreenGlass};
-  scene = withVolumes(scene);
-  std::string text = scene.text();
-  const std::string camera =
-      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n";
-  ASSERT_NE(text.find(camera), std::string::npos);
-  text.erase(text.find(camera), camera.size());
-  const std::string group = "isActive TRUE\n";  // after the group's fields
-  text.insert(text.find(group) + group.size(),
-              "    DEF Eye OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 "
-              "height 2.4 }\n");
-  SoSeparator* root = readIv(text);
-  std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
-  ASSERT_TRUE(renderer) << error;
-  renderer->render(root);
-  ShadowPicture picture{&scene, ColourModel::Saturate};
-  std::string failure = compareWithExpectation(renderer->read(), picture, kTolerance);
-  EXPECT_TRUE(failure.empty()) << failure;
-  // Moved: the analytic floor shifted by 30 pixels.
-  static_cast<SoCamera*>(SoNode::getByName("Eye"))->position.setValue(0.3f, 0.0f, 5.0f);
-  renderer->render(root);
-  failure = compareWithExpectation(
-      renderer->read(), [&](int x, int y) { return picture(x + 30, y); }, kTolerance);
-  root->unref();
-  EXPECT_TRUE(failure.empty()) << failure;
-}
-
-// The bundled scenes whose casters have one colour per face: the volumes against the exact
-// reference, with what RayReferenceAgreement allows (rasterised silhouettes against rays
-// through pixel centres, 16-bit visibility): at least 50 dB at 640 x 480.
-class VolumeReferenceAgreement : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(VolumeReferenceAgreement, AtLeastFiftyDecibels) {
-  const std::string param = GetParam();  // "scene.iv:Light"
-  const std::string name = param.substr(0, param.find(':'));
-  const std::string light = param.substr(param.find(':') + 1);
-  const ImageComparison metrics = renderAgainstReference(
-      scenesDir() + "/" + name, "640x480", {"--set", light + ".method=VOLUMES"}, 50.0);
-  EXPECT_GE(metrics.all.psnr, 50.0) << "actual, reference and diff.png in " << outputDir();
-}
-
-INSTANTIATE_TEST_SUITE_P(BundledScenes, VolumeReferenceAgreement,
-                         ::testing::Values("chapel.iv:Sun", "all_directions.iv:Lamp",
-                                           "atrium.iv:Sun"),
-                         [](const ::testing::TestParamInfo<const char*>& info) {
-                           std::string n = info.param;
-                           return n.substr(0, n.find('.'));
-                         });
 
 }  // namespace
 }  // namespace ivshadow::test
