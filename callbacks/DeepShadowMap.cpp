@@ -35,13 +35,6 @@ std::uint64_t bytesPerLayerTexel(const MapRequest& request) {
   return 4u + (request.coloured ? 4u : 1u) * (request.halfPrecision ? 2u : 4u);
 }
 
-GlTexture makeArray(GLenum format, int size, int layers) {
-  GlTexture texture = createTexture(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(texture.get(), 1, format, size, size, layers);
-  configureNearest(texture.get());
-  return texture;
-}
-
 // Scratch layers per face: maxLayers and the closing layer.
 int scratchLayers(const MapRequest& request) {
   return request.layers + 1;
@@ -55,8 +48,8 @@ int scratchLayersInAll(const MapRequest& request) {
 
 void DeepShadowMap::allocateScratch(const MapRequest& request) {
   const int size = request.resolution;
-  scratchDepth_ = makeArray(GL_R32F, size, scratchLayersInAll(request));
-  scratchVisibility_ = makeArray(visibilityFormat(request), size, scratchLayersInAll(request));
+  scratchDepth_ = createTargetArray(GL_R32F, size, scratchLayersInAll(request));
+  scratchVisibility_ = createTargetArray(visibilityFormat(request), size, scratchLayersInAll(request));
   for (int i = 0; i < 2; ++i) {
     peelDepth_[i] = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(peelDepth_[i].get(), 1, GL_R32F, size, size);
@@ -83,8 +76,8 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
   }
   const int size = request.resolution;
   // An empty map still binds one (never read) layer, so the sampler stays complete.
-  depth_ = makeArray(GL_R32F, size, std::max(total, 1));
-  visibility_ = makeArray(visibilityFormat(request), size, std::max(total, 1));
+  depth_ = createTargetArray(GL_R32F, size, std::max(total, 1));
+  visibility_ = createTargetArray(visibilityFormat(request), size, std::max(total, 1));
   for (int face = 0; face < request.frame.faceCount; ++face) {
     const int count = result.layersUsed[std::size_t(face)];
     if (count == 0) continue;

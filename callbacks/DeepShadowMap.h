@@ -21,6 +21,11 @@ struct MapRequest {
   bool coloured = false;
   bool halfPrecision = false;
   ShadowColourModel colourModel = ShadowColourModel::Saturate;
+  // Above 0: an opacity map of this many slices per face (OpacityMap) instead, dividing the
+  // stored distances from sliceNear to sliceFar uniformly; `layers` does not apply.
+  int slices = 0;
+  float sliceNear = 0.0f;
+  float sliceFar = 1.0f;
 };
 
 struct MapBuildResult {
@@ -31,6 +36,7 @@ struct MapBuildResult {
   std::string failure;
   // Layers stored per face: at most maxLayers, plus the closing layer (DeepShadowMap). A
   // one-face map (MapFrame) uses face 0 only.
+  // An opacity map: its slices per face, and the draws per face.
   std::array<int, 6> layersUsed{};
   std::array<int, 6> passes{};
   std::array<int, 6> firstLayer{};  // where each face's layers start in the stored arrays

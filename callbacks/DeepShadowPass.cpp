@@ -65,19 +65,56 @@ bool DeepShadowPass::linkProgram() {
   return bool(program_);
 }
 
+bool DeepShadowPass::linkOpacityProgram() {
+  // Linked at the first opacity map's build, for the same reason.
+  if (opacityProgram_ || !opacityProgramError_.empty()) return bool(opacityProgram_);
+  std::string why;
+  opacityProgram_ = GlProgram::link(composeShader(glsl::kDsmBuildVert),
+                                    composeShader(glsl::kOpacityMapFrag), why);
+  if (!opacityProgram_) opacityProgramError_ = "the opacity map program failed: " + why;
+  return bool(opacityProgram_);
+}
+
+std::uint64_t DeepShadowPass::peakBytesFor(const MapRequest& request) {
+  return request.slices > 0 ? OpacityMap::bytesFor(request) : DeepShadowMap::peakBytesFor(request);
+}
+
 MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
-  if (!linkProgram()) {
+  const bool opacity = request.slices > 0;
+  if (opacity ? !linkOpacityProgram() : !linkProgram()) {
     MapBuildResult none;
     none.noProgram = true;
     return none;
   }
   if (int(maps_.size()) <= slot) maps_.resize(std::size_t(slot) + 1);
+  if (int(opacityMaps_.size()) <= slot) opacityMaps_.resize(std::size_t(slot) + 1);
   auto& map = maps_[std::size_t(slot)];
-  if (!flagsError_.empty() || !castersError_.empty()) {
+  auto& opacityMap = opacityMaps_[std::size_t(slot)];
+  // The slot's other kind of map, kept from before the light's method changed, goes.
+  if (opacity)
     map.reset();
+  else
+    opacityMap.reset();
+  // An opacity map needs no flags: it draws every slice, without stopping early.
+  const std::string& flagsError = opacity ? std::string() : flagsError_;
+  if (!flagsError.empty() || !castersError_.empty()) {
+    map.reset();
+    opacityMap.reset();
     MapBuildResult none;
-    none.failure = flagsError_.empty() ? castersError_ : flagsError_;
+    none.failure = flagsError.empty() ? castersError_ : flagsError;
     return none;
+  }
+  if (opacity) {
+    if (!opacityMap) opacityMap = std::make_unique<OpacityMap>();
+    // It draws into its own framebuffer with its own program and blending, without depth,
+    // and samples the casters' textures (unit 0).
+    GlStateScope scope(GlStateScope::kFramebuffers | GlStateScope::kViewport |
+                           GlStateScope::kProgram | GlStateScope::kVertexArray |
+                           GlStateScope::kBlendFunction | GlStateScope::kColourMask |
+                           GlStateScope::kClipControl | GlStateScope::kFragmentTests,
+                       {{0}, {GL_TEXTURE_2D}});
+    scope.disableFragmentTests();
+    return opacityMap->build(request, opacityProgram_, casters_);
   }
   if (!map) map = std::make_unique<DeepShadowMap>();
   // The build draws into its own framebuffer with its own program and reversed depth, and
@@ -92,29 +129,39 @@ MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
 }
 
 std::uint64_t DeepShadowPass::mapBytes(int slot) const {
+  if (slot < int(opacityMaps_.size()) && opacityMaps_[std::size_t(slot)])
+    return opacityMaps_[std::size_t(slot)]->bytes();
   if (slot >= int(maps_.size()) || !maps_[std::size_t(slot)]) return 0;
   return maps_[std::size_t(slot)]->bytes();
 }
 
 std::uint64_t DeepShadowPass::mapPeakBytes(int slot) const {
+  if (slot < int(opacityMaps_.size()) && opacityMaps_[std::size_t(slot)])
+    return opacityMaps_[std::size_t(slot)]->bytes();
   if (slot >= int(maps_.size()) || !maps_[std::size_t(slot)]) return 0;
   return maps_[std::size_t(slot)]->peakBytes();
 }
 
 void DeepShadowPass::keepSlots(int count) {
   if (int(maps_.size()) > count) maps_.resize(std::size_t(count));
+  if (int(opacityMaps_.size()) > count) opacityMaps_.resize(std::size_t(count));
 }
 
 std::unique_ptr<GlStateScope> DeepShadowPass::bindMaps(int count) const {
   // Only the units of the maps bound here change, and only their array targets.
+  const auto has = [](int slot, const auto& maps) {
+    return slot < int(maps.size()) && maps[std::size_t(slot)];
+  };
   GlStateScope::Textures changed{{}, {GL_TEXTURE_2D_ARRAY}};
-  for (int slot = 0; slot < count && slot < int(maps_.size()); ++slot)
-    if (maps_[std::size_t(slot)])
+  for (int slot = 0; slot < count; ++slot)
+    if (has(slot, maps_) || has(slot, opacityMaps_))
       changed.units.insert(changed.units.end(), {depthUnit(slot), visibilityUnit(slot)});
   auto scope = std::make_unique<GlStateScope>(0u, changed);
-  for (int slot = 0; slot < count && slot < int(maps_.size()); ++slot)
-    if (maps_[std::size_t(slot)])
-      maps_[std::size_t(slot)]->bind(depthUnit(slot), visibilityUnit(slot));
+  for (int slot = 0; slot < count; ++slot) {
+    if (has(slot, maps_)) maps_[std::size_t(slot)]->bind(depthUnit(slot), visibilityUnit(slot));
+    if (has(slot, opacityMaps_))
+      opacityMaps_[std::size_t(slot)]->bind(depthUnit(slot), visibilityUnit(slot));
+  }
   return scope;
 }
 

@@ -4,6 +4,7 @@
 #include "callbacks/DeepShadowMap.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlProgram.h"
+#include "callbacks/OpacityMap.h"
 
 #include <memory>
 #include <string>
@@ -15,7 +16,8 @@ class GlStateScope;
 struct SceneTriangles;
 
 // The GL side of one SoTransparentShadowGroup in one GL context: its casters in GPU memory,
-// the map-building program and one deep shadow map per light slot. Everything here is made,
+// the map-building programs and per light slot one deep shadow map, or for a light with
+// method OPACITY_MAP (MapRequest::slices) one opacity map. Everything here is made,
 // used and freed with that context current.
 class DeepShadowPass {
  public:
@@ -39,7 +41,12 @@ class DeepShadowPass {
   // Builds slot `slot`'s map, saving and restoring the GL state it changes. Where the map
   // program does not link, nothing is built (MapBuildResult::noProgram, programError()).
   MapBuildResult build(int slot, const MapRequest& request);
-  const std::string& programError() const { return programError_; }
+  // Why the program `request` needs (a deep shadow map's or an opacity map's) did not link.
+  const std::string& programError(const MapRequest& request) const {
+    return request.slices > 0 ? opacityProgramError_ : programError_;
+  }
+  // What a build of `request` needs at its peak, at most.
+  static std::uint64_t peakBytesFor(const MapRequest& request);
   std::uint64_t mapBytes(int slot) const;
   std::uint64_t mapPeakBytes(int slot) const;
   // Drops the maps of slots >= `count` (their lights are gone).
@@ -52,6 +59,7 @@ class DeepShadowPass {
  private:
   DeepShadowPass() = default;
   bool linkProgram();
+  bool linkOpacityProgram();
 
   int maxTextureSize_ = 0;
   int textureUnits_ = 0;  // GL_MAX_TEXTURE_IMAGE_UNITS
@@ -61,7 +69,11 @@ class DeepShadowPass {
   std::string flagsError_;    // why the flags buffer is missing
   std::string castersError_;  // why the last casters' upload failed
   CasterBuffers casters_;
+  GlProgram opacityProgram_;
+  std::string opacityProgramError_;
+  // Per slot, at most one of the two.
   std::vector<std::unique_ptr<DeepShadowMap>> maps_;
+  std::vector<std::unique_ptr<OpacityMap>> opacityMaps_;
 };
 
 }  // namespace ivshadow

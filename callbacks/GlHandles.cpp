@@ -57,4 +57,14 @@ GlTexture createTarget2D(unsigned int format, int width, int height) {
   return texture;
 }
 
+GlTexture createTargetArray(unsigned int format, int size, int layers) {
+  GlTexture texture = createTexture(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(texture.get(), 1, format, size, size, layers);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
 }  // namespace ivshadow

@@ -28,6 +28,10 @@ std::string shaderConstantDefines() {
   text << std::setprecision(std::numeric_limits<float>::max_digits10)
        << "#define IVSHADOW_MAX_LIGHTS " << kMaxGlLights << "\n"
        << "#define IVSHADOW_OPAQUE_ALPHA " << kOpaqueAlpha << "\n"
+       << "#define IVSHADOW_MIN_TRANSMITTANCE " << kMinTransmittance << "\n"
+       << "#define IVSHADOW_OPACITY_SLICES_PER_DRAW " << kOpacitySlicesPerDraw << "\n"
+       << "#define IVSHADOW_OPACITY_NO_OPAQUE " << kOpacityNoOpaque << "\n"
+       << "#define IVSHADOW_OPACITY_EMPTY_SLICE " << kOpacityEmptySlice << "\n"
        << "#define IVSHADOW_FACE_AXIS " << faceArray(kFaceAxis) << "\n"
        << "#define IVSHADOW_FACE_RIGHT " << faceArray(kFaceRight) << "\n"
        << "#define IVSHADOW_FACE_UP " << faceArray(kFaceUp) << "\n"

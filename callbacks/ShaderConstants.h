@@ -17,6 +17,18 @@ inline constexpr int kMaxGlLights = 8;
 // Peeled layers per cube face a deep shadow map may hold (SoDeepShadowLight::maxLayers).
 inline constexpr int kMaxMapLayers = 64;
 
+// An opacity map's depth slices per face (SoDeepShadowLight::slices). Its build draws the
+// casters once per kOpacitySlicesPerDraw slices, one colour attachment each beside the
+// opaque surfaces' depth (GL guarantees 8 attachments): 32 slices are five draws per face,
+// and as many bytes per texel as a deep shadow map of 64 layers.
+inline constexpr int kMaxOpacitySlices = 32;
+inline constexpr int kOpacitySlicesPerDraw = 7;
+// What an opacity map holds where no surface is: the opaque depth the largest float (beyond
+// any receiver), a slice's first-surface coordinate (0 .. 1 over the slices) a value beyond
+// any, which half precision still holds.
+inline constexpr float kOpacityNoOpaque = 3.40282347e+38f;
+inline constexpr float kOpacityEmptySlice = 1.0e4f;
+
 // Cube face f looks along kFaceAxis[f]; kFaceRight[f] and kFaceUp[f] span its image plane.
 // The map build makes each face's view matrix from them, the lookup picks texels with them.
 using FaceVectors = std::array<std::array<float, 3>, 6>;

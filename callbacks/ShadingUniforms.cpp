@@ -32,6 +32,7 @@ void ShadingUniforms::apply(const UniformLocations& locations) const {
   glProgramUniform2fv(program, at("uMapTexelScale"), kMaxLights, mapTexelScale.data());
   glProgramUniform1iv(program, at("uMapFaceFirst"), 6 * kMaxLights, mapFaceFirst.data());
   glProgramUniform1iv(program, at("uMapFaceLayers"), 6 * kMaxLights, mapFaceLayers.data());
+  glProgramUniform3fv(program, at("uMapSlices"), kMaxLights, mapSlices.data());
   glProgramUniform1iv(program, at("uMapRay"), kMaxLights, mapRay.data());
   glProgramUniform1i(program, at("uRayLayers"), rayLayers);
   // The ray samplers always get their own units, used or not (see the map samplers above).

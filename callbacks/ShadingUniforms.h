@@ -28,6 +28,9 @@ struct ShadingUniforms {
   std::array<float, 2 * kMaxLights> mapTexelScale{};
   std::array<int, 6 * kMaxLights> mapFaceFirst{};
   std::array<int, 6 * kMaxLights> mapFaceLayers{};
+  // Per slot: an opacity map's sliced distances (near, far) and slices per face; 0 slices for
+  // a deep shadow map.
+  std::array<float, 3 * kMaxLights> mapSlices{};
   // Per slot: the index of its RAYS light among the traced ones, -1 for a slot with a map.
   std::array<int, kMaxLights> mapRay = noRays();
   int rayLayers = 0;  // captured surface layers of the traced visibility

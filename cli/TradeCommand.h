@@ -13,12 +13,15 @@ struct TradeOptions {
   std::vector<int> layers{1, 2, 4, 8};
   std::vector<std::string> precisions{"half", "float"};
   std::vector<std::string> filters{"none", "bilinear", "pcf"};
-  // rays and volumes: one setting each, exact
-  std::vector<std::string> methods{"map", "rays", "volumes"};
+  std::vector<int> slices{4, 16};  // the opacity maps'
+  // rays and volumes: one setting each, exact; map and opacity: their sweeps
+  std::vector<std::string> methods{"map", "rays", "volumes", "opacity"};
   int frames = 5;
 };
 
-// `ivshadow trade`: renders the scene with every combination of the deep shadow settings,
+// `ivshadow trade`: renders the scene with every combination of the deep shadow settings
+// (resolution x layers x precision x filter for the deep shadow map, resolution x slices x
+// precision x filter for the opacity map),
 // times each (map build and frame separately, median of --frames), measures its error against
 // the exact reference and writes DIR/trade.csv and DIR/trade.png (error against time, Pareto
 // front marked) with the baselines. Exit 0, 2 on bad input, 3 without GL, 1 otherwise.

@@ -189,7 +189,10 @@ int main(int argc, char** argv) {
                    "none, bilinear (PCF over one texel) and/or pcf (3 x 3 texels)")
       ->delimiter(',')
       ->capture_default_str();
-  tradeCommand->add_option("--method", trade.methods, "map, rays and/or volumes")
+  tradeCommand->add_option("--slices", trade.slices, "Opacity map slice counts, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  tradeCommand->add_option("--method", trade.methods, "map, rays, volumes and/or opacity")
       ->delimiter(',')
       ->capture_default_str();
   tradeCommand->add_option("--frames", trade.frames, "Frames timed per setting (median)")

@@ -21,6 +21,7 @@ void addDeepShadowEnumValues(SoFieldData* fieldData) {
   fieldData->addEnumValue("Method", "MAP", SoDeepShadowLight::MAP);
   fieldData->addEnumValue("Method", "RAYS", SoDeepShadowLight::RAYS);
   fieldData->addEnumValue("Method", "VOLUMES", SoDeepShadowLight::VOLUMES);
+  fieldData->addEnumValue("Method", "OPACITY_MAP", SoDeepShadowLight::OPACITY_MAP);
 }
 
 }  // namespace ivshadow

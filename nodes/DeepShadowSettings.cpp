@@ -77,6 +77,7 @@ DeepShadowSettings resolveFields(Node& light, int maxTextureSize) {
   s.resolution =
       clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
   s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, kMaxMapLayers);
+  s.slices = clampInt(light, "slices", light.slices.getValue(), 1, kMaxOpacitySlices);
   readRadii(light, s);
   s.bias = finiteOr(light, "bias", light.bias.getValue(), kDefaultMapBias);
   if (s.bias < 0.0f) {

@@ -15,6 +15,7 @@ namespace ivshadow {
 struct DeepShadowSettings {
   int resolution = 512;
   int maxLayers = 4;
+  int slices = 4;  // an opacity map's (method OPACITY_MAP)
   float nearRadius = -1.0f;  // <= 0: fitted to the casters
   float farRadius = -1.0f;   // <= 0: fitted to the casters
   float bias = 1.0f;

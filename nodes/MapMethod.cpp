@@ -209,8 +209,13 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   request.coloured = map.coloured;
   request.halfPrecision = map.settings.halfPrecision;
   request.colourModel = map.model;
+  if (map.opacity) {
+    request.slices = map.settings.slices;
+    request.sliceNear = map.nearRadius;
+    request.sliceFar = map.farRadius;
+  }
   const int asked = request.resolution;
-  while (budget > 0 && request.resolution > 1 && DeepShadowMap::peakBytesFor(request) > budget)
+  while (budget > 0 && request.resolution > 1 && DeepShadowPass::peakBytesFor(request) > budget)
     request.resolution /= 2;
   const int fitted = request.resolution;
   MapBuildResult built = pass.build(slot, request);
@@ -221,11 +226,12 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     // The program is the same for every light and group: its failure is said once per
     // process. Another failure (GL could not allocate what a map of any size needs) once per
     // light.
-    if (built.noProgram && firstWarning(nullptr, "map program"))
-      SoDebugError::postWarning("SoTransparentShadowGroup",
-                                "%s; lights with method MAP light "
+    if (built.noProgram &&
+        firstWarning(nullptr, map.opacity ? "opacity map program" : "map program"))
+      SoDebugError::postWarning("SoTransparentShadowGroup", "%s; lights with method %s light "
                                 "without a shadow",
-                                pass.programError().c_str());
+                                pass.programError(request).c_str(),
+                                map.opacity ? "OPACITY_MAP" : "MAP");
     if (!built.noProgram && firstWarning(&lightNode, "map failure"))
       SoDebugError::postWarning(type.c_str(), "%s: %s; it lights without a shadow", label.c_str(),
                                 built.failure.c_str());
@@ -245,9 +251,9 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     const auto megabytes = [](std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MB"; };
     if (built.outOfMemory)
       SoDebugError::postWarning(type.c_str(),
-                                "%s: no deep shadow map fits in GL memory at any resolution; "
+                                "%s: no %s fits in GL memory at any resolution; "
                                 "it lights without a shadow",
-                                label.c_str());
+                                label.c_str(), map.opacity ? "opacity map" : "deep shadow map");
     else if (request.resolution != fitted)
       SoDebugError::postWarning(type.c_str(),
                                 "%s: field resolution %d: GL ran out of memory building the map "
@@ -257,7 +263,7 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
       SoDebugError::postWarning(
           type.c_str(),
           "%s: field resolution %d needs %s to build, more than the %s GL can give; using %d",
-          label.c_str(), asked, megabytes(DeepShadowMap::peakBytesFor(wanted)).c_str(),
+          label.c_str(), asked, megabytes(DeepShadowPass::peakBytesFor(wanted)).c_str(),
           budget > 0 ? megabytes(budget).c_str() : "memory", request.resolution);
   }
   map.settings.resolution = request.resolution;

@@ -32,6 +32,7 @@ struct MapState {
   std::array<int, 6> faceLayers{};
   bool rays = false;     // method RAYS or VOLUMES: no map, a visibility per pixel
   bool volumes = false;  // ... VOLUMES: drawn by shadow volumes, not traced
+  bool opacity = false;  // method OPACITY_MAP: the map is an opacity map (OpacityMap)
   ShadowColourModel model = ShadowColourModel::Monochrome;
 };
 

@@ -82,6 +82,9 @@ std::string ShadingFeatures::defines() const {
   const bool anyLookup = nearest || filtered;
   if (nearest || (maps && !anyLookup)) text += "#define IVSHADOW_WITH_NEAREST_TEXEL\n";
   if (filtered || (maps && !anyLookup)) text += "#define IVSHADOW_WITH_FILTERED_MAPS\n";
+  // Maps of neither kind named: both.
+  if (deep || (maps && !opacity)) text += "#define IVSHADOW_WITH_DEEP_MAPS\n";
+  if (opacity || (maps && !deep)) text += "#define IVSHADOW_WITH_OPACITY_MAPS\n";
   if (fog) text += "#define IVSHADOW_WITH_FOG\n";
   return text;
 }

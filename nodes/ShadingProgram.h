@@ -33,16 +33,19 @@ enum class ShadingVariant : int {
 // variants"). A flag off leaves its code out; a flag on where nothing needs it costs time,
 // never correctness.
 struct ShadingFeatures {
-  bool maps = false;      // some light looks its visibility up in a deep shadow map
+  bool maps = false;      // some light looks its visibility up in a map of either kind:
+  bool deep = false;      // ... a deep shadow map (method MAP)
+  bool opacity = false;   // ... an opacity map (method OPACITY_MAP)
   bool rays = false;      // some light's visibility was traced per pixel (method RAYS)
   bool nearest = false;   // some map is read at the nearest texel (filter NONE)
   bool filtered = false;  // some map is filtered over a texel square (PCF; 1 wide: bilinear)
   bool fog = false;       // the state has fog (SoEnvironment fogType other than NONE)
 
   // A distinct number per combination, 0 for none, below kKeys.
-  static constexpr int kKeys = 32;
+  static constexpr int kKeys = 128;
   int key() const {
-    return int(maps) | int(rays) << 1 | int(nearest) << 2 | int(filtered) << 3 | int(fog) << 4;
+    return int(maps) | int(rays) << 1 | int(nearest) << 2 | int(filtered) << 3 | int(fog) << 4 |
+           int(deep) << 5 | int(opacity) << 6;
   }
   // The #defines that compile the parts in (callbacks/glsl/lighting.glsl).
   std::string defines() const;

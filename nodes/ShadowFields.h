@@ -15,6 +15,9 @@ constexpr float kDefaultMapBias = 0.1f;
 // (docs/TRADEOFF.md, "Defaults").
 constexpr SoDeepShadowLight::Filter kDefaultMapFilter = SoDeepShadowLight::PCF;
 constexpr int kDefaultMapFilterSize = 1;
+// An opacity map's slices per face: the four of seeds/002's implementation (one draw per face,
+// kOpacitySlicesPerDraw).
+constexpr int kDefaultOpacitySlices = 4;
 }  // namespace ivshadow
 
 // The shadow fields that SoDeepShadowLight, SoDeepShadowSpotLight, SoDeepShadowDirectionalLight
@@ -26,6 +29,7 @@ constexpr int kDefaultMapFilterSize = 1;
     SO_NODE_ADD_FIELD(method, (SoDeepShadowLight::AUTO_METHOD));                   \
     SO_NODE_ADD_FIELD(resolution, (512));                                          \
     SO_NODE_ADD_FIELD(maxLayers, (4));                                             \
+    SO_NODE_ADD_FIELD(slices, (ivshadow::kDefaultOpacitySlices));                  \
     SO_NODE_ADD_FIELD(bias, (ivshadow::kDefaultMapBias));                           \
     SO_NODE_ADD_FIELD(shadowColor, (SoDeepShadowLight::AUTO));                     \
     SO_NODE_ADD_FIELD(colorModel, (SoDeepShadowLight::SATURATE));                  \

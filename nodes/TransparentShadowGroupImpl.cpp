@@ -46,9 +46,10 @@ namespace ivshadow {
 namespace {
 
 const char* methodName(int method) {
-  return method == SoDeepShadowLight::RAYS      ? "RAYS"
-         : method == SoDeepShadowLight::VOLUMES ? "VOLUMES"
-                                                : "MAP";
+  return method == SoDeepShadowLight::RAYS          ? "RAYS"
+         : method == SoDeepShadowLight::VOLUMES     ? "VOLUMES"
+         : method == SoDeepShadowLight::OPACITY_MAP ? "OPACITY_MAP"
+                                                    : "MAP";
 }
 
 std::string lightName(const SoLight& light) {
@@ -76,6 +77,7 @@ ShadingFeatures featuresOf(const std::vector<MapState>& maps, std::size_t count)
       continue;
     }
     features.maps = true;
+    (map.opacity ? features.opacity : features.deep) = true;
     (map.settings.filterWidth > 0 ? features.filtered : features.nearest) = true;
   }
   return features;
@@ -156,6 +158,7 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
   // visibility differs (RayMethod).
   map.rays = method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES;
   map.volumes = method == SoDeepShadowLight::VOLUMES;
+  map.opacity = method == SoDeepShadowLight::OPACITY_MAP;
   map.model = castingColourModel(*entry.light, group, casters.hasColouredTransparent);
   map.coloured = map.model != ShadowColourModel::Monochrome;
   DeepShadowLightStatistics& light = statistics_.lights[slot];
@@ -357,6 +360,10 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
       uniforms->mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
       uniforms->mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
     }
+    uniforms->mapSlices[slot * 3 + 0] = map.nearRadius;
+    uniforms->mapSlices[slot * 3 + 1] = map.farRadius;
+    // A map that failed to build holds no layer and casts no shadow, as a deep one.
+    uniforms->mapSlices[slot * 3 + 2] = map.opacity ? float(map.faceLayers[0]) : 0.0f;
     uniforms->mapParams[slot * 4 + 2] = map.settings.bias;
     uniforms->mapParams[slot * 4 + 3] = float(map.settings.filterWidth);
     uniforms->mapColoured[slot] = map.coloured ? 1 : 0;

@@ -34,10 +34,6 @@ struct SceneTriangles;
 // the corner alone, so shared edges stay watertight.
 class IVSHADOW_INTERNAL ShadowVolumes {
  public:
-  // A surface letting through less than this counts as this: the log of an opaque caster
-  // stays finite, so volumes that cancel in a sum of floats leave (nearly) nothing.
-  static constexpr float kMinTransmittance = 1.0f / (1 << 24);
-
   // Takes the casters' edges and their colours once; build() then serves any light.
   ShadowVolumes(const SceneTriangles& casters, ShadowColourModel model);
 

@@ -17,6 +17,11 @@ enum class ShadowColourModel : int { Monochrome = 0, Saturate = 1, Power = 2 };
 // give 0.99999994. The shaders receive it with the other constants.
 inline constexpr float kOpaqueAlpha = 1.0f - 0.5f / 255.0f;
 
+// Methods that sum the log of the transmittance (shadow volumes, opacity maps) count a surface
+// letting through less than this as this: the log of an opaque caster stays finite, so sums
+// that cancel in floats leave (nearly) nothing. Below a 24-bit step, as good as no light.
+inline constexpr float kMinTransmittance = 1.0f / (1 << 24);
+
 // One captured layer of visible surfaces, read back from the GL capture pass: per pixel
 // (rows bottom-up, as GL stores them) the position in the group's coordinates and window
 // depth (depth 1: nothing), and the geometric normal with a flag (w == 2: shaded by the group

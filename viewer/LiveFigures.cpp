@@ -68,22 +68,24 @@ QString LiveFigures::text() const {
   const char* const faceNames[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   for (const DeepShadowLightStatistics& light : shadows.lights) {
     const QString name = light.name.empty() ? QString("light") : QString::fromStdString(light.name);
-    if (light.method != "MAP") {
+    const bool opacity = light.method == "OPACITY_MAP";
+    if (light.method != "MAP" && !opacity) {
       // Traced shadows and shadow volumes keep no map: no layers, no memory of their own.
       lines << name + (light.method == "VOLUMES" ? ": shadow volumes, no map"
                                                  : ": shadow rays, no map");
       continue;
     }
     total += light.bytes;
-    lines << QString("%1: %2 x %2 per face, %3")
+    lines << QString("%1: %2 x %2 per face, %3%4")
                  .arg(name)
                  .arg(light.resolution)
-                 .arg(light.coloured ? "colour" : "monochrome");
+                 .arg(light.coloured ? "colour" : "monochrome")
+                 .arg(opacity ? ", opacity map" : "");
     QStringList faces;
     for (int face = 0; face < 6; ++face) {
       faces << QString("%1 %2").arg(faceNames[face]).arg(light.layersUsed[std::size_t(face)]);
     }
-    lines << "  layers " + faces.join("  ");
+    lines << (opacity ? "  slices " : "  layers ") + faces.join("  ");
     lines
         << QString("  memory %1 (peak %2)").arg(mebibytes(light.bytes), mebibytes(light.peakBytes));
   }

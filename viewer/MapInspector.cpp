@@ -257,6 +257,18 @@ void MapInspector::frameDrawn(int rebuilds) {
     group_ = CoinRef<SoTransparentShadowGroup>(light.group);
     attachProbe();
   }
+  if (light.stats.method == "OPACITY_MAP") {
+    // Its layers are slices of absorbed light and one opaque depth per face, not the
+    // distance and visibility pairs the view draws.
+    statusText_ = QString("%1 keeps an opacity map (method OPACITY_MAP), which the inspector "
+                          "does not show; method MAP keeps a deep shadow map it shows.")
+                      .arg(lights_->currentText());
+    status_->setText(statusText_);
+    pending_ = false;
+    picture_ = QImage();
+    image_->clear();
+    return;
+  }
   const int face = faces_->currentIndex();
   const int layers = light.stats.layersUsed[std::size_t(face)];
   {

@@ -67,6 +67,7 @@ const std::vector<FieldSpec>& lightFields() {
       {kMethod, "farRadius", {-1.0, 1e6, 0.1, 3}},
       {kMap, "resolution", {1, 16384, 64, 0}},
       {kMap, "maxLayers", {1, kMaxMapLayers, 1, 0}},
+      {kMap, "slices", {1, kMaxOpacitySlices, 1, 0}},
       {kMap, "precision", {}},
       {kMap, "filter", {}},
       {kMap, "filterSize", {1, 9, 1, 0}},
@@ -324,7 +325,9 @@ void ShadowPanel::addEntry(SoNode* node, const QString& label) {
     auto* note = wrappingLabel(
         "method RAYS traces one shadow ray per pixel on the CPU (Embree): exact, no map, so "
         "the Map fields do not apply. AUTO picks it on software rasterisers. method VOLUMES "
-        "draws shadow volumes in GL for the same pixels: exact hard shadows, no map either.",
+        "draws shadow volumes in GL for the same pixels: exact hard shadows, no map either. "
+        "method OPACITY_MAP keeps a map of `slices` depth slices instead of maxLayers peeled "
+        "layers: a fixed cost, exact only where receivers lie a slice behind their casters.",
         rays);
     rays->form()->addRow(note);
     layout->addWidget(rays);

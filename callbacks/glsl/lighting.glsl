@@ -34,6 +34,8 @@ uniform vec2 uMapTexelScale[kMaxLights];
 uniform int uMapColoured[kMaxLights];
 uniform int uMapFaceFirst[kMaxLights * 6];   // array layer of each face's first layer
 uniform int uMapFaceLayers[kMaxLights * 6];  // layers stored for each face
+// An opacity map's sliced distances (near, far) and slices per face; z = 0: a deep shadow map.
+uniform vec3 uMapSlices[kMaxLights];
 // Lights with method RAYS keep no map: their visibility was traced on the CPU per pixel and
 // per captured surface layer (callbacks/RayShadowPass.h).
 uniform int uMapRay[kMaxLights];  // index among the traced lights, -1 for a map
@@ -68,8 +70,35 @@ vec3 rayVisibility(int ray) {
 }
 #endif
 
+#ifdef IVSHADOW_WITH_OPACITY_MAPS
+// An opacity map (callbacks/OpacityMap.h): none of the light past the nearest opaque surface;
+// before it, exp(-sum) of each slice's absorption weighted by how far the receiver lies past
+// the slice's first surface, in slices, up to 1 (seeds/002's min((d - alpha) N, 1)). A slice
+// wholly before the receiver's counts fully; a slice behind the receiver not at all.
+vec3 opacityVisibility(int slot, ivec2 texel, int face, float depth) {
+  vec3 range = uMapSlices[slot];
+  int slices = int(range.z);
+  if (slices == 0) return vec3(1.0);  // the map failed to build: no shadow
+  if (texelFetch(uMapDepth[slot], ivec3(texel, face), 0).r < depth) return vec3(0.0);
+  float s = (depth - range.x) / (range.y - range.x);
+  vec3 absorbed = vec3(0.0);
+  for (int k = 0; k < slices; ++k) {
+    vec4 slice = texelFetch(uMapVisibility[slot], ivec3(texel, face * slices + k), 0);
+    absorbed += slice.rgb * clamp((s - slice.a) * float(slices), 0.0, 1.0);
+  }
+  return exp(-(uMapColoured[slot] != 0 ? absorbed : absorbed.rrr));
+}
+#endif
+
 #ifdef IVSHADOW_WITH_MAPS
 vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
+#ifdef IVSHADOW_WITH_OPACITY_MAPS
+#ifdef IVSHADOW_WITH_DEEP_MAPS
+  if (uMapSlices[slot].z > 0.0)
+#endif
+    return opacityVisibility(slot, texel, face, depth);
+#endif
+#ifdef IVSHADOW_WITH_DEEP_MAPS
   vec3 visibility = vec3(1.0);
   int first = uMapFaceFirst[slot * 6 + face];
   int layers = uMapFaceLayers[slot * 6 + face];
@@ -81,6 +110,7 @@ vec3 visibilityAt(int slot, ivec2 texel, int face, float depth) {
     visibility = uMapColoured[slot] != 0 ? stored.rgb : stored.rrr;
   }
   return visibility;
+#endif
 }
 #endif
 

@@ -23,10 +23,12 @@
         intensity 1
         color 1 1 1
         location 0 0 1
-        method AUTO          # AUTO, MAP (deep shadow map), RAYS (exact, Embree on the CPU)
-                             #   or VOLUMES (exact hard shadows, shadow volumes in GL)
+        method AUTO          # AUTO, MAP (deep shadow map), RAYS (exact, Embree on the CPU),
+                             #   VOLUMES (exact hard shadows, shadow volumes in GL) or
+                             #   OPACITY_MAP (fixed cost: light absorbed per depth slice)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
         maxLayers 4          # peeled layers per face, 1 .. 64
+        slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
         colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
@@ -50,6 +52,16 @@
   log visibility, so the shadow is exact and hard like RAYS without tracing on the CPU. A
   caster whose colour varies across a triangle (per-vertex colours, textures) casts its mean
   colour, with one warning per light.
+
+  With `method OPACITY_MAP` the map is an opacity map (after seeds/002): `slices` uniform
+  slices per face between the map's near and far distance, each holding the light its
+  transparent surfaces absorb (per channel) and the distance of its first surface, and one
+  depth per texel of the nearest opaque surface, all drawn in one pass per face whatever the
+  scene's depth complexity. A receiver sums the absorption of the slices before it, and of a
+  slice it lies in or just behind in proportion to its distance past that slice's first
+  surface (up to one slice's depth): exact for a receiver at least one slice behind each
+  transparent caster, softer nearer than that. Opaque casters shadow exactly, as in a shadow
+  map. maxLayers does not apply.
 
   Out-of-range values are clamped when the map is built, with one warning naming the node and
   the field.
@@ -79,7 +91,8 @@ class IVSHADOW_API SoDeepShadowLight : public SoPointLight {
     AUTO_METHOD = 0,  //!< RAYS on a software rasteriser, MAP on a GPU (file name: AUTO)
     MAP = 1,          //!< the cube deep shadow map
     RAYS = 2,         //!< exact shadow rays on the CPU (Embree)
-    VOLUMES = 3       //!< exact hard shadows by transparent shadow volumes (GL)
+    VOLUMES = 3,      //!< exact hard shadows by transparent shadow volumes (GL)
+    OPACITY_MAP = 4   //!< light absorbed per uniform depth slice, a fixed-cost approximation
   };
   enum Filter {
     NONE,  //!< nearest texel
@@ -88,6 +101,7 @@ class IVSHADOW_API SoDeepShadowLight : public SoPointLight {
 
   SoSFInt32 resolution;
   SoSFInt32 maxLayers;
+  SoSFInt32 slices;
   SoSFFloat nearRadius;
   SoSFFloat farRadius;
   SoSFFloat bias;

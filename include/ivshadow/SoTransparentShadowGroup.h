@@ -65,10 +65,12 @@ struct PeelStatistics;
         isActive TRUE            # FALSE renders the children like a plain SoSeparator
         castingLights ALL_LIGHTS # ALL_LIGHTS or DEEP_SHADOW_LIGHTS
         # The shadows of the ordinary lights (SoDeepShadowLight nodes use their own fields):
-        method AUTO          # AUTO, MAP (deep shadow map), RAYS (exact, Embree on the CPU)
-                             #   or VOLUMES (exact hard shadows, shadow volumes in GL)
+        method AUTO          # AUTO, MAP (deep shadow map), RAYS (exact, Embree on the CPU),
+                             #   VOLUMES (exact hard shadows, shadow volumes in GL) or
+                             #   OPACITY_MAP (fixed cost: light absorbed per depth slice)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
         maxLayers 4          # peeled layers per face, 1 .. 64
+        slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
         colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
@@ -104,6 +106,7 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   SoSFEnum method;
   SoSFInt32 resolution;
   SoSFInt32 maxLayers;
+  SoSFInt32 slices;
   SoSFFloat bias;
   SoSFEnum shadowColor;
   SoSFEnum colorModel;

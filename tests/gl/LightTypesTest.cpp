@@ -1,7 +1,8 @@
 // Ordinary Inventor lights inside a shadow group cast: a PointLight, a SpotLight (inside, at
 // the edge of and outside its cone, with and without dropOffRate) and a DirectionalLight at an
-// oblique angle, each by the map (MAP), the traced rays (RAYS) and the CPU reference, against
-// pictures computed here from the geometry alone.
+// oblique angle, each by the map (MAP), the traced rays (RAYS), the shadow volumes (VOLUMES),
+// the opacity map (OPACITY_MAP) and the CPU reference, against pictures computed here from the
+// geometry alone.
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
@@ -118,25 +119,31 @@ ExpectedImage pictureOf(double s, const std::vector<LightTerm>& terms) {
 // a 32-bit float (MAP) and rounded once to 8 bits: one step bounds it, the 1/255.
 constexpr double kTolerance = 1.0;
 
-enum class Method { Map, Rays, Volumes, Reference };
+enum class Method { Map, Rays, Volumes, OpacityMap, Reference };
 
-const char* fileName(Method method) {
-  return method == Method::Map ? "MAP" : method == Method::Volumes ? "VOLUMES" : "RAYS";
+// The group's fields that choose the method. The opacity map's 32 slices over each light's
+// fitted range are 0.04 to 0.07 deep, a tenth of the 0.5 (0.7 along the oblique light) from
+// the glass to the floor: the floor counts the glass fully, and the picture is exact.
+const char* methodFields(Method method) {
+  return method == Method::Map          ? "method MAP"
+         : method == Method::Volumes    ? "method VOLUMES"
+         : method == Method::OpacityMap ? "method OPACITY_MAP slices 32"
+                                        : "method RAYS";
 }
 
 std::string methodName(const ::testing::TestParamInfo<Method>& info) {
-  return info.param == Method::Map       ? "Map"
-         : info.param == Method::Rays    ? "Rays"
-         : info.param == Method::Volumes ? "Volumes"
-                                         : "Reference";
+  return info.param == Method::Map          ? "Map"
+         : info.param == Method::Rays       ? "Rays"
+         : info.param == Method::Volumes    ? "Volumes"
+         : info.param == Method::OpacityMap ? "OpacityMap"
+                                            : "Reference";
 }
 
 class LightTypes : public ::testing::TestWithParam<Method> {
  protected:
   void expectPicture(const std::string& lights, double s, const std::vector<LightTerm>& terms,
                      const std::string& extraGroupFields = "", const std::string& more = "") {
-    const std::string fields =
-        std::string("method ") + fileName(GetParam()) + " " + extraGroupFields;
+    const std::string fields = std::string(methodFields(GetParam())) + " " + extraGroupFields;
     const std::string text = sceneWith(lights, fields, s, more);
     const Image image = GetParam() == Method::Reference ? referenceIv(text, ShadowScene::kSize)
                                                         : renderIv(text, ShadowScene::kSize);
@@ -242,13 +249,18 @@ TEST_P(LightTypes, DirectionalLightsMapCoversWhatTheViewShowsOfFarCasters) {
   // A second glass 50 units away makes the casters' bounds 25 times the floor: a map over all
   // of them would put 0.1 units (10 pixels) in a texel and blur the shadow's edges past the
   // test's two-pixel margin.
+  // The opacity map's slices divide the casters' whole depth along the light, 36 units here:
+  // 32 slices are 1.1 deep, more than the glass's 0.7 above the floor, which then gets part
+  // of its absorption only (docs/DEEP_SHADOWS.md, "method OPACITY_MAP"; the partial share is
+  // tested in OpacityMap.AReceiverNearerThanASliceGetsThatShareOfTheAbsorption).
+  if (GetParam() == Method::OpacityMap) GTEST_SKIP() << "the far glass stretches the slices";
   expectPicture("DirectionalLight { direction 1 0 -1 }", 0.3, {obliqueLight(0.3, 1.0, 1.0)}, "",
                 "Translation { translation 50 0 0 } FaceSet { numVertices 4 }");
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, LightTypes,
                          ::testing::Values(Method::Map, Method::Rays, Method::Volumes,
-                                           Method::Reference),
+                                           Method::OpacityMap, Method::Reference),
                          methodName);
 
 // The map of each light type: what it is and where its layers are (a one-face map peels face

@@ -36,8 +36,8 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
   const std::string dir = test::outputDir();
   const test::ProcessResult result =
       run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o", dir,
-           "--size", "160x120", "--resolution", "32,512", "--layers", "1,4", "--precision", "float",
-           "--filter", "none", "--frames", "2"});
+           "--size", "160x120", "--resolution", "32,512", "--layers", "1,4", "--slices", "1,16",
+           "--precision", "float", "--filter", "none", "--frames", "2"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   std::ifstream in(dir + "/trade.csv");
   std::string line;
@@ -50,8 +50,9 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
     ASSERT_EQ(fields.size(), header.size()) << line;
     rows[fields[0]] = fields;
   }
-  // Two baselines, 2 x 2 map settings, the traced one and the shadow volumes.
-  ASSERT_EQ(rows.size(), 8u);
+  // Two baselines, 2 x 2 map settings, the traced one, the shadow volumes and 2 x 2 opacity
+  // maps.
+  ASSERT_EQ(rows.size(), 12u);
   const auto value = [&](const std::string& row, const std::string& column) {
     const auto at = std::find(header.begin(), header.end(), column) - header.begin();
     return std::stod(rows.at(row).at(std::size_t(at)));
@@ -70,12 +71,20 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
   EXPECT_EQ(value("shadow volumes (exact, hard)", "map_bytes"), 0.0);
   EXPECT_GT(value("512 4L float", "build_ms"), 0.0);
   EXPECT_GT(value("512 4L float", "map_bytes"), value("32 1L float", "map_bytes"));
+  // The opacity maps: more slices come closer (the scene's panes lie within one of 1 slice of
+  // the floor, and within one of 16 only at their edges), and keep 4 + 16 bytes per slice
+  // per texel on six faces.
+  EXPECT_LT(value("opacity 512 16S float", "rmse"), value("opacity 512 1S float", "rmse"));
+  EXPECT_LT(value("opacity 512 1S float", "rmse"), value("no shadows (plain Coin)", "rmse"));
+  EXPECT_EQ(value("opacity 512 16S float", "map_bytes"), 512.0 * 512.0 * 6.0 * (4 + 16 * 16));
+  EXPECT_EQ(value("opacity 32 1S float", "layers"), 1.0);
   EXPECT_EQ(readPng(dir + "/trade.png").width(), 1000);
 }
 
 TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
   const std::string dir = test::outputDir();
   for (const std::vector<std::string>& option : {std::vector<std::string>{"--layers", "0"},
+                                                 std::vector<std::string>{"--slices", "33"},
                                                  std::vector<std::string>{"--precision", "double"},
                                                  std::vector<std::string>{"--filter", "gauss"}}) {
     std::vector<std::string> command{test::ivshadowExe(), "trade",

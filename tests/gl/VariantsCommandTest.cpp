@@ -102,7 +102,7 @@ TEST(VariantsCommand, ARerunKeepsCurrentVariantsAndRendersStaleOnes) {
                 ":7: error: variant typo: --set 'Lamp.colour=1 0 0': error: node 'Lamp' "
                 "(DeepShadowLight) has no field 'colour' (its fields: bias, color, colorModel, "
                 "farRadius, filter, filterSize, intensity, location, maxLayers, method, "
-                "nearRadius, on, precision, resolution, shadowColor)\n");
+                "nearRadius, on, precision, resolution, shadowColor, slices)\n");
 }
 
 // --shard and --only name what is wrong with them before anything is rendered.

@@ -71,7 +71,7 @@ double expectedLog(const std::vector<Caster>& casters, const dvec3& point, const
   for (const Caster& caster : casters)
     if (crossing(point, direction, dvec3(caster.a), dvec3(caster.b), dvec3(caster.c), limit)) {
       const double through = 1.0 - double(caster.colour.a);
-      sum += std::log(std::max(through, double(ShadowVolumes::kMinTransmittance)));
+      sum += std::log(std::max(through, double(kMinTransmittance)));
     }
   return sum;
 }

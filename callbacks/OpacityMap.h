@@ -1,0 +1,44 @@
+#pragma once
+
+#include "callbacks/DeepShadowMap.h"
+#include "callbacks/GlHandles.h"
+
+#include <cstdint>
+
+namespace ivshadow {
+
+class CasterBuffers;
+class GlProgram;
+
+// One light's opacity map (method OPACITY_MAP, after seeds/002), a cube or one face
+// (MapFrame). Each face holds `slices` uniform slices of the distances from sliceNear to
+// sliceFar and one opaque depth per texel:
+// - a slice (RGBA, 16 or 32 bits per channel): the absorption -log(transmittance) per channel
+//   of the transparent surfaces inside it, summed, and in alpha the slice coordinate (0 .. 1
+//   over all slices) of the first of them (kOpacityEmptySlice: none);
+// - the opaque depth (32 bits): the distance of the nearest opaque surface (kOpacityNoOpaque:
+//   none), so opaque bodies shadow as sharply as in a shadow map, not spread over a slice.
+// Array layer f of the depths is face f; layer f * slices + k of the slices its slice k.
+// The casters are drawn once per kOpacitySlicesPerDraw slices of a face, whatever the depth
+// complexity: the cost is fixed by slices and resolution.
+class OpacityMap {
+ public:
+  // Draws every face. The program (opacity_map.frag), vertex array, framebuffer and blend
+  // state are left changed: the caller saves and restores GL state around the build.
+  MapBuildResult build(const MapRequest& request, const GlProgram& program,
+                       const CasterBuffers& casters);
+  // What the map of `request` takes: it needs no scratch memory, so this is its peak too.
+  static std::uint64_t bytesFor(const MapRequest& request);
+  void bind(int depthUnit, int visibilityUnit) const;
+  std::uint64_t bytes() const { return bytes_; }
+
+ private:
+  void release();
+
+  GlTexture opaque_;
+  GlTexture slices_;
+  GlFramebuffer framebuffer_;
+  std::uint64_t bytes_ = 0;
+};
+
+}  // namespace ivshadow
