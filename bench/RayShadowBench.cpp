@@ -1,7 +1,8 @@
-// MAP against RAYS (SoDeepShadowLight::method) on the headless renderer: frame time with a
-// static scene and with the light moving every frame, at 1k / 100k / 1M triangles and
-// 640 x 480 / 1920 x 1080, and the casters' Embree build against triangles. Run:
-// build/bin/ivshadow_bench --benchmark_filter='MethodFrame|BvhBuild'. RaysAgainstCoin puts
+// The shadow methods (SoDeepShadowLight::method: MAP, RAYS, VOLUMES, OPACITY_MAP) on the
+// headless renderer: frame time with a static scene and with the light moving every frame, at
+// 1k / 100k / 1M triangles and 640 x 480 / 1920 x 1080, the opacity map against its slices,
+// and the casters' Embree build against triangles. Run:
+// build/bin/ivshadow_bench --benchmark_filter='MethodFrame|OpacitySlices|BvhBuild'. RaysAgainstCoin puts
 // RAYS next to plain Coin (no shadows) in the same run: static, light moving, camera moving
 // (--benchmark_filter=RaysAgainstCoin), with the pass times of the last frame. Times are wall
 // clock, GPU finished.
@@ -56,8 +57,10 @@ struct Scene {
   }
 };
 
-// Args: triangles, width, height, method (MAP 1 / RAYS 2), moving (0 / 1). A moving light
-// rebuilds the map (MAP) or traces again (RAYS) in every frame; a static one reuses them.
+// Args: triangles, width, height, method (MAP 1 / RAYS 2 / VOLUMES 3 / OPACITY_MAP 4), moving
+// (0 / 1). A moving light rebuilds the map (MAP, OPACITY_MAP with its default 4 slices),
+// traces again (RAYS) or draws the volumes again (VOLUMES) in every frame; a static one
+// reuses them.
 void MethodFrame(benchmark::State& state) {
   Scene s(state, int(state.range(0)), int(state.range(1)), int(state.range(2)),
           int(state.range(3)));
@@ -74,7 +77,9 @@ void MethodFrame(benchmark::State& state) {
   state.counters["map_MB"] = stats.lights.empty() ? 0.0 : double(stats.lights[0].bytes) / 1048576.0;
   state.counters["bvh_MB"] = double(stats.bvhBytes) / 1048576.0;
   const int method = int(state.range(3));
-  if (method != SoDeepShadowLight::MAP) {
+  if (method == SoDeepShadowLight::MAP || method == SoDeepShadowLight::OPACITY_MAP)
+    state.counters["build_ms"] = stats.lastBuildMs;
+  if (method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES) {
     state.counters["capture_ms"] = stats.rayCaptureMs;  // the last trace's parts
     state.counters["trace_ms"] = stats.rayTraceMs;
     // VOLUMES: building the volumes on the CPU and drawing them, after the upload.
@@ -82,10 +87,33 @@ void MethodFrame(benchmark::State& state) {
     state.counters["volume_faces"] = double(stats.volumeFaces);
     state.counters["layers"] = stats.rayLayers;
   }
-  state.SetLabel(std::string(method == SoDeepShadowLight::RAYS      ? "RAYS"
-                             : method == SoDeepShadowLight::VOLUMES ? "VOLUMES"
-                                                                    : "MAP") +
+  state.SetLabel(std::string(method == SoDeepShadowLight::RAYS          ? "RAYS"
+                             : method == SoDeepShadowLight::VOLUMES     ? "VOLUMES"
+                             : method == SoDeepShadowLight::OPACITY_MAP ? "OPACITY_MAP"
+                                                                        : "MAP") +
                  (moving ? " moving light" : " static"));
+}
+
+// Args: triangles, slices. The opacity map rebuilt for a moving light at 640 x 480: the
+// build's wall time (it waits for its draws) against the slices, one draw of the casters per
+// face and kOpacitySlicesPerDraw slices, and the frame's.
+void OpacitySlices(benchmark::State& state) {
+  Scene s(state, int(state.range(0)), 640, 480, SoDeepShadowLight::OPACITY_MAP);
+  if (!s.renderer) return;
+  s.light->slices = int(state.range(1));
+  s.renderer->render(s.root);
+  const SbVec3f start = s.light->location.getValue();
+  int frame = 0;
+  double build = 0.0;
+  for (auto _ : state) {
+    s.light->location.setValue(start + SbVec3f(0.05f * float(++frame % 7), 0.0f, 0.0f));
+    state.SetIterationTime(s.renderer->render(s.root).wallMs * 1e-3);
+    build += ivshadow::collectDeepShadowStatistics(s.root).lastBuildMs;
+  }
+  const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(s.root);
+  state.counters["build_ms"] = build / double(state.iterations());
+  state.counters["draws_per_face"] = stats.lights.empty() ? 0 : stats.lights[0].passes[0];
+  state.counters["map_MB"] = stats.lights.empty() ? 0.0 : double(stats.lights[0].bytes) / 1048576.0;
 }
 
 // Arg: triangles. Changing a caster's material rebuilds the casters and their Embree scene;
@@ -163,12 +191,17 @@ void frames(benchmark::internal::Benchmark* b) {
   for (int triangles : {1000, 100000, 1000000})
     for (const auto& size : {std::pair<int, int>{640, 480}, std::pair<int, int>{1920, 1080}})
       for (int method : {int(SoDeepShadowLight::MAP), int(SoDeepShadowLight::RAYS),
-                         int(SoDeepShadowLight::VOLUMES)})
+                         int(SoDeepShadowLight::VOLUMES), int(SoDeepShadowLight::OPACITY_MAP)})
         for (int moving : {0, 1}) b->Args({triangles, size.first, size.second, method, moving});
   b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 }
 
 BENCHMARK(MethodFrame)->Apply(frames);
+BENCHMARK(OpacitySlices)
+    ->ArgsProduct({{1000, 100000}, {1, 4, 7, 8, 16, 32}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 BENCHMARK(RaysAgainstCoin)
     ->ArgsProduct({{1000, 100000}, {0, 1, 2}, {0, 1, 2}})
     ->UseManualTime()

@@ -34,14 +34,21 @@ MapBuildResult OpacityMap::build(const MapRequest& request, const GlProgram& pro
   const int size = request.resolution;
   // Errors before the build are not the build's (DeepShadowMap::build).
   clearGlErrors();
-  opaque_ = createTargetArray(GL_R32F, size, faces);
-  slices_ = createTargetArray(sliceFormat(request), size, faces * request.slices);
-  framebuffer_ = createFramebuffer();
-  if (!glAllocationError(GlAllocation::Texture).empty()) {
-    result.outOfMemory = true;
+  // A light that moves keeps the map's shape: its textures are cleared, not made again (making
+  // them was a quarter of a build on llvmpipe, the driver's pages faulted in and zeroed).
+  const Shape shape{faces, size, request.slices, sliceFormat(request)};
+  if (!slices_ || !(shape == shape_)) {
     release();
-    return result;
+    opaque_ = createTargetArray(GL_R32F, size, faces);
+    slices_ = createTargetArray(shape.format, size, faces * request.slices);
+    if (!glAllocationError(GlAllocation::Texture).empty()) {
+      result.outOfMemory = true;
+      release();
+      return result;
+    }
+    shape_ = shape;
   }
+  framebuffer_ = createFramebuffer();
   const float noOpaque[4] = {kOpacityNoOpaque, 0.0f, 0.0f, 0.0f};
   const float emptySlice[4] = {0.0f, 0.0f, 0.0f, kOpacityEmptySlice};
   glClearTexImage(opaque_.get(), 0, GL_RED, GL_FLOAT, noOpaque);
@@ -119,6 +126,7 @@ void OpacityMap::release() {
   opaque_.reset();
   slices_.reset();
   framebuffer_.reset();
+  shape_ = Shape{};
   bytes_ = 0;
 }
 

@@ -14,8 +14,9 @@ class GlProgram;
 // (MapFrame). Each face holds `slices` uniform slices of the distances from sliceNear to
 // sliceFar and one opaque depth per texel:
 // - a slice (RGBA, 16 or 32 bits per channel): the absorption -log(transmittance) per channel
-//   of the transparent surfaces inside it, summed, and in alpha the slice coordinate (0 .. 1
-//   over all slices) of the first of them (kOpacityEmptySlice: none);
+//   of the transparent surfaces inside it and before it, summed (so a lookup reads three
+//   slices whatever their count), and in alpha the slice coordinate (0 .. 1 over all slices)
+//   of the first surface inside it (kOpacityEmptySlice: none);
 // - the opaque depth (32 bits): the distance of the nearest opaque surface (kOpacityNoOpaque:
 //   none), so opaque bodies shadow as sharply as in a shadow map, not spread over a slice.
 // Array layer f of the depths is face f; layer f * slices + k of the slices its slice k.
@@ -35,6 +36,15 @@ class OpacityMap {
  private:
   void release();
 
+  // What the textures were made for; a build of the same shape reuses them.
+  struct Shape {
+    int faces = 0, size = 0, slices = 0;
+    unsigned format = 0;
+    bool operator==(const Shape& o) const {
+      return faces == o.faces && size == o.size && slices == o.slices && format == o.format;
+    }
+  };
+  Shape shape_;
   GlTexture opaque_;
   GlTexture slices_;
   GlFramebuffer framebuffer_;

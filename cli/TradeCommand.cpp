@@ -217,24 +217,24 @@ int runTrade(const TradeOptions& options) {
       }
       Row row;
       row.setting = setting;
-      const bool screen = setting.method == SoDeepShadowLight::RAYS ||
-                          setting.method == SoDeepShadowLight::VOLUMES;
+      const bool wholeFrame = setting.method != SoDeepShadowLight::MAP;
       row.kind = setting.method == SoDeepShadowLight::RAYS          ? "rays"
                  : setting.method == SoDeepShadowLight::VOLUMES     ? "shadow volumes"
                  : setting.method == SoDeepShadowLight::OPACITY_MAP ? "opacity map"
                                                                     : "deep shadow map";
       // Each build is timed on its own (touching a light forces one), median of --frames.
-      // A map is built when the light moves: its build waits for each pass. Traced shadows
-      // are traced again, or the volumes drawn, within the frame, and GL draws the volumes
-      // after their commands are sent: for those the moved light's whole frame is timed
-      // (to glFinish), less the frame without a change measured below.
+      // A deep shadow map is built when the light moves: its build waits for each pass.
+      // Traced shadows are traced again, or the volumes drawn, within the frame, and GL draws
+      // the volumes and an opacity map (which waits for nothing) after their commands are
+      // sent: for those the moved light's whole frame is timed (to glFinish), less the frame
+      // without a change measured below.
       std::vector<double> builds;
       for (int i = 0; i < options.frames; ++i) {
         if (i > 0)
           for (SoDeepShadowLight* light : lights) light->location.touch();
         const double wallMs = renderer->render(view.root.get()).wallMs;
         const DeepShadowStatistics built = collectDeepShadowStatistics(view.root.get());
-        builds.push_back(screen ? wallMs : built.lastBuildMs);
+        builds.push_back(wholeFrame ? wallMs : built.lastBuildMs);
       }
       row.buildMs = FrameStatistics::median(builds);
       const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
@@ -242,7 +242,7 @@ int runTrade(const TradeOptions& options) {
       if (setting.method == SoDeepShadowLight::RAYS)
         row.bytes = stats.bvhBytes;  // the casters' BVH instead of a map
       row.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
-      if (screen) row.buildMs = std::max(0.0, row.buildMs - row.frameMs);
+      if (wholeFrame) row.buildMs = std::max(0.0, row.buildMs - row.frameMs);
       row.metrics = ImageComparison::compare(exact, renderer->read(), "reference", "render");
       rows.push_back(row);
       bar.update(++done, total, setting.label);

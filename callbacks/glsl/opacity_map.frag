@@ -1,10 +1,13 @@
 // One draw of one face of an opacity map (seeds/002; callbacks/OpacityMap.h), after
-// dsm_build.vert. Every caster fragment lands in the one slice its distance falls in: a
-// transparent surface adds its absorption, -log of its transmittance per channel, to that
-// slice's colour (additive blending) and offers its slice coordinate as the slice's first
-// surface (alpha, minimum blending); an opaque surface offers its distance to the opaque
-// surfaces' depth (minimum blending) and touches no slice. Neither depth test nor culling: the
-// light crosses every surface, front or back, as in the reference.
+// dsm_build.vert. A transparent fragment's absorption, -log of its transmittance per channel,
+// is added (additive blending) to the slice its distance falls in and to every slice after it,
+// so that slice k holds the absorption of everything up to its far end: a lookup then reads
+// three slices, not all of them. Its slice also takes the fragment's slice coordinate as the
+// first surface there (alpha, minimum blending). An opaque surface offers its distance to the
+// opaque surfaces' depth (minimum blending) and touches no slice. Neither depth test nor
+// culling: the light crosses every surface, front or back, as in the reference. Sums of
+// absorption never saturate, unlike the document's 8-bit sums of absorbed light, which is why
+// it kept each slice's own share instead.
 in vec3 vPosition;
 in vec4 vColour;
 in vec2 vTexCoord;
@@ -43,6 +46,10 @@ void main() {
                            : -log(max(transmittance(colour, uColourModel),
                                       vec3(IVSHADOW_MIN_TRANSMITTANCE)));
   vec4 elsewhere = vec4(0.0, 0.0, 0.0, IVSHADOW_OPACITY_EMPTY_SLICE);
-  for (int i = 0; i < kSlicesPerDraw; ++i)
-    oSlice[i] = !opaque && uFirstSlice + i == slice ? vec4(absorption, s) : elsewhere;
+  for (int i = 0; i < kSlicesPerDraw; ++i) {
+    int at = uFirstSlice + i;
+    oSlice[i] = opaque || at < slice
+                    ? elsewhere
+                    : vec4(absorption, at == slice ? s : IVSHADOW_OPACITY_EMPTY_SLICE);
+  }
 }

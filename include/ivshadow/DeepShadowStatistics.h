@@ -37,7 +37,9 @@ struct DeepShadowStatistics {
   double gpuBuildMs = 0.0;
   double gpuShadingMs = 0.0;
   double gpuCaptureMs = 0.0;
-  double lastBuildMs = 0.0;  // wall time of the last rebuild, all lights (waits for each pass)
+  // Wall time of the last rebuild, all lights: a deep shadow map's waits for each pass, an
+  // opacity map's only sends its draws (gpuBuildMs has their time on the GPU).
+  double lastBuildMs = 0.0;
   double totalBuildMs = 0.0;
   int rebuilds = 0;  // times the maps were rebuilt
   int casterTriangles = 0;
