@@ -36,6 +36,7 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   }
   std::unique_ptr<DeepShadowPass> pass(new DeepShadowPass);
   pass->maxTextureSize_ = textureSize;
+  pass->drawBuffers_ = drawBuffers;
   pass->textureUnits_ = units;
   clearGlErrors();
   pass->flags_ = createBuffer();
@@ -81,27 +82,33 @@ std::uint64_t DeepShadowPass::peakBytesFor(const MapRequest& request) {
 
 MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
   const bool opacity = request.slices > 0;
-  if (opacity ? !linkOpacityProgram() : !linkProgram()) {
-    MapBuildResult none;
-    none.noProgram = true;
-    return none;
-  }
   if (int(maps_.size()) <= slot) maps_.resize(std::size_t(slot) + 1);
   if (int(opacityMaps_.size()) <= slot) opacityMaps_.resize(std::size_t(slot) + 1);
   auto& map = maps_[std::size_t(slot)];
   auto& opacityMap = opacityMaps_[std::size_t(slot)];
-  // The slot's other kind of map, kept from before the light's method changed, goes.
+  // A slot holds one kind of map: the other, kept from before the light's method changed,
+  // goes whatever happens below.
   if (opacity)
     map.reset();
   else
     opacityMap.reset();
-  // An opacity map needs no flags: it draws every slice, without stopping early.
-  const std::string& flagsError = opacity ? std::string() : flagsError_;
-  if (!flagsError.empty() || !castersError_.empty()) {
-    map.reset();
-    opacityMap.reset();
+  if (opacity ? !linkOpacityProgram() : !linkProgram()) {
+    dropSlot(slot);
     MapBuildResult none;
-    none.failure = flagsError.empty() ? castersError_ : flagsError;
+    none.noProgram = true;
+    return none;
+  }
+  // An opacity map needs no flags (it draws every slice, without stopping early), but eight
+  // colour attachments at once.
+  std::string failure = opacity ? std::string() : flagsError_;
+  if (failure.empty()) failure = castersError_;
+  if (opacity && failure.empty() && drawBuffers_ < 1 + kOpacitySlicesPerDraw)
+    failure = "an opacity map draws into " + std::to_string(1 + kOpacitySlicesPerDraw) +
+              " colour attachments at once; this context offers " + std::to_string(drawBuffers_);
+  if (!failure.empty()) {
+    dropSlot(slot);
+    MapBuildResult none;
+    none.failure = failure;
     return none;
   }
   if (opacity) {
@@ -140,6 +147,11 @@ std::uint64_t DeepShadowPass::mapPeakBytes(int slot) const {
     return opacityMaps_[std::size_t(slot)]->bytes();
   if (slot >= int(maps_.size()) || !maps_[std::size_t(slot)]) return 0;
   return maps_[std::size_t(slot)]->peakBytes();
+}
+
+void DeepShadowPass::dropSlot(int slot) {
+  if (slot < int(maps_.size())) maps_[std::size_t(slot)].reset();
+  if (slot < int(opacityMaps_.size())) opacityMaps_[std::size_t(slot)].reset();
 }
 
 void DeepShadowPass::keepSlots(int count) {

@@ -51,6 +51,8 @@ class DeepShadowPass {
   std::uint64_t mapPeakBytes(int slot) const;
   // Drops the maps of slots >= `count` (their lights are gone).
   void keepSlots(int count);
+  // Drops slot `slot`'s map, of either kind: its light keeps none (RAYS, VOLUMES).
+  void dropSlot(int slot);
 
   // Binds the maps of slots [0, count) to their units until the returned scope ends, which
   // restores what was bound there.
@@ -63,6 +65,7 @@ class DeepShadowPass {
 
   int maxTextureSize_ = 0;
   int textureUnits_ = 0;  // GL_MAX_TEXTURE_IMAGE_UNITS
+  int drawBuffers_ = 0;   // GL_MAX_DRAW_BUFFERS
   GlProgram program_;
   std::string programError_;  // why program_ did not link; empty before the first try
   GlBuffer flags_;

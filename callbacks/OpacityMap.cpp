@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <sstream>
 
 namespace ivshadow {
 namespace {
@@ -114,9 +115,18 @@ MapBuildResult OpacityMap::build(const MapRequest& request, const GlProgram& pro
   // The framebuffer is only for the build; the textures stay.
   framebuffer_.reset();
   bytes_ = bytesFor(request);
-  if (glGetError() == GL_OUT_OF_MEMORY) {
+  // Running out may be mended at a smaller size; any other error leaves a map that cannot be
+  // trusted, and the light unshadowed with one warning (MapMethod).
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) {
     result = MapBuildResult{};
-    result.outOfMemory = true;
+    if (error == GL_OUT_OF_MEMORY) {
+      result.outOfMemory = true;
+    } else {
+      std::ostringstream text;
+      text << "GL raised error 0x" << std::hex << error << " while drawing the opacity map";
+      result.failure = text.str();
+    }
     release();
   }
   return result;

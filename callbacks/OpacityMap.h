@@ -21,14 +21,16 @@ class GlProgram;
 //   none), so opaque bodies shadow as sharply as in a shadow map, not spread over a slice.
 // Array layer f of the depths is face f; layer f * slices + k of the slices its slice k.
 // The casters are drawn once per kOpacitySlicesPerDraw slices of a face, whatever the depth
-// complexity: the cost is fixed by slices and resolution.
+// complexity: the draws are fixed by the slices, and the fill grows with the casters'
+// fragments, not with how many lie behind one another.
 class OpacityMap {
  public:
   // Draws every face. The program (opacity_map.frag), vertex array, framebuffer and blend
   // state are left changed: the caller saves and restores GL state around the build.
   MapBuildResult build(const MapRequest& request, const GlProgram& program,
                        const CasterBuffers& casters);
-  // What the map of `request` takes: it needs no scratch memory, so this is its peak too.
+  // What the map of `request` takes: it needs no scratch memory, and a build of a new shape
+  // frees the old textures first, so this is its peak too.
   static std::uint64_t bytesFor(const MapRequest& request);
   void bind(int depthUnit, int visibilityUnit) const;
   std::uint64_t bytes() const { return bytes_; }

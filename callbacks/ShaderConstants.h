@@ -19,8 +19,8 @@ inline constexpr int kMaxMapLayers = 64;
 
 // An opacity map's depth slices per face (SoDeepShadowLight::slices). Its build draws the
 // casters once per kOpacitySlicesPerDraw slices, one colour attachment each beside the
-// opaque surfaces' depth (GL guarantees 8 attachments): 32 slices are five draws per face,
-// and as many bytes per texel as a deep shadow map of 64 layers.
+// opaque surfaces' depth (GL guarantees 8 attachments): 32 slices are five draws per face
+// and 516 bytes per texel and face (RGBA 32-bit slices).
 inline constexpr int kMaxOpacitySlices = 32;
 inline constexpr int kOpacitySlicesPerDraw = 7;
 // What an opacity map holds where no surface is: the opaque depth the largest float (beyond

@@ -11,11 +11,15 @@ class SoTransparentShadowGroup;
 
 namespace ivshadow {
 
+// An opacity map's slices per face (the slices field's default): the four of seeds/002's
+// implementation, one draw per face (kOpacitySlicesPerDraw).
+inline constexpr int kDefaultOpacitySlices = 4;
+
 // The fields of a SoDeepShadowLight after clamping to what the map builder accepts.
 struct DeepShadowSettings {
   int resolution = 512;
   int maxLayers = 4;
-  int slices = 4;  // an opacity map's (method OPACITY_MAP)
+  int slices = kDefaultOpacitySlices;  // an opacity map's (method OPACITY_MAP)
   float nearRadius = -1.0f;  // <= 0: fitted to the casters
   float farRadius = -1.0f;   // <= 0: fitted to the casters
   float bias = 1.0f;

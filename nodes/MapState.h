@@ -23,6 +23,10 @@ struct MapState {
   bool coloured = false;
   float nearRadius = 0.0f;  // the map's depth range along its axes
   float farRadius = 0.0f;
+  // An opacity map's sliced distances along the axes: within the depth range, fitted to the
+  // casters' farthest distance along an axis (fitMapFrame).
+  float sliceNear = 0.0f;
+  float sliceFar = 0.0f;
   MapFrame frame;  // the faces the map is built over (fitMapFrame)
   // A directional light's map: the rectangle across the light it covers, coordinates along
   // orthographicBasis (z: the depth range); fitted to the casters and what the view shows.

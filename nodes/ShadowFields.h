@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/DeepShadowEnums.h"
+#include "nodes/DeepShadowSettings.h"
 
 namespace ivshadow {
 // The map's depth offset towards the light, in texels at the receiver, beyond the receiver's
@@ -15,9 +16,6 @@ constexpr float kDefaultMapBias = 0.1f;
 // (docs/TRADEOFF.md, "Defaults").
 constexpr SoDeepShadowLight::Filter kDefaultMapFilter = SoDeepShadowLight::PCF;
 constexpr int kDefaultMapFilterSize = 1;
-// An opacity map's slices per face: the four of seeds/002's implementation (one draw per face,
-// kOpacitySlicesPerDraw).
-constexpr int kDefaultOpacitySlices = 4;
 }  // namespace ivshadow
 
 // The shadow fields that SoDeepShadowLight, SoDeepShadowSpotLight, SoDeepShadowDirectionalLight

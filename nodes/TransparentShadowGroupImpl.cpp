@@ -166,7 +166,11 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
   light.name = entry.light->getName().getString();
   light.coloured = map.coloured;
   light.method = methodName(method);
-  if (map.rays) return;
+  if (map.rays) {
+    // A map kept from when the light had one (it may be hundreds of megabytes) goes.
+    pass.dropSlot(int(slot));
+    return;
+  }
   // The casters go to GL memory for a map only: a group whose lights all trace keeps them in
   // Embree alone.
   if (context.castersVersion != contents_.castersVersion()) {
@@ -360,8 +364,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
       uniforms->mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
       uniforms->mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
     }
-    uniforms->mapSlices[slot * 3 + 0] = map.nearRadius;
-    uniforms->mapSlices[slot * 3 + 1] = map.farRadius;
+    uniforms->mapSlices[slot * 3 + 0] = map.sliceNear;
+    uniforms->mapSlices[slot * 3 + 1] = map.sliceFar;
     // A map that failed to build holds no layer and casts no shadow, as a deep one.
     uniforms->mapSlices[slot * 3 + 2] = map.opacity ? float(map.faceLayers[0]) : 0.0f;
     uniforms->mapParams[slot * 4 + 2] = map.settings.bias;

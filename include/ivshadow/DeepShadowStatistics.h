@@ -12,8 +12,10 @@ namespace ivshadow {
 // What building the deep shadow maps of one SoTransparentShadowGroup cost.
 struct DeepShadowLightStatistics {
   std::string name;                 // the light's DEF name, or "" when it has none
-  std::array<int, 6> layersUsed{};  // peeled layers that held a surface, per cube face
-  std::array<int, 6> passes{};      // peel passes run per face (early termination)
+  // Peeled layers that held a surface, per cube face; an opacity map's slices.
+  std::array<int, 6> layersUsed{};
+  // Peel passes run per face (early termination); an opacity map's draws of the casters.
+  std::array<int, 6> passes{};
   // How the map sees its casters: "CUBE" (a point light, a wide spot light), "PERSPECTIVE"
   // (one face over a spot light's cone) or "ORTHOGRAPHIC" (one face across a directional
   // light); a one-face map counts its layers and passes in face 0. "" without a map.
@@ -27,7 +29,7 @@ struct DeepShadowLightStatistics {
   int resolution = 0;
   float nearRadius = 0.0f;
   float farRadius = 0.0f;
-  std::string method;  // "MAP" or "RAYS", after AUTO was resolved
+  std::string method;  // "MAP", "RAYS", "VOLUMES" or "OPACITY_MAP", after AUTO was resolved
 };
 
 struct DeepShadowStatistics {

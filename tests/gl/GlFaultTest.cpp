@@ -131,6 +131,20 @@ TEST(GlFault, AnIncompleteMapFramebufferLightsWithoutAShadow) {
                          "it lights without a shadow");
 }
 
+TEST(GlFault, OpacityMapTexturesThatNeverFitLightWithoutAShadow) {
+  expectLitWithoutShadow(
+      "texture", "OPACITY_MAP",
+      "SoDeepShadowLight \"Lamp\": no opacity map fits in GL memory at any resolution; "
+      "it lights without a shadow");
+}
+
+TEST(GlFault, AnIncompleteOpacityMapFramebufferLightsWithoutAShadow) {
+  expectLitWithoutShadow("framebuffer", "OPACITY_MAP",
+                         "SoDeepShadowLight \"Lamp\": the opacity map's framebuffer is "
+                         "incomplete (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT (forced by "
+                         "IVSHADOW_FAIL_GL)); it lights without a shadow");
+}
+
 TEST(GlFault, MapBuffersThatFailLightWithoutAShadow) {
   expectLitWithoutShadow("buffer", "MAP",
                          "SoDeepShadowLight \"Lamp\": GL could not allocate the map's flag buffer "

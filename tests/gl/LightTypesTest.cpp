@@ -122,8 +122,8 @@ constexpr double kTolerance = 1.0;
 enum class Method { Map, Rays, Volumes, OpacityMap, Reference };
 
 // The group's fields that choose the method. The opacity map's 32 slices over each light's
-// fitted range are 0.04 to 0.07 deep, a tenth of the 0.5 (0.7 along the oblique light) from
-// the glass to the floor: the floor counts the glass fully, and the picture is exact.
+// fitted range are 0.02 to 0.05 deep, a tenth of the 0.5 (0.7 along the oblique light) from
+// the glass to the floor or less: the floor counts the glass fully, and the picture is exact.
 const char* methodFields(Method method) {
   return method == Method::Map          ? "method MAP"
          : method == Method::Volumes    ? "method VOLUMES"

@@ -12,6 +12,7 @@
 
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,10 +41,10 @@ void expectPicture(const ShadowScene& scene, const ExpectedImage& picture) {
 }
 
 // The catalogue's light is 1 above the floor and its filters at heights 0.5 and 0.25: the
-// fitted range along the light's axes (the casters' nearest axial distance, 0.5, to the
-// farthest corner, 1.75) in 32 slices is 0.04 a slice, while the nearest receiver lies 0.25
-// behind the filter above it (at least 0.14 along a face's axis when the content is turned
-// into a cube corner): every filter counts fully, and the map is exact.
+// slices divide the fitted distances along the cube's axes (the casters' nearest, 0.5, to
+// their farthest, the floor's corners at 1 along -z), 32 slices 0.016 deep, while the nearest
+// receiver lies 0.25 behind the filter above it (at least 0.14 along a face's axis when the
+// content is turned into a cube corner): every filter counts fully, and the map is exact.
 class OpacityMapAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
 
 TEST_P(OpacityMapAnalytic, MatchesThePictureWithEnoughSlices) {
@@ -84,19 +85,46 @@ TEST(OpacityMap, AReceiverNearerThanASliceGetsThatShareOfTheAbsorption) {
 }
 
 TEST(OpacityMap, AnOpaqueCasterShadowsSharplyWithOneSlice) {
-  // The opaque square and the floor share the one slice; its shadow is the opaque depth's,
-  // as a shadow map's, and the glass's partial absorption is not spread over it.
-  ShadowScene scene;
-  Filter blocker = kRedGlass;
-  blocker.transparency = 0.0;
-  scene.filters = {blocker};
-  scene = withOpacityMap(scene, 1);
-  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
+  // An opaque square 0.1 above the floor, lit along (1, 0, -1): its shadow is the square moved
+  // 0.1 along x, seen beside it where 0.3 < x < 0.4. One slice spans the casters' whole depth
+  // along the light, about 1.5, so the floor lies a tenth of it behind the square: had the
+  // square's absorption, -log 2^-24, gone into the slice, the floor there would get
+  // exp(-0.1 x 16.6) of the light, 0.2, 36 steps. The opaque depth gives it none.
+  const std::string text =
+      "#Inventor V2.1 ascii\nSeparator {\n"
+      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+      "  TransparentShadowGroup {\n"
+      "    method OPACITY_MAP slices 1\n"
+      "    DirectionalLight { direction 1 0 -1 }\n"
+      "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
+      "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"
+      "    QuadMesh { verticesPerRow 2 verticesPerColumn 2 }\n"
+      "    Coordinate3 { point [ -0.3 -0.3 0.1, 0.3 -0.3 0.1, 0.3 0.3 0.1, -0.3 0.3 0.1 ] }\n"
+      "    FaceSet { numVertices 4 }\n  }\n}\n";
+  const Image image = renderIv(text, ShadowScene::kSize);
+  const std::string failure = compareWithExpectation(
+      image,
+      [](int px, int py) {
+        Expectation e;
+        const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
+        // Two pixels off every edge: the square's, its shadow's, the floor's.
+        const bool square = std::max(std::abs(x), std::abs(y)) < 0.32;
+        const bool shadow = std::max(std::abs(x - 0.1), std::abs(y)) < 0.32;
+        const bool clearOfEdges = std::max(std::abs(x - 0.1), std::abs(y)) < 0.28 ||
+                                  std::max(std::abs(x - 0.1), std::abs(y)) > 0.32;
+        if (square || !clearOfEdges || std::max(std::abs(x), std::abs(y)) > 0.98) return e;
+        e.checked = true;
+        e.rgb.fill(shadow ? 0.0 : 255.0 / std::sqrt(2.0));  // Lambert: cos 45 degrees
+        return e;
+      },
+      kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
 }
 
 TEST(OpacityMap, HalfPrecisionKeepsThePicture) {
-  // 16-bit absorption (relative error 5e-4) and slice coordinates (the glass's 0.2 within
-  // 1e-4): a tenth of a step.
+  // 16-bit running sums of absorption (relative error 5e-4 of at most 2.8 here) and slice
+  // coordinates (within 5e-4 of a slice 0.016 deep, two slices or more from the floor's): a
+  // tenth of a step.
   ShadowScene scene;
   scene.filters = {kRedGlass, kGreenGlass};
   scene.lightFields = "precision HALF";
@@ -105,41 +133,110 @@ TEST(OpacityMap, HalfPrecisionKeepsThePicture) {
 }
 
 TEST(OpacityMap, CostIsTheSlicesNotTheLayersOfTheScene) {
-  // Eight panes stacked 0.05 apart between the light and the floor: a deep shadow map peels a
-  // layer a pane; the opacity map draws each face once per kOpacitySlicesPerDraw (7) slices,
-  // so 1 draw for 4 slices and 5 for 32, and keeps 4 bytes of opaque depth plus 16 per slice
-  // per texel. 32 slices over the fitted 0.49 .. 1.75 are 0.04 apart: every pane lies in a
-  // slice of its own before the floor, which sees all eight exactly.
+  // One pane, then eight stacked 0.05 apart between the light and the floor: a deep shadow
+  // map peels a layer a pane; the opacity map draws each face once per kOpacitySlicesPerDraw
+  // (7) slices whatever the panes, so 1 draw for 4 slices and 5 for 32, and keeps 4 bytes of
+  // opaque depth plus 16 per slice per texel. 32 slices over the fitted 0.49 .. 1.01 are
+  // 0.016 deep: every pane lies in a slice of its own before the floor, which sees all eight
+  // exactly.
+  for (const int panes : {1, 8}) {
+    ShadowScene scene;
+    for (int i = 0; i < panes; ++i) {
+      Filter pane = kGreenGlass;
+      pane.halfSize = 0.2;
+      pane.height = 0.5 - 0.05 * i;
+      pane.transparency = 0.2;
+      scene.filters.push_back(pane);
+    }
+    for (const int slices : {4, 32}) {
+      SCOPED_TRACE(std::to_string(panes) + " panes, " + std::to_string(slices) + " slices");
+      const ShadowScene sliced = withOpacityMap(scene, slices);
+      SoNode* root = nullptr;
+      const Image image = renderIv(sliced.text(), ShadowScene::kSize, &root);
+      const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
+      root->unref();
+      ASSERT_EQ(stats.lights.size(), 1u);
+      const DeepShadowLightStatistics& light = stats.lights[0];
+      EXPECT_EQ(light.method, "OPACITY_MAP");
+      const int draws = (slices + 6) / 7;
+      for (int face = 0; face < 6; ++face) {
+        EXPECT_EQ(light.passes[std::size_t(face)], draws) << "face " << face;
+        EXPECT_EQ(light.layersUsed[std::size_t(face)], slices) << "face " << face;
+      }
+      const std::uint64_t texels =
+          std::uint64_t(light.resolution) * std::uint64_t(light.resolution);
+      EXPECT_EQ(light.bytes, texels * 6u * (4u + 16u * std::uint64_t(slices)));
+      if (slices == 32) {
+        const std::string failure = compareWithExpectation(
+            image, ShadowPicture{&sliced, ColourModel::Saturate}, kTolerance);
+        EXPECT_TRUE(failure.empty()) << failure;
+      }
+    }
+  }
+}
+
+TEST(OpacityMap, SharesAGroupWithADeepShadowMapAndSwitchesAtRunTime) {
+  // Two lights at one place, half the intensity each (ShadowScene::lightCount): with both
+  // exact for these filters, any mix of MAP and OPACITY_MAP gives the one analytic picture,
+  // and each slot keeps the map of its method only. The frame with both is the one whose
+  // shading compiles both lookups and picks per light.
+  init();
   ShadowScene scene;
-  for (int i = 0; i < 8; ++i) {
-    Filter pane = kGreenGlass;
-    pane.halfSize = 0.2;
-    pane.height = 0.5 - 0.05 * i;
-    pane.transparency = 0.2;
-    scene.filters.push_back(pane);
-  }
-  for (const int slices : {4, 32}) {
-    const ShadowScene sliced = withOpacityMap(scene, slices);
-    SoNode* root = nullptr;
-    const Image image = renderIv(sliced.text(), ShadowScene::kSize, &root);
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.lightCount = 2;
+  scene.lightFields = "slices 32";
+  SoSeparator* root = readIv(scene.text());
+  auto* first = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
+  auto* second = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp1"));
+  ASSERT_NE(first, nullptr);
+  ASSERT_NE(second, nullptr);
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  const ShadowPicture picture{&scene, ColourModel::Saturate};
+  const int methods[][2] = {{SoDeepShadowLight::MAP, SoDeepShadowLight::OPACITY_MAP},
+                            {SoDeepShadowLight::OPACITY_MAP, SoDeepShadowLight::OPACITY_MAP},
+                            {SoDeepShadowLight::OPACITY_MAP, SoDeepShadowLight::MAP},
+                            {SoDeepShadowLight::RAYS, SoDeepShadowLight::OPACITY_MAP}};
+  for (const auto& pair : methods) {
+    first->method = pair[0];
+    second->method = pair[1];
+    renderer->render(root);
+    SCOPED_TRACE("methods " + std::to_string(pair[0]) + ", " + std::to_string(pair[1]));
+    const std::string failure = compareWithExpectation(renderer->read(), picture, kTolerance);
+    EXPECT_TRUE(failure.empty()) << failure;
     const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
-    root->unref();
-    ASSERT_EQ(stats.lights.size(), 1u);
-    const DeepShadowLightStatistics& light = stats.lights[0];
-    EXPECT_EQ(light.method, "OPACITY_MAP");
-    const int draws = (slices + 6) / 7;
-    for (int face = 0; face < 6; ++face) {
-      EXPECT_EQ(light.passes[std::size_t(face)], draws) << "face " << face;
-      EXPECT_EQ(light.layersUsed[std::size_t(face)], slices) << "face " << face;
-    }
-    const std::uint64_t texels = std::uint64_t(light.resolution) * std::uint64_t(light.resolution);
-    EXPECT_EQ(light.bytes, texels * 6u * (4u + 16u * std::uint64_t(slices)));
-    if (slices == 32) {
-      const std::string failure = compareWithExpectation(
-          image, ShadowPicture{&sliced, ColourModel::Saturate}, kTolerance);
-      EXPECT_TRUE(failure.empty()) << failure;
+    ASSERT_EQ(stats.lights.size(), 2u);
+    for (int i = 0; i < 2; ++i) {
+      const DeepShadowLightStatistics& light = stats.lights[std::size_t(i)];
+      const std::uint64_t texels =
+          std::uint64_t(light.resolution) * std::uint64_t(light.resolution);
+      if (pair[i] == SoDeepShadowLight::OPACITY_MAP) {
+        EXPECT_EQ(light.method, "OPACITY_MAP");
+        EXPECT_EQ(light.bytes, texels * 6u * (4u + 16u * 32u));
+      } else if (pair[i] == SoDeepShadowLight::MAP) {
+        // Two filters and the floor seen through the -z face; no more than that kept.
+        EXPECT_EQ(light.method, "MAP");
+        EXPECT_LT(light.bytes, texels * 6u * (4u + 16u * 32u) / 10u);
+      } else {
+        EXPECT_EQ(light.bytes, 0u);
+      }
     }
   }
+  // Seven colour attachments blended by their own equations in the build: none is left so
+  // for Coin, which sets the blend equation for all of them at once.
+  GLint equation0 = 0;
+  glGetIntegeri_v(GL_BLEND_EQUATION_RGB, 0, &equation0);
+  for (GLuint i = 1; i <= 7; ++i) {
+    GLint rgb = 0, alpha = 0;
+    glGetIntegeri_v(GL_BLEND_EQUATION_RGB, i, &rgb);
+    glGetIntegeri_v(GL_BLEND_EQUATION_ALPHA, i, &alpha);
+    EXPECT_EQ(rgb, equation0) << "draw buffer " << i;
+    EXPECT_EQ(alpha, equation0) << "draw buffer " << i;
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  renderer.reset();
+  root->unref();
 }
 
 TEST(OpacityMap, OutOfRangeSlicesAreClampedWithOneWarning) {
