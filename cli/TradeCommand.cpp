@@ -266,7 +266,8 @@ int runTrade(const TradeOptions& options) {
       points.push_back(TradePoint{row.setting.label, row.buildMs + row.frameMs,
                                   row.metrics.all.rmse, row.kind == "baseline", false,
                                   row.kind == "rays" || row.kind == "shadow volumes" ||
-                                      &row == bestOpacity});
+                                      &row == bestOpacity,
+                                  row.kind == "opacity map"});
     }
     markParetoFront(points);
     writePng(options.outputDir + "/reference.png", exact);

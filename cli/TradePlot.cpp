@@ -3,6 +3,7 @@
 #include "image/AtomicFile.h"
 
 #include <QFont>
+#include <QFontMetricsF>
 #include <QGuiApplication>
 #include <QImage>
 #include <QPainter>
@@ -112,12 +113,34 @@ void writeTradePlot(const std::string& path, const std::string& title,
   for (std::size_t i = 1; i < front.size(); ++i)
     painter.drawLine(QPointF(x(front[i - 1]->timeMs), y(front[i - 1]->error)),
                      QPointF(x(front[i]->timeMs), y(front[i]->error)));
-  // A label right of its point, or left of it where it would leave the image.
+  // A label right of its point, or left of it where it would leave the image; moved down or
+  // up a line at a time, away from labels drawn before it, where it would cover one.
+  std::vector<QRectF> placed;
   const auto label = [&](const QPointF& at, double dy, const std::string& text) {
     const QString t = QString::fromStdString(text);
-    const double width = painter.fontMetrics().horizontalAdvance(t);
+    const QFontMetricsF metrics(painter.font());
+    const double width = metrics.horizontalAdvance(t), height = metrics.height();
     const double left = at.x() + 8 + width > kWidth - 4 ? at.x() - 8 - width : at.x() + 8;
-    painter.drawText(QPointF(left, at.y() + dy), t);
+    QRectF box(left, at.y() + dy - metrics.ascent(), width, height);
+    for (int step = 1; step <= 8; ++step) {
+      const bool covers = std::any_of(placed.begin(), placed.end(),
+                                      [&](const QRectF& other) { return other.intersects(box); });
+      if (!covers) break;
+      const double shift = (step % 2 == 1 ? 1.0 : -1.0) * ((step + 1) / 2) * height;
+      box.moveTop(at.y() + dy - metrics.ascent() + shift);
+    }
+    placed.push_back(box);
+    painter.drawText(QPointF(box.left(), box.top() + metrics.ascent()), t);
+  };
+  const auto dot = [&](const TradePoint& p, const QPointF& at, double radius) {
+    if (!p.diamond) {
+      painter.drawEllipse(at, radius, radius);
+      return;
+    }
+    const double r = radius * 1.4;
+    const QPointF corners[4] = {at + QPointF(0, -r), at + QPointF(r, 0), at + QPointF(0, r),
+                                at + QPointF(-r, 0)};
+    painter.drawPolygon(corners, 4);
   };
   for (const TradePoint& p : points) {
     const QPointF at(x(p.timeMs), y(p.error));
@@ -129,12 +152,12 @@ void writeTradePlot(const std::string& path, const std::string& title,
     } else if (p.pareto) {
       painter.setPen(QPen(QColor(200, 40, 40), 1));
       painter.setBrush(QColor(200, 40, 40));
-      painter.drawEllipse(at, 5, 5);
+      dot(p, at, 5);
       label(at, -6, p.label);
     } else {
       painter.setPen(QPen(QColor(120, 120, 120), 1));
       painter.setBrush(QColor(160, 160, 160));
-      painter.drawEllipse(at, 3.5, 3.5);
+      dot(p, at, 3.5);
       // Below the dot: the front's and the baselines' labels sit above theirs.
       if (p.method) label(at, 14, p.label);
     }
@@ -142,7 +165,7 @@ void writeTradePlot(const std::string& path, const std::string& title,
   painter.setPen(Qt::black);
   painter.drawText(QRectF(kLeft + 10, kTop + 8, plotW - 20, 20), Qt::AlignRight,
                    "red: Pareto front (labelled)   grey: other settings (methods named)   "
-                   "blue squares: baselines");
+                   "diamonds: opacity maps   blue squares: baselines");
   painter.end();
 
   AtomicFile file(path);

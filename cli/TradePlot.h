@@ -14,13 +14,17 @@ struct TradePoint {
   // A method's one setting (RAYS, VOLUMES): named wherever it falls, so that every method is
   // on the chart by name, not only those on the front.
   bool method = false;
+  // Drawn as a diamond, not a circle: an opacity map's setting, told apart from the deep
+  // shadow map's on the same chart.
+  bool diamond = false;
 };
 
 // Marks the points no other point beats in both time and error (the Pareto front).
 void markParetoFront(std::vector<TradePoint>& points);
 
-// Draws error against time (log time axis), one dot per setting, the Pareto front joined and
-// labelled, baselines as squares; writes a PNG atomically. Needs no display (Qt's offscreen
+// Draws error against time (log time axis), one dot per setting (a diamond for an opacity
+// map's), the Pareto front joined and labelled, baselines as squares, labels moved off one
+// another; writes a PNG atomically. Needs no display (Qt's offscreen
 // platform is used when there is none).
 void writeTradePlot(const std::string& path, const std::string& title,
                     const std::vector<TradePoint>& points);
