@@ -36,6 +36,9 @@ int runReference(const ReferenceCommandOptions& options) {
   const InterruptGuard guard;
   std::atomic<bool>& interrupted = InterruptGuard::flag();
   const int status = withExitStatus([&] {
+    if (options.bounce < 0 || options.bounce > 65536)
+      throw InputError("--bounce " + std::to_string(options.bounce) +
+                       ": error: expected 0 (no bounce) .. 65536 rays per point");
     if (options.threads < 0 || options.threads > 1024)
       throw InputError("--threads " + std::to_string(options.threads) +
                        ": error: expected 0 (every core) to 1024");
@@ -65,6 +68,7 @@ int runReference(const ReferenceCommandOptions& options) {
     reference.width = size.width;
     reference.height = size.height;
     reference.threads = options.threads;
+    reference.bounceSamples = options.bounce;
     std::atomic<int> rows{0};
     reference.rowsDone = &rows;
     reference.cancel = &interrupted;
@@ -99,7 +103,9 @@ int runReference(const ReferenceCommandOptions& options) {
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::cout << "wrote " << options.output << " (" << size.toString() << ", " << result->triangles
-              << " triangles, " << result->shadowRays << " shadow rays, " << ms << " ms)\n";
+              << " triangles, " << result->shadowRays << " shadow rays, "
+              << (options.bounce > 0 ? std::to_string(result->bounceRays) + " bounce rays, " : "")
+              << ms << " ms)\n";
     return 0;
   });
   return status;

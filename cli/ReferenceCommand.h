@@ -12,6 +12,7 @@ struct ReferenceCommandOptions {
   std::string size = "800x600";
   std::vector<std::string> assignments;  // NAME.field=VALUE
   int threads = 0;
+  int bounce = 0;  // rays per point of one diffuse bounce (ReferenceOptions::bounceSamples)
 };
 
 // `ivshadow reference`: the exact CPU picture (raytrace/ReferenceRenderer.h). Exit 0, 2 on

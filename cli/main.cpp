@@ -54,7 +54,8 @@ const char* kMergeExamples = R"(  ivshadow variants-merge out/grid
 
 const char* kReferenceExamples = R"(  ivshadow reference iv_scenes/coloured_shadows.iv -o exact.png
   ivshadow reference scene.iv -o exact.png --size 640x480 --pfm exact.pfm
-  ivshadow reference scene.iv -o exact.jpg --set Lamp.location="0 0 3" --threads 2)";
+  ivshadow reference scene.iv -o exact.jpg --set Lamp.location="0 0 3" --threads 2
+  ivshadow reference iv_scenes/bounce_wall.iv -o bounce.png --bounce 256)";
 
 const char* kTradeExamples = R"(  ivshadow trade iv_scenes/coloured_shadows.iv -o out/trade
   ivshadow trade scene.iv -o out/trade --layers 1,4 --filter none --method map
@@ -164,6 +165,10 @@ int main(int argc, char** argv) {
       ->add_option("--set", reference.assignments,
                    "Assign NAME.field=VALUE (Inventor syntax) to DEF-named nodes")
       ->allow_extra_args(false);
+  referenceCommand
+      ->add_option("--bounce", reference.bounce,
+                   "One diffuse bounce of the groups' casting lights: rays per point (0: none)")
+      ->capture_default_str();
   referenceCommand->add_option("--threads", reference.threads, "Worker threads (0: every core)")
       ->capture_default_str();
 

@@ -34,6 +34,9 @@
 #include <Inventor/nodes/SoSpotLight.h>
 #include <Inventor/nodes/SoText2.h>
 
+#include <cstring>
+#include <limits>
+
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
@@ -386,6 +389,11 @@ void cameraFilter(const RTCFilterFunctionNArguments* args) {
   args->valid[0] = 0;
 }
 
+struct RayCounts {
+  std::size_t shadow = 0;
+  std::size_t bounce = 0;
+};
+
 class Tracer {
  public:
   Tracer(const Extraction& data, RTCScene scene, const ReferenceOptions& options)
@@ -398,7 +406,7 @@ class Tracer {
     viewDirection_ = toGlm(back);
   }
 
-  glm::vec3 pixel(int x, int y, std::vector<Hit>& hits, std::size_t& shadowRays) const {
+  glm::vec3 pixel(int x, int y, std::vector<Hit>& hits, RayCounts& rays) const {
     const float nx = (float(x) + 0.5f) / float(options_.width) * 2.0f - 1.0f;
     const float ny = 1.0f - (float(y) + 0.5f) / float(options_.height) * 2.0f;
     SbVec3f nearPoint, farPoint;
@@ -407,6 +415,32 @@ class Tracer {
     const glm::vec3 origin = toGlm(nearPoint);
     const glm::vec3 direction = toGlm(farPoint) - origin;
 
+    surfacesAlong(origin, direction, 0.0f, 1.0f, hits);  // the far plane clips as in GL
+
+    glm::vec3 colour(0.0f);
+    float transmitted = 1.0f;
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+      const Hit& hit = hits[i];
+      const Triangle& tri = data_.triangles[hit.primitive];
+      if (metBefore(hits, i)) continue;
+      const glm::vec3 position = origin + hit.t * direction;
+      const glm::vec4 shaded = shade(tri, hit, position, direction, rays);
+      const float alpha = isOpaque(shaded.a) ? 1.0f : glm::clamp(shaded.a, 0.0f, 1.0f);
+      colour += transmitted * alpha * glm::vec3(shaded);
+      transmitted *= 1.0f - alpha;
+      if (transmitted <= 0.0f) break;
+    }
+    colour += transmitted *
+              glm::vec3(options_.background[0], options_.background[1], options_.background[2]);
+    return colour;
+  }
+
+ private:
+  // Every surface along origin + t direction, tnear < t < tfar, into `hits` in exact depth
+  // order (coincident ones in the order Coin traversed them), ending at the first opaque one
+  // if there is one; true when there is.
+  bool surfacesAlong(const glm::vec3& origin, const glm::vec3& direction, float tnear, float tfar,
+                     std::vector<Hit>& hits) const {
     hits.clear();
     CameraRayContext context;
     rtcInitIntersectContext(&context);
@@ -419,8 +453,8 @@ class Tracer {
     rayHit.ray.dir_x = direction.x;
     rayHit.ray.dir_y = direction.y;
     rayHit.ray.dir_z = direction.z;
-    rayHit.ray.tnear = 0.0f;
-    rayHit.ray.tfar = 1.0f;  // the far plane clips as in GL
+    rayHit.ray.tnear = tnear;
+    rayHit.ray.tfar = tfar;
     rayHit.ray.mask = 0xFFFFFFFFu;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &rayHit);
@@ -429,41 +463,27 @@ class Tracer {
     hits.erase(std::remove_if(hits.begin(), hits.end(),
                               [&](const Hit& h) { return opaqueHit && h.t >= limit; }),
                hits.end());
-    if (opaqueHit) hits.push_back(Hit{limit, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v});
-    // Exact depth order; coincident surfaces keep the order Coin traversed them in.
     std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
       return a.t != b.t ? a.t < b.t : a.primitive < b.primitive;
     });
-
-    glm::vec3 colour(0.0f);
-    float transmitted = 1.0f;
-    for (std::size_t i = 0; i < hits.size(); ++i) {
-      const Hit& hit = hits[i];
-      const Triangle& tri = data_.triangles[hit.primitive];
-      // One surface met twice (a shared edge, a spatial split) is composited once.
-      bool duplicate = false;
-      for (std::size_t j = 0; j < i && !duplicate; ++j)
-        duplicate =
-            data_.triangles[hits[j].primitive].shape == tri.shape && sameSurface(hits[j].t, hit.t);
-      if (duplicate) continue;
-      const glm::vec3 position = origin + hit.t * direction;
-      const glm::vec4 shaded = shade(tri, hit, position, direction, shadowRays);
-      const float alpha = isOpaque(shaded.a) ? 1.0f : glm::clamp(shaded.a, 0.0f, 1.0f);
-      colour += transmitted * alpha * glm::vec3(shaded);
-      transmitted *= 1.0f - alpha;
-      if (transmitted <= 0.0f) break;
-    }
-    colour += transmitted *
-              glm::vec3(options_.background[0], options_.background[1], options_.background[2]);
-    return colour;
+    if (opaqueHit) hits.push_back(Hit{limit, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v});
+    return opaqueHit;
   }
 
- private:
+  // Whether hits[i] is a surface met before (a shared edge, a spatial split): composited once.
+  bool metBefore(const std::vector<Hit>& hits, std::size_t i) const {
+    const Triangle& tri = data_.triangles[hits[i].primitive];
+    for (std::size_t j = 0; j < i; ++j)
+      if (data_.triangles[hits[j].primitive].shape == tri.shape && sameSurface(hits[j].t, hits[i].t))
+        return true;
+    return false;
+  }
+
   // shading.frag's shade(), on the CPU. Shapes inside an active group are lit per pixel, as
   // the group's shading program does; elsewhere Coin's fixed-function GL lights each vertex
   // and interpolates (Gouraud), and so does this.
   glm::vec4 shade(const Triangle& tri, const Hit& hit, const glm::vec3& position,
-                  const glm::vec3& rayDirection, std::size_t& shadowRays) const {
+                  const glm::vec3& rayDirection, RayCounts& rays) const {
     const TextureImage* image = imageOf(data_, tri);
     const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, image, hit.u, hit.v);
     glm::vec4 colour = sample.colour;
@@ -475,7 +495,7 @@ class Tracer {
       glm::vec3 lit;
       if (tri.group >= 0) {
         const glm::vec3 normal = w * tri.normal[0] + hit.u * tri.normal[1] + hit.v * tri.normal[2];
-        lit = lighting(tri, side * normal, position, glm::vec3(colour), shadowRays);
+        lit = lighting(tri, side * normal, position, glm::vec3(colour), rays);
       } else {
         const float weights[3] = {w, hit.u, hit.v};
         lit = glm::vec3(0.0f);
@@ -483,7 +503,7 @@ class Tracer {
           const glm::vec3& corner =
               data_.positions[std::size_t(&tri - data_.triangles.data()) * 3 + i];
           lit += weights[i] *
-                 lighting(tri, side * tri.normal[i], corner, glm::vec3(tri.colour[i]), shadowRays);
+                 lighting(tri, side * tri.normal[i], corner, glm::vec3(tri.colour[i]), rays);
         }
       }
       colour = glm::vec4(lit, colour.a);
@@ -506,7 +526,7 @@ class Tracer {
 
   // Coin's lighting equation at one point, clamped as GL clamps a lit colour.
   glm::vec3 lighting(const Triangle& tri, glm::vec3 normal, const glm::vec3& position,
-                     const glm::vec3& diffuse, std::size_t& shadowRays) const {
+                     const glm::vec3& diffuse, RayCounts& rays) const {
     const float length = glm::length(normal);
     normal = length > 0.0f ? normal / length : glm::vec3(0.0f, 0.0f, 1.0f);
     const Material& material = data_.materials[std::size_t(tri.material)];
@@ -523,51 +543,154 @@ class Tracer {
       if (set == nullptr) continue;
       for (int index : *set)
         lit += contribution(data_.lights[std::size_t(index)], tri, group, normal, position, diffuse,
-                            material, shadowRays);
+                            material, rays);
     }
+    if (group != nullptr && options_.bounceSamples > 0)
+      lit += diffuse * indirect(*group, tri, normal, position, rays);
     return glm::clamp(lit, 0.0f, 1.0f);
+  }
+
+  // Where a light is seen from `position`: the unit direction towards it and GL's distance
+  // and spot attenuation of its light there.
+  struct Incidence {
+    glm::vec3 toLight;
+    float attenuation;
+  };
+  static Incidence incidence(const Light& light, const glm::vec3& position) {
+    if (light.type == LightType::Directional)
+      return {glm::normalize(light.towardsLight), 1.0f};
+    const glm::vec3 v = light.position - position;
+    const float distance = glm::length(v);
+    Incidence in{distance > 0.0f ? v / distance : glm::vec3(0.0f, 0.0f, 1.0f), 1.0f};
+    in.attenuation = 1.0f / (light.attenuation.x + light.attenuation.y * distance +
+                             light.attenuation.z * distance * distance);
+    if (light.type == LightType::Spot) {
+      const float spotCos = glm::dot(-in.toLight, glm::normalize(light.spotDirection));
+      in.attenuation *= spotCos < light.spotCosCutoff ? 0.0f : std::pow(spotCos, light.spotExponent);
+    }
+    return in;
+  }
+
+  bool casts(const Group& group, const Light& light) const {
+    return std::find(group.casting.begin(), group.casting.end(),
+                     int(&light - data_.lights.data())) != group.casting.end();
+  }
+
+  ShadowColourModel modelOf(const Group& group, const Light& light) const {
+    return castingColourModel(*light.node, *static_cast<const SoTransparentShadowGroup*>(group.node),
+                              group.casters->coloured());
+  }
+
+  // The transmittance of the group's casters between `position` (on a surface of geometric
+  // normal `normal`) and the light.
+  glm::vec3 castersTransmittance(const Group& group, const Light& light, const glm::vec3& position,
+                                 const glm::vec3& normal, ShadowColourModel model) const {
+    return light.type == LightType::Directional
+               ? group.casters->transmittanceTowards(position, normal, light.towardsLight, model)
+               : group.casters->transmittance(position, normal, light.position, model);
   }
 
   glm::vec3 contribution(const Light& light, const Triangle& tri, const Group* group,
                          const glm::vec3& normal, const glm::vec3& position,
                          const glm::vec3& diffuse, const Material& material,
-                         std::size_t& shadowRays) const {
-    glm::vec3 toLight;
-    float attenuation = 1.0f;
-    if (light.type == LightType::Directional) {
-      toLight = glm::normalize(light.towardsLight);
-    } else {
-      const glm::vec3 v = light.position - position;
-      const float distance = glm::length(v);
-      toLight = distance > 0.0f ? v / distance : glm::vec3(0.0f, 0.0f, 1.0f);
-      attenuation = 1.0f / (light.attenuation.x + light.attenuation.y * distance +
-                            light.attenuation.z * distance * distance);
-      if (light.type == LightType::Spot) {
-        const float spotCos = glm::dot(-toLight, glm::normalize(light.spotDirection));
-        attenuation *= spotCos < light.spotCosCutoff ? 0.0f : std::pow(spotCos, light.spotExponent);
-      }
-    }
-    const float nDotL = glm::dot(normal, toLight);
+                         RayCounts& rays) const {
+    const Incidence in = incidence(light, position);
+    const float nDotL = glm::dot(normal, in.toLight);
     if (!(nDotL > 0.0f)) return glm::vec3(0.0f);
-    const glm::vec3 halfVector = glm::normalize(toLight + viewDirection_);
+    const glm::vec3 halfVector = glm::normalize(in.toLight + viewDirection_);
     const float nDotH = std::max(glm::dot(normal, halfVector), 0.0f);
     glm::vec3 direct = nDotL * light.colour * diffuse;
     if (nDotH > 0.0f)
       direct += std::pow(nDotH, material.shininess) * light.colour * material.specular;
-    if (group != nullptr && tri.shadowed && group->casters &&
-        std::find(group->casting.begin(), group->casting.end(),
-                  int(&light - data_.lights.data())) != group->casting.end()) {
-      ++shadowRays;
-      const ShadowColourModel model = castingColourModel(
-          *light.node, *static_cast<const SoTransparentShadowGroup*>(group->node),
-          group->casters->coloured());
-      direct *=
-          light.type == LightType::Directional
-              ? group->casters->transmittanceTowards(position, tri.geometricNormal,
-                                                     light.towardsLight, model)
-              : group->casters->transmittance(position, tri.geometricNormal, light.position, model);
+    if (group != nullptr && tri.shadowed && group->casters && casts(*group, light)) {
+      ++rays.shadow;
+      direct *= castersTransmittance(*group, light, position, tri.geometricNormal,
+                                     modelOf(*group, light));
     }
-    return attenuation * direct;
+    return in.attenuation * direct;
+  }
+
+  // One diffuse bounce at `position` (shading normal `normal`, on `tri` in `group`): the mean,
+  // over cosine-weighted directions about the normal, of the diffuse light that the group's
+  // casting lights put directly on the first opaque surface of the group that way, times the
+  // transmittance of the glass between. With Coin's Lambert (no 1 / pi: a light's colour is
+  // its irradiance / pi), cosine-weighted sampling leaves the plain mean: L = kd(x) (1 / pi)
+  // \int L(y) cos dw. Only the group's opaque, lit surfaces reflect; glass filters.
+  glm::vec3 indirect(const Group& group, const Triangle& tri, const glm::vec3& normal,
+                     const glm::vec3& position, RayCounts& rays) const {
+    if (!group.casters || group.casting.empty()) return glm::vec3(0.0f);
+    thread_local std::vector<Hit> hits;
+    const int side = int(std::ceil(std::sqrt(double(options_.bounceSamples))));
+    // One rotation of the strata per point (Cranley-Patterson), from the point's bits: the
+    // picture is the same on every run and has no pattern shared by neighbouring pixels.
+    std::uint32_t seed = 2166136261u;
+    for (float c : {position.x, position.y, position.z}) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      seed = (seed ^ bits) * 16777619u;
+    }
+    const auto unit = [&seed] {
+      seed ^= seed << 13;
+      seed ^= seed >> 17;
+      seed ^= seed << 5;
+      return float(seed >> 8) * (1.0f / 16777216.0f);
+    };
+    const float du = unit(), dv = unit();
+    const glm::vec3 along = std::fabs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 t1 = glm::normalize(glm::cross(normal, along));
+    const glm::vec3 t2 = glm::cross(normal, t1);
+    // The surface's own side: directions into it are counted as light that does not come.
+    const glm::vec3 front =
+        glm::dot(tri.geometricNormal, normal) >= 0.0f ? tri.geometricNormal : -tri.geometricNormal;
+    const float scale = std::max({std::fabs(position.x), std::fabs(position.y),
+                                  std::fabs(position.z), 1.0f});
+    glm::vec3 sum(0.0f);
+    for (int i = 0; i < side; ++i)
+      for (int j = 0; j < side; ++j) {
+        const float u = std::fmod((float(i) + 0.5f) / float(side) + du, 1.0f);
+        const float v = std::fmod((float(j) + 0.5f) / float(side) + dv, 1.0f);
+        const float r = std::sqrt(u), phi = 6.28318531f * v;
+        const glm::vec3 direction = r * std::cos(phi) * t1 + r * std::sin(phi) * t2 +
+                                    std::sqrt(std::max(0.0f, 1.0f - u)) * normal;
+        if (!(glm::dot(direction, front) > 0.0f)) continue;
+        ++rays.bounce;
+        if (!surfacesAlong(position, direction, 1e-5f * scale, std::numeric_limits<float>::infinity(),
+                           hits))
+          continue;
+        const Hit& hit = hits.back();
+        const Triangle& reflector = data_.triangles[hit.primitive];
+        if (reflector.group != tri.group || !reflector.lit) continue;
+        const TextureImage* image = imageOf(data_, reflector);
+        const SurfaceSample sample =
+            sampleSurface(reflector.colour, reflector.texCoord, image, hit.u, hit.v);
+        const glm::vec3 kd = glm::vec3(texturedColour(sample.colour, sample.texel, image));
+        const glm::vec3 y = position + hit.t * direction;
+        // The geometric normal is the corners' cross product, of any length.
+        const glm::vec3 facing = glm::normalize(reflector.geometricNormal);
+        const glm::vec3 ny = glm::dot(facing, direction) < 0.0f ? facing : -facing;
+        for (int index : group.casting) {
+          const Light& light = data_.lights[std::size_t(index)];
+          const Incidence in = incidence(light, y);
+          const float nDotL = glm::dot(ny, in.toLight);
+          if (!(nDotL > 0.0f) || !(in.attenuation > 0.0f)) continue;
+          const ShadowColourModel model = modelOf(group, light);
+          glm::vec3 through(1.0f);
+          for (std::size_t k = 0; k + 1 < hits.size(); ++k) {
+            if (metBefore(hits, k)) continue;
+            const Triangle& glass = data_.triangles[hits[k].primitive];
+            const TextureImage* glassImage = imageOf(data_, glass);
+            const SurfaceSample g =
+                sampleSurface(glass.colour, glass.texCoord, glassImage, hits[k].u, hits[k].v);
+            through *= transmittance(glm::clamp(texturedColour(g.colour, g.texel, glassImage),
+                                                0.0f, 1.0f),
+                                     model);
+          }
+          ++rays.shadow;
+          sum += through * kd * light.colour * (nDotL * in.attenuation) *
+                 castersTransmittance(group, light, y, reflector.geometricNormal, model);
+        }
+      }
+    return sum / float(side * side);
   }
 
   const Extraction& data_;
@@ -670,7 +793,7 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   const Tracer tracer(data, scene.get(), options);
   const int workers = workerCount(options.threads);
   std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers));
-  std::vector<std::size_t> rays(static_cast<std::size_t>(workers), 0);
+  std::vector<RayCounts> rays(static_cast<std::size_t>(workers));
   parallelRows(
       options.height, workers,
       [&](int y, int worker) {
@@ -687,7 +810,10 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
       },
       options.cancel);
   if (options.cancel && options.cancel->load()) return std::nullopt;
-  for (std::size_t count : rays) result.shadowRays += count;
+  for (const RayCounts& count : rays) {
+    result.shadowRays += count.shadow;
+    result.bounceRays += count.bounce;
+  }
   return result;
 }
 

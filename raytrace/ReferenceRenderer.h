@@ -32,6 +32,11 @@ struct ReferenceOptions {
   const std::atomic<bool>* cancel = nullptr;
   // Rows finished so far, updated as the workers go; may be read from another thread.
   std::atomic<int>* rowsDone = nullptr;
+  // Above 0: one diffuse bounce of the casting lights of each active SoTransparentShadowGroup
+  // (seeds/001's indirect light), from this many cosine-weighted rays per shaded point
+  // (rounded up to a square, stratified): light that reached an opaque surface of the group
+  // directly, through its glass and tinted by it, lights the group's surfaces it faces.
+  int bounceSamples = 0;
 };
 
 struct ReferenceResult {
@@ -39,6 +44,7 @@ struct ReferenceResult {
   std::vector<std::string> warnings;  // shapes it could not draw, named
   std::size_t triangles = 0;
   std::size_t shadowRays = 0;
+  std::size_t bounceRays = 0;  // rays of the bounce (ReferenceOptions::bounceSamples)
 };
 
 // The exact answer the GL path approximates, computed on the CPU with Embree. `root` is a

@@ -60,7 +60,37 @@ TEST(ReferenceCommand, BadInputExitsTwoWithoutOutput) {
                                         "-o", dir + "/a.png", "--size", "0x9"});
   EXPECT_EQ(size.exitCode, 2);
   EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
+  const test::ProcessResult bounce = run({test::ivshadowExe(), "reference", scene("lit_plane.iv"),
+                                          "-o", dir + "/a.png", "--bounce", "-1"});
+  EXPECT_EQ(bounce.exitCode, 2);
+  EXPECT_NE(bounce.err.find("--bounce -1: error: expected 0"), std::string::npos) << bounce.err;
   EXPECT_FALSE(test::fileExists(dir + "/a.png"));
+}
+
+TEST(ReferenceCommand, BounceLightsTheWallTheLightMisses) {
+  // bounce_wall.iv's wall is parallel to its only light: black without the bounce, red-tinted
+  // with it (the analytic value is checked in ReferenceBounce.*); the command says how many
+  // bounce rays it traced.
+  const std::string dir = test::outputDir();
+  const test::ProcessResult plain = run({test::ivshadowExe(), "reference", scene("bounce_wall.iv"),
+                                         "-o", dir + "/plain.png", "--size", "32x32"});
+  const test::ProcessResult bounced =
+      run({test::ivshadowExe(), "reference", scene("bounce_wall.iv"), "-o", dir + "/bounce.png",
+           "--size", "32x32", "--bounce", "64"});
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  ASSERT_EQ(bounced.exitCode, 0) << bounced.err;
+  EXPECT_EQ(plain.out.find("bounce rays"), std::string::npos) << plain.out;
+  EXPECT_NE(bounced.out.find(" bounce rays, "), std::string::npos) << bounced.out;
+  // The wall's centre: 0.5 0.25 0.25 times the form factor 0.318, about 40 20 20 (the
+  // camera looks at it through the centre pixel).
+  const Image plainImage = readPng(dir + "/plain.png");
+  const Image bounceImage = readPng(dir + "/bounce.png");
+  const std::uint8_t* dark = plainImage.pixel(16, 16);
+  const std::uint8_t* lit = bounceImage.pixel(16, 16);
+  EXPECT_EQ(int(dark[0]), 0);
+  EXPECT_NEAR(int(lit[0]), 40, 6);
+  EXPECT_NEAR(int(lit[1]), 20, 4);
+  EXPECT_NEAR(int(lit[2]), 20, 4);
 }
 
 TEST(ReferenceCommand, CtrlCStopsWithoutAPartialFile) {
