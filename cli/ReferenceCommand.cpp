@@ -13,6 +13,8 @@
 #include "image/PfmFile.h"
 #include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/NodesOfType.h"
 #include "raytrace/ReferenceRenderer.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
@@ -63,6 +65,17 @@ int runReference(const ReferenceCommandOptions& options) {
       assignment.apply(scene.root.get(), options.scene);
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
+    if (options.bounce > 0) {
+      // Only the groups' light bounces: say so where nothing can.
+      bool groups = false;
+      forEachNodeOfType<SoTransparentShadowGroup>(scene.root.get(), [&](SoTransparentShadowGroup& g) {
+        groups = groups || g.isActive.getValue();
+      });
+      if (!groups)
+        std::cerr << options.scene
+                  << ": warning: --bounce: no active TransparentShadowGroup, so no light "
+                     "bounces\n";
+    }
 
     ReferenceOptions reference;
     reference.width = size.width;

@@ -167,7 +167,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   referenceCommand
       ->add_option("--bounce", reference.bounce,
-                   "One diffuse bounce of the groups' casting lights: rays per point (0: none)")
+                   "One diffuse bounce of the groups' casting lights: rays per point, rounded up "
+                   "to a square (0: none)")
       ->capture_default_str();
   referenceCommand->add_option("--threads", reference.threads, "Worker threads (0: every core)")
       ->capture_default_str();

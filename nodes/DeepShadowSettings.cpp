@@ -77,7 +77,11 @@ DeepShadowSettings resolveFields(Node& light, int maxTextureSize) {
   s.resolution =
       clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
   s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, kMaxMapLayers);
-  s.slices = clampInt(light, "slices", light.slices.getValue(), 1, kMaxOpacitySlices);
+  // Only a light that builds an opacity map (or may, as a group's ordinary lights with the
+  // group's method) is told about its slices; the others keep them clamped, unused.
+  s.slices = light.method.getValue() == SoDeepShadowLight::OPACITY_MAP
+                 ? clampInt(light, "slices", light.slices.getValue(), 1, kMaxOpacitySlices)
+                 : std::clamp(light.slices.getValue(), 1, kMaxOpacitySlices);
   readRadii(light, s);
   s.bias = finiteOr(light, "bias", light.bias.getValue(), kDefaultMapBias);
   if (s.bias < 0.0f) {

@@ -138,8 +138,6 @@ ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld
 void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view) {
   if (map.kind == LightKind::Directional) {
     fitDirectional(map, casterBounds, view);
-    map.sliceNear = map.nearRadius;  // its depth range is along the light already
-    map.sliceFar = map.farRadius;
     return;
   }
   float nearest = 0.0f, nearestAxial = 0.0f, farthest = 1.0f;
@@ -158,30 +156,6 @@ void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& 
   map.nearRadius = map.settings.nearRadius > 0.0f ? map.settings.nearRadius
                                                   : std::max(nearest * 0.99f, far * 1e-5f);
   if (map.nearRadius >= map.farRadius) map.nearRadius = map.farRadius * 1e-5f;
-  // An opacity map's slices divide the distances along the faces' axes that hold casters: the
-  // same near distance, but a far one no greater than the farthest box corner's distance
-  // along an axis (a cube face's depth is a point's largest coordinate from the light; along a
-  // spot light's axis a corner's projection), up to sqrt(3) nearer than the corner's
-  // distance that the map's far plane must clear. Radii the light sets are the slices' too.
-  map.sliceNear = map.nearRadius;
-  map.sliceFar = map.farRadius;
-  if (map.settings.farRadius <= 0.0f && !casterBounds.isEmpty()) {
-    float axial = 0.0f;
-    const SbVec3f& low = casterBounds.getMin();
-    const SbVec3f& high = casterBounds.getMax();
-    if (oneFace) {
-      for (int i = 0; i < 8; ++i) {
-        const SbVec3f corner(i & 1 ? high[0] : low[0], i & 2 ? high[1] : low[1],
-                             i & 4 ? high[2] : low[2]);
-        axial = std::max(axial, (corner - map.position).dot(map.axis));
-      }
-    } else {
-      for (int i = 0; i < 3; ++i)
-        axial = std::max({axial, std::fabs(low[i] - map.position[i]),
-                          std::fabs(high[i] - map.position[i])});
-    }
-    if (axial * 1.01f > map.sliceNear) map.sliceFar = std::min(map.farRadius, axial * 1.01f);
-  }
   if (oneFace) {
     // One percent wider than the cone, so that the cone's rim and the filter's taps there
     // fall inside the face.
@@ -190,6 +164,44 @@ void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& 
                                  map.farRadius);
   } else {
     map.frame = cubeFrame(toGlm(map.position), map.nearRadius, map.farRadius);
+  }
+}
+
+void fitSlices(MapState& map, const SbBox3f& transparentBounds) {
+  map.sliceNear = map.nearRadius;
+  map.sliceFar = map.farRadius;
+  // Radii the light sets are the slices' too; without transparent casters the slices hold
+  // nothing and their range does not matter.
+  if (map.settings.nearRadius > 0.0f || map.settings.farRadius > 0.0f ||
+      transparentBounds.isEmpty())
+    return;
+  // The distance the map stores, along each face's axis, over the box's corners (linear along
+  // one axis, so its extremes are at corners); a cube face's is a point's largest coordinate
+  // from the light, least over the box where the box is farthest off along some axis.
+  const SbVec3f& low = transparentBounds.getMin();
+  const SbVec3f& high = transparentBounds.getMax();
+  float nearest = std::numeric_limits<float>::max(), farthest = 0.0f;
+  if (map.frame.projection == MapProjection::Cube) {
+    float ignored = 0.0f;
+    distanceRange(transparentBounds, map.position, ignored, nearest, ignored);
+    for (int i = 0; i < 3; ++i)
+      farthest = std::max({farthest, std::fabs(low[i] - map.position[i]),
+                           std::fabs(high[i] - map.position[i])});
+  } else {
+    const MapFace& face = map.frame.faces[0];
+    for (const SbVec3f& corner : boxCorners(transparentBounds)) {
+      const float depth = glm::dot(toGlm(corner) - face.depthOrigin, face.depthAxis);
+      nearest = std::min(nearest, depth);
+      farthest = std::max(farthest, depth);
+    }
+  }
+  // A little beyond the casters either way, within the map's range, and never empty.
+  const float pad = 0.01f * (farthest - nearest) + 1e-4f * (1.0f + std::fabs(farthest));
+  map.sliceNear = std::max(map.nearRadius, nearest - pad);
+  map.sliceFar = std::min(map.farRadius, farthest + pad);
+  if (!(map.sliceFar > map.sliceNear)) {
+    map.sliceNear = map.nearRadius;
+    map.sliceFar = map.farRadius;
   }
 }
 

@@ -31,6 +31,12 @@ ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld
 // casters' bounds.
 void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view);
 
+// An opacity map's sliced distances (MapState::sliceNear, sliceFar), after fitMapFrame: the
+// transparent casters' distances along the map's axes, within its depth range. Opaque casters
+// need no slice (their depth is kept apart), and receivers beyond the last transparent caster
+// count every slice fully wherever the range ends. Radii the light sets are used as they are.
+void fitSlices(MapState& map, const SbBox3f& transparentBounds);
+
 // Whether a directional light's map fitted before still serves `view`: everything the view
 // shows of the casters lies inside it, and it is not over three times as wide as that (the
 // texels would be wasted). Other maps do not depend on the view.

@@ -24,7 +24,7 @@ struct MapState {
   float nearRadius = 0.0f;  // the map's depth range along its axes
   float farRadius = 0.0f;
   // An opacity map's sliced distances along the axes: within the depth range, fitted to the
-  // casters' farthest distance along an axis (fitMapFrame).
+  // transparent casters (fitSlices).
   float sliceNear = 0.0f;
   float sliceFar = 0.0f;
   MapFrame frame;  // the faces the map is built over (fitMapFrame)

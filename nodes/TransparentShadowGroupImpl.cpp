@@ -159,6 +159,7 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
   map.rays = method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES;
   map.volumes = method == SoDeepShadowLight::VOLUMES;
   map.opacity = method == SoDeepShadowLight::OPACITY_MAP;
+  if (map.opacity) fitSlices(map, casters.transparentBounds);
   map.model = castingColourModel(*entry.light, group, casters.hasColouredTransparent);
   map.coloured = map.model != ShadowColourModel::Monochrome;
   DeepShadowLightStatistics& light = statistics_.lights[slot];

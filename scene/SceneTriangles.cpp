@@ -112,11 +112,14 @@ void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   const SbMatrix& textureMatrix = action->getTextureMatrix();
   auto& [out, shapes] = collector.byTexture[texture];
   shapes.push_back(collector.shape);
+  SbBox3f corners;
+  bool transparent = false;
   for (const SoPrimitiveVertex* v : {v1, v2, v3}) {
     TriangleVertex vertex{};
     SbVec3f p;
     model.multVecMatrix(v->getPoint(), p);
     collector.result.bounds.extendBy(p);
+    corners.extendBy(p);
     SbColor ambient, diffuse, specular, emission;
     float shininess = 0.0f, transparency = 0.0f;
     action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
@@ -133,12 +136,14 @@ void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
     vertex.texCoord[1] = tc[1] / w;
     const TextureImage* image = texture >= 0 ? &collector.result.textures[texture] : nullptr;
     if (vertex.colour[3] < 1.0f || (image != nullptr && !image->opaque)) {
+      transparent = true;
       collector.result.hasTransparent = true;
       if (!isGrey(diffuse[0], diffuse[1], diffuse[2]) || (image != nullptr && !image->grey))
         collector.result.hasColouredTransparent = true;
     }
     out.push_back(vertex);
   }
+  if (transparent) collector.result.transparentBounds.extendBy(corners);
 }
 
 void notTriangles(Collector& collector, SoCallbackAction* action) {

@@ -56,6 +56,9 @@ struct SceneTriangles {
   std::vector<std::uint32_t> shapes;
   std::vector<TextureImage> textures;
   SbBox3f bounds;
+  // The triangles that may let light through (a corner not opaque, or a texture with alpha):
+  // what an opacity map's slices must span (opaque casters have a depth of their own there).
+  SbBox3f transparentBounds;
   bool hasTransparent = false;          // some triangle lets light through
   bool hasColouredTransparent = false;  // ... and is not grey
   // Shapes that should cast but that Coin turns into lines or points (SoLineSet, SoPointSet,

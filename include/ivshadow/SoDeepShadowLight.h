@@ -54,14 +54,15 @@
   colour, with one warning per light.
 
   With `method OPACITY_MAP` the map is an opacity map (after seeds/002): `slices` uniform
-  slices per face between the map's near and far distance, each holding the light its
-  transparent surfaces absorb (per channel) and the distance of its first surface, and one
-  depth per texel of the nearest opaque surface, drawn with one draw of the casters per face
-  and 7 slices whatever the scene's depth complexity. A receiver takes the absorption of the
-  slices before it, and of a slice it lies in or just behind in proportion to its distance
-  past that slice's first surface (up to one slice's depth): exact for a receiver at least
-  one slice behind each transparent caster, softer nearer than that. Opaque casters shadow
-  exactly, as in a shadow map. maxLayers does not apply.
+  slices per face over the transparent casters' distances from the light, each holding the
+  light its transparent surfaces absorb (per channel) and the distance of its first surface,
+  and one depth per texel of the nearest opaque surface. Each face draws the casters once for
+  every 7 slices (one draw at the default 4), however many surfaces lie behind one another. A
+  receiver takes the absorption of the slices before it, and of a slice it lies in or just
+  behind in proportion to its distance past that slice's first surface (up to one slice's
+  depth): exact for a receiver at least one slice behind each transparent caster, softer
+  nearer than that. Opaque casters shadow exactly, as in a shadow map. maxLayers does not
+  apply.
 
   Out-of-range values are clamped when the map is built, with one warning naming the node and
   the field.

@@ -41,10 +41,11 @@ void expectPicture(const ShadowScene& scene, const ExpectedImage& picture) {
 }
 
 // The catalogue's light is 1 above the floor and its filters at heights 0.5 and 0.25: the
-// slices divide the fitted distances along the cube's axes (the casters' nearest, 0.5, to
-// their farthest, the floor's corners at 1 along -z), 32 slices 0.016 deep, while the nearest
-// receiver lies 0.25 behind the filter above it (at least 0.14 along a face's axis when the
-// content is turned into a cube corner): every filter counts fully, and the map is exact.
+// slices divide the transparent filters' distances along the cube's axes (0.5 to 0.75 along
+// -z for the stacked pair), and the floor lies beyond them all, a quarter of the distance or
+// more behind the nearest filter (at least 0.14 along a face's axis when the content is
+// turned into a cube corner): every filter counts fully, and the map is exact. 32 slices, so
+// that the filters within one case are also in slices of their own.
 class OpacityMapAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
 
 TEST_P(OpacityMapAnalytic, MatchesThePictureWithEnoughSlices) {
@@ -84,12 +85,23 @@ TEST(OpacityMap, AReceiverNearerThanASliceGetsThatShareOfTheAbsorption) {
   }
 }
 
+TEST(OpacityMap, AFloorBeyondEveryPaneCountsThemAllWithOneSlice) {
+  // The slices span the transparent casters only (0.5 to 0.75 from the light along -z), not
+  // the opaque floor they shadow: the floor lies past their one slice and takes both filters
+  // whole. Had the slice spanned the floor too (to 1 and beyond), the floor would lie within
+  // it and get about half their absorption.
+  ShadowScene scene;
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene = withOpacityMap(scene, 1);
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
+}
+
 TEST(OpacityMap, AnOpaqueCasterShadowsSharplyWithOneSlice) {
   // An opaque square 0.1 above the floor, lit along (1, 0, -1): its shadow is the square moved
-  // 0.1 along x, seen beside it where 0.3 < x < 0.4. One slice spans the casters' whole depth
-  // along the light, about 1.5, so the floor lies a tenth of it behind the square: had the
-  // square's absorption, -log 2^-24, gone into the slice, the floor there would get
-  // exp(-0.1 x 16.6) of the light, 0.2, 36 steps. The opaque depth gives it none.
+  // 0.1 along x, seen beside it where 0.3 < x < 0.4. With no transparent caster the one slice
+  // spans the map's depth along the light, about 1.5, so the floor lies a tenth of it behind
+  // the square: had the square's absorption, -log 2^-24, gone into the slice, the floor there
+  // would get exp(-0.1 x 16.6) of the light, 0.2, 36 steps. The opaque depth gives it none.
   const std::string text =
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
@@ -136,9 +148,8 @@ TEST(OpacityMap, CostIsTheSlicesNotTheLayersOfTheScene) {
   // One pane, then eight stacked 0.05 apart between the light and the floor: a deep shadow
   // map peels a layer a pane; the opacity map draws each face once per kOpacitySlicesPerDraw
   // (7) slices whatever the panes, so 1 draw for 4 slices and 5 for 32, and keeps 4 bytes of
-  // opaque depth plus 16 per slice per texel. 32 slices over the fitted 0.49 .. 1.01 are
-  // 0.016 deep: every pane lies in a slice of its own before the floor, which sees all eight
-  // exactly.
+  // opaque depth plus 16 per slice per texel. The floor lies beyond the panes, the last of
+  // their slices: it sees all eight exactly.
   for (const int panes : {1, 8}) {
     ShadowScene scene;
     for (int i = 0; i < panes; ++i) {
