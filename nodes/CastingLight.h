@@ -13,8 +13,6 @@ namespace ivshadow {
 
 // Which lights of a shadow group cast, and from where: the one answer the GL methods and the
 // reference renderer both ask, so that they cannot disagree on it.
-enum class LightKind { Point, Spot, Directional };
-
 struct CastingLight {
   LightKind kind = LightKind::Point;
   // In the coordinates of `toGroup` (the group's): a point or spot light's location; for a

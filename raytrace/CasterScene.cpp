@@ -22,6 +22,9 @@ struct ShadowRayContext : RTCIntersectContext {
   // Surfaces already counted on this ray (shape, ray parameter); kept per thread so that no
   // ray allocates.
   std::vector<std::pair<std::uint32_t, float>>* seen = nullptr;
+  // firstSurface(): transparent hits (ray parameter, transmittance) are collected here and
+  // passed over, opaque ones accepted; Embree then keeps the nearest opaque one.
+  std::vector<std::pair<float, glm::vec3>>* collected = nullptr;
 };
 
 bool alreadySeen(ShadowRayContext& context, std::uint32_t shape, float t) {
@@ -44,10 +47,15 @@ void shadowFilter(const RTCFilterFunctionNArguments* args) {
     return;
   }
   if (isOpaque(colour.a)) {
+    if (context.collected != nullptr) return;  // a candidate for the nearest opaque surface
     context.visibility = glm::vec3(0.0f);
     return;  // accepted: the ray is blocked and traversal stops
   }
-  context.visibility *= transmittance(glm::clamp(colour, 0.0f, 1.0f), context.model);
+  const glm::vec3 through = transmittance(glm::clamp(colour, 0.0f, 1.0f), context.model);
+  if (context.collected != nullptr)
+    context.collected->emplace_back(t, through);
+  else
+    context.visibility *= through;
   args->valid[0] = 0;  // let light through: look for the next surface
 }
 
@@ -187,6 +195,57 @@ glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& nor
   // Embree marks a blocked ray with tfar = -inf (an accepted hit: an opaque surface).
   if (ray.tfar < 0.0f) return glm::vec3(0.0f);
   return context.visibility;
+}
+
+CasterScene::SurfaceHit CasterScene::firstSurface(const glm::vec3& origin,
+                                                  const glm::vec3& direction, float tfar,
+                                                  ShadowColourModel model) const {
+  SurfaceHit result;
+  if (casters_.vertices.empty()) return result;
+  thread_local std::vector<std::pair<std::uint32_t, float>> seen;
+  thread_local std::vector<std::pair<float, glm::vec3>> collected;
+  seen.clear();
+  collected.clear();
+  ShadowRayContext context;
+  rtcInitIntersectContext(&context);
+  context.scene = this;
+  context.model = model;
+  context.seen = &seen;
+  context.collected = &collected;
+  RTCRayHit rayHit{};
+  rayHit.ray.org_x = origin.x;
+  rayHit.ray.org_y = origin.y;
+  rayHit.ray.org_z = origin.z;
+  rayHit.ray.dir_x = direction.x;
+  rayHit.ray.dir_y = direction.y;
+  rayHit.ray.dir_z = direction.z;
+  rayHit.ray.tnear = 0.0f;
+  rayHit.ray.tfar = tfar;
+  rayHit.ray.mask = 0xFFFFFFFFu;
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_.get(), &context, &rayHit);
+  result.hit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+  if (result.hit) {
+    result.t = rayHit.ray.tfar;
+    result.primitive = rayHit.hit.primID;
+    result.u = rayHit.hit.u;
+    result.v = rayHit.hit.v;
+  }
+  // Embree visits candidates in no particular order: only the glass before the opaque
+  // surface filters the light that reaches it.
+  for (const auto& [t, through] : collected)
+    if (!result.hit || t < result.t) result.through *= through;
+  return result;
+}
+
+glm::vec3 CasterScene::geometricNormal(unsigned int primitive) const {
+  const TriangleVertex* v = corners(primitive);
+  const glm::vec3 a(v[0].position[0], v[0].position[1], v[0].position[2]);
+  const glm::vec3 b(v[1].position[0], v[1].position[1], v[1].position[2]);
+  const glm::vec3 c(v[2].position[0], v[2].position[1], v[2].position[2]);
+  const glm::vec3 n = glm::cross(b - a, c - a);
+  const float length = glm::length(n);
+  return length > 0.0f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
 }
 
 }  // namespace ivshadow

@@ -48,6 +48,28 @@ class IVSHADOW_INTERNAL CasterScene {
 
   bool coloured() const { return casters_.hasColouredTransparent; }
 
+  // The first opaque caster along origin + t direction (unit), 0 < t < tfar, and the
+  // transmittance of the transparent casters met before it: where light from a light lands
+  // (raytrace/BounceLights.h). `hit` is false when the ray leaves the casters; `through` is
+  // then the transmittance of all it crossed.
+  struct SurfaceHit {
+    bool hit = false;
+    float t = 0.0f;
+    unsigned int primitive = 0;
+    float u = 0.0f, v = 0.0f;
+    glm::vec3 through{1.0f};
+  };
+  SurfaceHit firstSurface(const glm::vec3& origin, const glm::vec3& direction, float tfar,
+                          ShadowColourModel model) const;
+  // Triangle `primitive`'s unit normal by its corners' order (counter-clockwise: towards the
+  // viewer); (0, 0, 1) for a degenerate one.
+  glm::vec3 geometricNormal(unsigned int primitive) const;
+  // Triangle `primitive`'s corners.
+  const TriangleVertex* corners(unsigned int primitive) const {
+    return &casters_.vertices[std::size_t(primitive) * 3];
+  }
+  const SceneTriangles& triangles() const { return casters_; }
+
   // Colour and opacity of triangle `primitive` at barycentrics (u, v), texture applied.
   glm::vec4 surfaceColour(unsigned int primitive, float u, float v) const;
   std::uint32_t shapeOf(unsigned int primitive) const { return casters_.shapes[primitive]; }

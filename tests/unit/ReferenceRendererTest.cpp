@@ -3,6 +3,7 @@
 #include "raytrace/ReferenceRenderer.h"
 #include "scene/ViewSetup.h"
 #include "tests/gl/ShadowScene.h"
+#include "tests/support/BounceWall.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -95,21 +96,6 @@ TEST(ReferenceRenderer, LinesAndPointsAreNamedAsNotDrawn) {
   EXPECT_NE(result->warnings[0].find("LineSet 'Wire'"), std::string::npos) << result->warnings[0];
 }
 
-// The form factor from a point with unit normal `n` to a polygon wholly in its upper
-// half-space, by Lambert's contour integral: (1 / 2 pi) |sum over the edges of the angle they
-// subtend times n . their plane's unit normal|. Computed here from the geometry alone.
-double formFactor(const glm::dvec3& p, const glm::dvec3& n, const std::vector<glm::dvec3>& polygon) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::dvec3 a = glm::normalize(polygon[i] - p);
-    const glm::dvec3 b = glm::normalize(polygon[(i + 1) % polygon.size()] - p);
-    const glm::dvec3 c = glm::cross(a, b);
-    const double length = glm::length(c);
-    if (length > 0.0) sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, c) / length;
-  }
-  return std::abs(sum) / (2.0 * std::acos(-1.0));
-}
-
 TEST(ReferenceBounce, FormFactorOfTheKnownCases) {
   // A point on the axis of a disc-like large square: the form factor tends to 1 for a huge
   // square right above; half of an infinite half-plane's view: 1/2. The square of the scene
@@ -125,18 +111,6 @@ TEST(ReferenceBounce, FormFactorOfTheKnownCases) {
   EXPECT_NEAR(formFactor({0, 0, 0.5}, {1, 0, 0}, {{0, -1, 0}, {2, -1, 0}, {2, 1, 0}, {0, 1, 0}}),
               2.0 * half, 1e-9);
   EXPECT_NEAR(2.0 * half, 0.31755, 1e-5);
-}
-
-// bounce_wall.iv's wall point seen at a pixel: its orthographic camera at `kEye`, looking
-// along (-cos 15, 0, -sin 15) degrees with +y to the right and (-sin 15, 0, cos 15) up, 2.4
-// units across `size` pixels; the pixel's ray meets the wall's plane x = 0.
-glm::dvec3 wallPoint(int px, int py, int size) {
-  const double down = std::acos(-1.0) / 12.0;  // 15 degrees
-  const glm::dvec3 eye(2.897777, 0.0, 1.276457), right(0, 1, 0),
-      up(-std::sin(down), 0.0, std::cos(down)), view(-std::cos(down), 0.0, -std::sin(down));
-  const double across = (px + 0.5) / size * 2.4 - 1.2, height = 1.2 - (py + 0.5) / size * 2.4;
-  const glm::dvec3 origin = eye + across * right + height * up;
-  return origin + (-origin.x / view.x) * view;
 }
 
 ReferenceResult bounceWall(int size, int samples) {
@@ -160,7 +134,7 @@ TEST(ReferenceBounce, WithoutItTheWallGetsNoLight) {
   EXPECT_EQ(result.bounceRays, 0u);
   for (int py = 0; py < 32; ++py)
     for (int px = 0; px < 32; ++px) {
-      const glm::dvec3 p = wallPoint(px, py, 32);
+      const glm::dvec3 p = bounceWallPoint(px, py, 32);
       if (std::abs(p.y) > 0.9 || p.z < 0.1 || p.z > 0.9) continue;
       for (int c = 0; c < 3; ++c)
         EXPECT_EQ(result.image.rgb[(std::size_t(py) * 32 + std::size_t(px)) * 3 + std::size_t(c)], 0.0f);
@@ -175,15 +149,15 @@ TEST(ReferenceBounce, TheWallShowsTheFloorsTintedLightTimesTheFormFactor) {
   constexpr int kSize = 64;
   const ReferenceResult result = bounceWall(kSize, 1024);
   EXPECT_GT(result.bounceRays, 0u);
-  const std::array<double, 3> through{0.5, 0.25, 0.25};
-  const std::vector<glm::dvec3> floor{{0, -1, 0}, {2, -1, 0}, {2, 1, 0}, {0, 1, 0}};
+  const std::array<double, 3>& through = kBounceWallTransmittance;
+  const std::vector<glm::dvec3> floor = bounceWallFloor();
   std::array<double, 3> sum{}, expectedSum{};
   int pixels = 0;
   double worst = 0.0, squares = 0.0;
   for (int py = 0; py < kSize; ++py)
     for (int px = 0; px < kSize; ++px) {
-      const glm::dvec3 p = wallPoint(px, py, kSize);
-      if (std::abs(p.y) > 0.3 || p.z < 0.3 || p.z > 0.7) continue;
+      const glm::dvec3 p = bounceWallPoint(px, py, kSize);
+      if (!inBounceWallPatch(p)) continue;
       const double f = formFactor(p, {1, 0, 0}, floor);
       ++pixels;
       for (std::size_t c = 0; c < 3; ++c) {
