@@ -32,7 +32,9 @@ GLuint compile(GLenum stage, const std::string& source, std::string& error) {
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    error = std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+    error = std::string(stage == GL_VERTEX_SHADER     ? "vertex"
+                        : stage == GL_COMPUTE_SHADER ? "compute"
+                                                     : "fragment") +
             " shader does not compile: " + infoLog(shader, false);
     glDeleteShader(shader);
     return 0;
@@ -64,6 +66,25 @@ GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fr
   glLinkProgram(program);
   glDeleteShader(vertex);
   glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    error = "program does not link: " + infoLog(program, true);
+    return {};
+  }
+  result.uniforms_ = UniformLocations(program);
+  return result;
+}
+
+GlProgram GlProgram::linkCompute(const std::string& computeSource, std::string& error) {
+  const GLuint compute = compile(GL_COMPUTE_SHADER, computeSource, error);
+  if (compute == 0) return {};
+  GlProgram result;
+  result.program_ = GlProgramObject(glCreateProgram());
+  const GLuint program = result.program_.get();
+  glAttachShader(program, compute);
+  glLinkProgram(program);
+  glDeleteShader(compute);
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {

@@ -18,6 +18,8 @@ class IVSHADOW_INTERNAL GlProgram {
   static GlProgram link(const std::string& vertexSource, const std::string& fragmentSource,
                         std::string& error);
 
+  // The same for a compute program.
+  static GlProgram linkCompute(const std::string& computeSource, std::string& error);
   GlProgram() = default;
   explicit operator bool() const { return static_cast<bool>(program_); }
   unsigned int name() const { return program_.get(); }

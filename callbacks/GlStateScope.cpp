@@ -24,6 +24,7 @@ const std::vector<GLenum>& fragmentSwitches() {
                                     GL_DEPTH_CLAMP,
                                     GL_RASTERIZER_DISCARD,
                                     GL_SAMPLE_ALPHA_TO_COVERAGE,
+                                    GL_PROGRAM_POINT_SIZE,
                                     GL_DEPTH_TEST};
     const int clipPlanes = glInteger(GL_MAX_CLIP_DISTANCES);
     for (int i = 0; i < clipPlanes; ++i) switches.push_back(GL_CLIP_DISTANCE0 + GLenum(i));
@@ -38,6 +39,8 @@ GLenum bindingOf(GLenum target) {
       return GL_TEXTURE_BINDING_2D_ARRAY;
     case GL_TEXTURE_CUBE_MAP:
       return GL_TEXTURE_BINDING_CUBE_MAP;
+    case GL_TEXTURE_BUFFER:
+      return GL_TEXTURE_BINDING_BUFFER;
     default:
       return GL_TEXTURE_BINDING_2D;
   }

@@ -46,6 +46,11 @@ std::string shaderConstantDefines() {
        << "#define IVSHADOW_MAP_CUBE " << int(MapProjection::Cube) << "\n"
        << "#define IVSHADOW_MAP_PERSPECTIVE " << int(MapProjection::Perspective) << "\n"
        << "#define IVSHADOW_MAP_ORTHOGRAPHIC " << int(MapProjection::Orthographic) << "\n"
+       << "#define IVSHADOW_BOUNCE_TEXELS_PER_LIGHT " << kBounceTexelsPerLight << "\n"
+       << "#define IVSHADOW_ISM_POINT_SIZE float(" << kIsmPointSize << ")\n"
+       << "#define IVSHADOW_ISM_EMPTY " << kIsmEmpty << "\n"
+       << "#define IVSHADOW_ISM_BIAS " << kIsmBias << "\n"
+       << "#define IVSHADOW_ISM_NORMAL_OFFSET " << kIsmNormalOffset << "\n"
        << "#define IVSHADOW_COLOUR_MONOCHROME " << int(ShadowColourModel::Monochrome) << "\n"
        << "#define IVSHADOW_COLOUR_SATURATE " << int(ShadowColourModel::Saturate) << "\n"
        << "#define IVSHADOW_COLOUR_POWER " << int(ShadowColourModel::Power) << "\n";

@@ -88,8 +88,11 @@ inline constexpr float kVolumeDepthTolerance = 2e-6f;
 inline constexpr int kMapUnits = 2 * kMaxGlLights;
 inline constexpr int kPeelUnits = 3;
 inline constexpr int kRayUnits = 4;
+// The one-bounce gather's: the imperfect shadow maps' atlas and the virtual point lights.
+inline constexpr int kBounceUnits = 2;
 inline constexpr int kCoinUnitsAtLeast = 4;
-inline constexpr int kTextureUnitsNeeded = kMapUnits + kPeelUnits + kRayUnits + kCoinUnitsAtLeast;
+inline constexpr int kTextureUnitsNeeded =
+    kMapUnits + kPeelUnits + kRayUnits + kBounceUnits + kCoinUnitsAtLeast;
 // First unit of each block in a context with `available` fragment texture units.
 constexpr int firstMapUnit(int available) {
   return available - kMapUnits;
@@ -100,6 +103,12 @@ constexpr int firstPeelUnit(int available) {
 constexpr int firstRayUnit(int available) {
   return firstPeelUnit(available) - kRayUnits;
 }
+constexpr int bounceAtlasUnit(int available) {
+  return firstRayUnit(available) - kBounceUnits;
+}
+constexpr int bounceLightsUnit(int available) {
+  return bounceAtlasUnit(available) + 1;
+}
 // The units of light slot `slot`'s map: its depths and its visibility.
 constexpr int mapDepthUnit(int available, int slot) {
   return firstMapUnit(available) + slot;
@@ -107,6 +116,35 @@ constexpr int mapDepthUnit(int available, int slot) {
 constexpr int mapVisibilityUnit(int available, int slot) {
   return firstMapUnit(available) + kMaxGlLights + slot;
 }
+
+// One bounce (SoTransparentShadowGroup::bounce, callbacks/ImperfectShadowMaps.h). Each virtual
+// point light is three texels of its buffer (position, normal, flux). Its imperfect shadow map
+// is drawn from kIsmPointsPerLight of a pool of kIsmPointPool points on the opaque casters,
+// spread evenly by area; light i takes every (pool / per light)-th point from i modulo that,
+// so neighbouring lights see different points and their errors do not line up (Ritschel et
+// al.). Points are splats of kIsmPointSize texels (seeds/001: 1 leaves holes, 4 overgrows).
+inline constexpr int kBounceTexelsPerLight = 3;
+inline constexpr int kIsmPointPool = 32768;
+inline constexpr int kIsmPointsPerLight = 8192;
+inline constexpr float kIsmPointSize = 3.0f;
+// Pull-push levels over the atlas (seeds/001: the last two push steps come nearest the
+// perfect map); tiles of at least 16 texels stay apart through them.
+inline constexpr int kIsmPullLevels = 2;
+// What a texel holds where no point fell (after pull-push: no surface that way).
+inline constexpr float kIsmEmpty = 1.0e30f;
+// A receiver counts as seen by a light while its distance is within this fraction beyond the
+// distance stored in its direction: a splat's texels hold its point's distance, which along
+// a surface seen at a slant differs from that of the surface in the texel's own direction.
+// Tuned on bounce_wall.iv and a box in front of its wall (tests/gl/BounceTest.cpp).
+inline constexpr float kIsmBias = 0.1f;
+// How far a receiver is moved along its normal towards each light before its map is read, in
+// texels of that map at the receiver's distance (a tile's texel spans 4 / size radians at its
+// centre, 2 / size at its rim): half a splat and more, so the splats of the receiver's own
+// surface do not hide it.
+inline constexpr float kIsmNormalOffset = 1.5f;
+// How far each light's map sits off its surface, as a fraction of the casters' diagonal
+// (seeds/001 moves it 0.01 along the normal): the surface's own points fall behind it.
+inline constexpr float kBounceLiftFraction = 0.002f;
 
 // The constants above (and the colour models of ShadowColourModel) as GLSL #define lines.
 std::string shaderConstantDefines();

@@ -40,6 +40,14 @@ void ShadingUniforms::apply(const UniformLocations& locations) const {
   glProgramUniform1i(program, at("uRayPrevious"), firstRayUnit(textureUnits) + 1);
   glProgramUniform1i(program, at("uRayDepth"), firstRayUnit(textureUnits) + 2);
   glProgramUniform1i(program, at("uRayVisibility"), firstRayUnit(textureUnits) + 3);
+  glProgramUniform1i(program, at("uBounceAtlas"), bounceAtlasUnit(textureUnits));
+  glProgramUniform1i(program, at("uBounceLights"), bounceLightsUnit(textureUnits));
+  glProgramUniform1i(program, at("uBounceCount"), bounceCount);
+  glProgramUniform1i(program, at("uBounceTiles"), bounceTiles);
+  glProgramUniform1i(program, at("uBounceMapSize"), bounceMapSize);
+  glProgramUniform1f(program, at("uBounceLift"), bounceLift);
+  glProgramUniform1f(program, at("uBounceMinDistance"), bounceMinDistance);
+  glProgramUniformMatrix3fv(program, at("uEyeToLocalNormal"), 1, GL_FALSE, eyeToLocalNormal);
 }
 
 void darkenLights(int first) {

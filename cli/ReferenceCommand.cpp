@@ -65,16 +65,16 @@ int runReference(const ReferenceCommandOptions& options) {
       assignment.apply(scene.root.get(), options.scene);
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
-    if (options.bounce > 0) {
-      // Only the groups' light bounces: say so where nothing can.
+    if (options.bounceGiven && options.bounce > 0) {
+      // Only the groups that ask for it bounce: say so where none does.
       bool groups = false;
       forEachNodeOfType<SoTransparentShadowGroup>(scene.root.get(), [&](SoTransparentShadowGroup& g) {
-        groups = groups || g.isActive.getValue();
+        groups = groups || (g.isActive.getValue() && g.bounce.getValue());
       });
       if (!groups)
         std::cerr << options.scene
-                  << ": warning: --bounce: no active TransparentShadowGroup, so no light "
-                     "bounces\n";
+                  << ": warning: --bounce: no active TransparentShadowGroup has bounce TRUE, so "
+                     "no light bounces\n";
     }
 
     ReferenceOptions reference;
@@ -117,7 +117,8 @@ int runReference(const ReferenceCommandOptions& options) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::cout << "wrote " << options.output << " (" << size.toString() << ", " << result->triangles
               << " triangles, " << result->shadowRays << " shadow rays, "
-              << (options.bounce > 0 ? std::to_string(result->bounceRays) + " bounce rays, " : "")
+              << (result->bounceRays > 0 ? std::to_string(result->bounceRays) + " bounce rays, "
+                                         : "")
               << ms << " ms)\n";
     return 0;
   });

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "raytrace/ReferenceRenderer.h"
+
 #include <string>
 #include <vector>
 
@@ -12,7 +14,10 @@ struct ReferenceCommandOptions {
   std::string size = "800x600";
   std::vector<std::string> assignments;  // NAME.field=VALUE
   int threads = 0;
-  int bounce = 0;  // rays per point of one diffuse bounce (ReferenceOptions::bounceSamples)
+  // Rays per point of one diffuse bounce in groups with bounce TRUE
+  // (ReferenceOptions::bounceSamples); bounceGiven when the command line set it.
+  int bounce = ReferenceOptions::kDefaultBounceSamples;
+  bool bounceGiven = false;
 };
 
 // `ivshadow reference`: the exact CPU picture (raytrace/ReferenceRenderer.h). Exit 0, 2 on

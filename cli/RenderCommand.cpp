@@ -100,6 +100,11 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["bvh_bytes"] = shadows.bvhBytes;
   stats["bvh_builds"] = shadows.bvhBuilds;
   stats["bvh_refits"] = shadows.bvhRefits;
+  stats["bounce_lights"] = shadows.bounceLights;
+  stats["bounce_samples"] = shadows.bounceSamples;
+  stats["passes"]["bounce_place_ms"] = shadows.bouncePlaceMs;
+  stats["passes"]["bounce_map_ms"] = shadows.bounceMapMs;
+  stats["bounce_bytes"] = shadows.bounceBytes;
   stats["dsm_layers_used"] = lights;
   stats["dsm_bytes"] = bytes;
   // Peeling runs every frame; these are the last frame's figures, summed over separators.

@@ -165,11 +165,12 @@ int main(int argc, char** argv) {
       ->add_option("--set", reference.assignments,
                    "Assign NAME.field=VALUE (Inventor syntax) to DEF-named nodes")
       ->allow_extra_args(false);
-  referenceCommand
-      ->add_option("--bounce", reference.bounce,
-                   "One diffuse bounce of the groups' casting lights: rays per point, rounded up "
-                   "to a square (0: none)")
-      ->capture_default_str();
+  CLI::Option* bounceOption =
+      referenceCommand
+          ->add_option("--bounce", reference.bounce,
+                       "Rays per point of the one diffuse bounce of groups with bounce TRUE, "
+                       "rounded up to a square (0: no bounce)")
+          ->capture_default_str();
   referenceCommand->add_option("--threads", reference.threads, "Worker threads (0: every core)")
       ->capture_default_str();
 
@@ -236,7 +237,10 @@ int main(int argc, char** argv) {
   if (variantsCommand->parsed()) return ivshadow::runVariants(variants);
   if (mergeCommand->parsed()) return ivshadow::runVariantsMerge(merge);
   if (compareCommand->parsed()) return ivshadow::runCompare(compare);
-  if (referenceCommand->parsed()) return ivshadow::runReference(reference);
+  if (referenceCommand->parsed()) {
+    reference.bounceGiven = bounceOption->count() > 0;
+    return ivshadow::runReference(reference);
+  }
   if (tradeCommand->parsed()) return ivshadow::runTrade(trade);
   return ivshadow::runViewer(view, argv[0]);
 }

@@ -119,6 +119,25 @@ DeepShadowSettings castingSettings(SoLight& light, SoTransparentShadowGroup& gro
   return resolveFields(group, maxTextureSize);
 }
 
+BounceSettings resolveBounce(SoTransparentShadowGroup& group) {
+  BounceSettings s;
+  s.on = group.bounce.getValue() == TRUE;
+  // Only a group that bounces is told about the other two.
+  const auto clamp = [&](const char* field, int value, int low, int high) {
+    return s.on ? clampInt(group, field, value, low, high) : std::clamp(value, low, high);
+  };
+  s.lights = clamp("bounceLights", group.bounceLights.getValue(), 1, kMaxBounceLights);
+  const int size =
+      clamp("bounceMapSize", group.bounceMapSize.getValue(), kMinBounceMapSize, kMaxBounceMapSize);
+  s.mapSize = kMinBounceMapSize;
+  while (s.mapSize * 2 <= size) s.mapSize *= 2;
+  if (s.on && s.mapSize != size)
+    warnOnce(group, "bounceMapSize",
+             "is " + std::to_string(size) + ", not a power of two; using " +
+                 std::to_string(s.mapSize));
+  return s;
+}
+
 ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {
   const bool coloured = shadowColor == SoDeepShadowLight::COLORED ||
                         (shadowColor == SoDeepShadowLight::AUTO && colouredCasters);

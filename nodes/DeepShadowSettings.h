@@ -15,6 +15,24 @@ namespace ivshadow {
 // implementation, one draw per face (kOpacitySlicesPerDraw).
 inline constexpr int kDefaultOpacitySlices = 4;
 
+// One bounce of the group's casting lights (SoTransparentShadowGroup::bounce, seeds/001): the
+// defaults are the document's, 256 virtual point lights with 128 x 128 imperfect shadow maps.
+inline constexpr int kDefaultBounceLights = 256;
+inline constexpr int kMaxBounceLights = 1024;
+inline constexpr int kDefaultBounceMapSize = 128;
+inline constexpr int kMinBounceMapSize = 16;
+inline constexpr int kMaxBounceMapSize = 256;
+
+// The group's bounce fields after clamping (the map size to a power of two, so that the
+// atlas's tiles stay apart through the pull-push levels).
+struct BounceSettings {
+  bool on = false;
+  int lights = kDefaultBounceLights;
+  int mapSize = kDefaultBounceMapSize;
+};
+// Reads and clamps them, each field out of range reported once, as resolveSettings does.
+IVSHADOW_INTERNAL BounceSettings resolveBounce(SoTransparentShadowGroup& group);
+
 // The fields of a SoDeepShadowLight after clamping to what the map builder accepts.
 struct DeepShadowSettings {
   int resolution = 512;

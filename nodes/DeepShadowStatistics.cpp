@@ -44,6 +44,11 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.rayCaptures += stats.rayCaptures;
     total.bvhBuilds += stats.bvhBuilds;
     total.bvhRefits += stats.bvhRefits;
+    total.bounceLights += stats.bounceLights;
+    total.bounceSamples += stats.bounceSamples;
+    total.bouncePlaceMs += stats.bouncePlaceMs;
+    total.bounceMapMs += stats.bounceMapMs;
+    total.bounceBytes += stats.bounceBytes;
   });
   return total;
 }

@@ -27,7 +27,7 @@ struct VariantSource {
 };
 
 VariantSource sourceOf(ShadingVariant variant) {
-  const std::string lit = std::string(glsl::kLightingGlsl);
+  const std::string lit = std::string(glsl::kBounceCommonGlsl) + glsl::kLightingGlsl;
   const std::vector<const char*> lighting = {"coin_light_model", "coin_two_sided_lighting",
                                              "coin_texunit0_model"};
   const std::vector<const char*> texture = {"coin_texunit0_model"};
@@ -86,6 +86,7 @@ std::string ShadingFeatures::defines() const {
   if (deep || (maps && !opacity)) text += "#define IVSHADOW_WITH_DEEP_MAPS\n";
   if (opacity || (maps && !deep)) text += "#define IVSHADOW_WITH_OPACITY_MAPS\n";
   if (fog) text += "#define IVSHADOW_WITH_FOG\n";
+  if (bounce) text += "#define IVSHADOW_WITH_BOUNCE\n";
   return text;
 }
 

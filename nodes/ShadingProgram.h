@@ -40,12 +40,13 @@ struct ShadingFeatures {
   bool nearest = false;   // some map is read at the nearest texel (filter NONE)
   bool filtered = false;  // some map is filtered over a texel square (PCF; 1 wide: bilinear)
   bool fog = false;       // the state has fog (SoEnvironment fogType other than NONE)
+  bool bounce = false;    // the group's light bounces once (SoTransparentShadowGroup::bounce)
 
   // A distinct number per combination, 0 for none, below kKeys.
-  static constexpr int kKeys = 128;
+  static constexpr int kKeys = 256;
   int key() const {
     return int(maps) | int(rays) << 1 | int(nearest) << 2 | int(filtered) << 3 | int(fog) << 4 |
-           int(deep) << 5 | int(opacity) << 6;
+           int(deep) << 5 | int(opacity) << 6 | int(bounce) << 7;
   }
   // The #defines that compile the parts in (callbacks/glsl/lighting.glsl).
   std::string defines() const;

@@ -1,6 +1,7 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 
 #include "ivshadow/SoDeepShadowLight.h"
+#include "nodes/DeepShadowSettings.h"
 #include "nodes/ShadowFields.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparentShadowGroupImpl.h"
@@ -44,6 +45,9 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, PEELED);
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, COIN_BLENDING);
   SO_NODE_SET_SF_ENUM_TYPE(transparency, Transparency);
+  SO_NODE_ADD_FIELD(bounce, (FALSE));
+  SO_NODE_ADD_FIELD(bounceLights, (ivshadow::kDefaultBounceLights));
+  SO_NODE_ADD_FIELD(bounceMapSize, (ivshadow::kDefaultBounceMapSize));
 }
 
 SoTransparentShadowGroup::~SoTransparentShadowGroup() {

@@ -3,6 +3,7 @@
 #include "callbacks/DeepShadowPass.h"
 #include "callbacks/GlCapabilities.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/ImperfectShadowMaps.h"
 #include "callbacks/PeelPass.h"
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
@@ -246,6 +247,66 @@ void TransparentShadowGroupImpl::refitToView(SoGLRenderAction* action, Context& 
   if (rebuilt) finishBuild(action, context, start);
 }
 
+bool TransparentShadowGroupImpl::updateBounce(SoGLRenderAction* action, Context& context) {
+  auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
+  BounceSettings settings = resolveBounce(group);
+  if (!settings.on || contents_.lights().empty()) {
+    bounce_.clear();
+    bouncePlaced_ = 0;
+    context.bounceMaps.reset();
+    context.bounceVersion = 0;
+    statistics_.bounceLights = statistics_.bounceSamples = 0;
+    statistics_.bounceBytes = 0;
+    return false;
+  }
+  // The atlas within the maps' budget: smaller tiles, said once.
+  const std::uint64_t budget = mapMemoryBudget(context.softwareRenderer);
+  const int asked = settings.mapSize;
+  while (settings.mapSize > kMinBounceMapSize &&
+         ImperfectShadowMaps::bytesFor(settings.lights, settings.mapSize) > budget)
+    settings.mapSize /= 2;
+  if (settings.mapSize != asked && firstWarning(owner_, "bounce budget"))
+    SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                              "%s: %d bounce maps of %d texels exceed the map memory budget; "
+                              "using %d texels",
+                              describeNode(owner_).c_str(), settings.lights, asked,
+                              settings.mapSize);
+  if (bouncePlaced_ != contents_.mapsVersion() || bounce_.mapSize() != settings.mapSize) {
+    bouncePlaced_ = contents_.mapsVersion();
+    // The lights are placed with Embree whatever the lights' methods.
+    const SoLight* first = contents_.lights().front().light;
+    if (rayCasters_.ready(contents_.casters(), contents_.castersVersion(), first, lightName(*first),
+                          "the group renders without its bounce", statistics_))
+      bounce_.place(settings, contents_, context.maps, *rayCasters_.scene(),
+                    contents_.castersVersion(), action->getState(), statistics_);
+    else
+      bounce_.clear();
+  }
+  if (context.bounceVersion != bounce_.version()) {
+    context.bounceVersion = bounce_.version();
+    if (!context.bounceMaps) context.bounceMaps = std::make_unique<ImperfectShadowMaps>();
+    BounceMapRequest request;
+    request.lights = &bounce_.packed();
+    request.lightCount = int(bounce_.lights().lights.size());
+    request.points = &bounce_.points();
+    request.pointsChanged = true;
+    request.mapSize = bounce_.mapSize();
+    request.lift = bounce_.lift();
+    context.bounceTimer.start();
+    const std::string failure = context.bounceMaps->build(request);
+    context.bounceTimer.stop();
+    SoGLLazyElement::getInstance(action->getState())
+        ->reset(action->getState(), SoLazyElement::ALL_MASK);
+    statistics_.bounceMapMs = context.bounceTimer.elapsedMs();
+    statistics_.bounceBytes = context.bounceMaps->bytes();
+    if (!failure.empty() && firstWarning(owner_, "no bounce: " + failure))
+      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                "%s: %s; rendering without the bounce",
+                                describeNode(owner_).c_str(), failure.c_str());
+  }
+  return context.bounceMaps && context.bounceMaps->built();
+}
+
 void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool inPath, bool peel,
                                                Context& context) {
   if (peel && !context.peelTried) {
@@ -324,9 +385,12 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   else
     refitToView(action, context);
 
+  const bool bounced = updateBounce(action, context);
+
   state->push();
-  ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits(),
-                                             featuresOf(context.maps, contents_.lights().size()));
+  ShadingFeatures features = featuresOf(context.maps, contents_.lights().size());
+  features.bounce = bounced;
+  ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits(), features);
   if (uniforms == nullptr) {
     // Coin bound no program for the shading variant. When it failed to compile or link Coin
     // has said why; when it declined to draw it at all it says nothing, and the group would
@@ -379,6 +443,20 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     uniforms->mapTexelScale[slot * 2 + 1] = map.frame.texelScale.y;
     if (map.rays) uniforms->mapRay[slot] = rayCount++;
   }
+  if (bounced) {
+    uniforms->bounceCount = int(bounce_.lights().lights.size());
+    uniforms->bounceTiles = context.bounceMaps->tiles();
+    uniforms->bounceMapSize = bounce_.mapSize();
+    uniforms->bounceLift = bounce_.lift();
+    uniforms->bounceMinDistance = bounce_.lights().minDistance;
+    // Normals go to the group's coordinates by the transpose of the group-to-eye matrix's
+    // inverse's inverse: its own transpose (SbMatrix rows are GL's columns).
+    for (int row = 0; row < 3; ++row)
+      for (int column = 0; column < 3; ++column)
+        uniforms->eyeToLocalNormal[column * 3 + row] = toEye[row][column];
+  } else {
+    uniforms->bounceCount = 0;
+  }
   shading_.apply();
   if (rayCount > 0) {
     if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
@@ -400,6 +478,9 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(context.maps.size()));
     const std::unique_ptr<GlStateScope> traced =
         rayCount > 0 ? context.rays->pass().bind() : std::unique_ptr<GlStateScope>();
+    const std::unique_ptr<GlStateScope> bouncing =
+        bounced ? context.bounceMaps->bind(context.pass->textureUnits())
+                : std::unique_ptr<GlStateScope>();
     SoShapeStyleElement::setShadowsRendering(state, TRUE);
     // A peeling separator below shades its layers with this group's program and maps.
     ShadowGroupElement::setActiveGroup(state, &shading_);

@@ -6,6 +6,7 @@
 #include "ivshadow/Export.h"
 #include "ivshadow/PeelStatistics.h"
 #include "nodes/DeepShadowSettings.h"
+#include "nodes/GroupBounce.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
 #include "nodes/MapMethod.h"
@@ -36,6 +37,7 @@ class SoSeparator;
 namespace ivshadow {
 
 class DeepShadowPass;
+class ImperfectShadowMaps;
 class PeelPass;
 class RayMethod;
 
@@ -74,6 +76,9 @@ class TransparentShadowGroupImpl {
     bool peelTried = false;          // made, or failed with a warning
     GlPassTimer buildTimer;
     GlPassTimer shadingTimer;
+    std::unique_ptr<ImperfectShadowMaps> bounceMaps;  // with bounce TRUE
+    std::uint64_t bounceVersion = 0;                  // GroupBounce::version() drawn
+    GlPassTimer bounceTimer;
   };
 
   void buildMaps(SoGLRenderAction* action, Context& context);
@@ -90,6 +95,9 @@ class TransparentShadowGroupImpl {
   ViewCorners view(SoGLRenderAction* action) const;
   // Rebuilds the maps of directional lights that no longer serve the view (mapServesView).
   void refitToView(SoGLRenderAction* action, Context& context);
+  // Brings the bounce's lights (per group) and this context's maps of them up to date; true
+  // when the shading is to add the bounce.
+  bool updateBounce(SoGLRenderAction* action, Context& context);
   // Draws the children in the shading pass: peeled, or as Coin blends them.
   void shadeChildren(SoGLRenderAction* action, bool inPath, bool peel, Context& context);
   SoSeparator* owner_;
@@ -100,6 +108,8 @@ class TransparentShadowGroupImpl {
   DeepShadowStatistics statistics_;
   PeelStatistics peelStatistics_;
   RayCasters rayCasters_;
+  GroupBounce bounce_;
+  std::uint64_t bouncePlaced_ = 0;  // the mapsVersion the bounce's lights were placed for
   std::set<const SoLight*> methodLogged_;  // lights whose AUTO choice was said
 };
 

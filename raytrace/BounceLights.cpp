@@ -1,6 +1,7 @@
 #include "raytrace/BounceLights.h"
 
 #include "raytrace/CasterScene.h"
+#include "raytrace/SurfaceOptics.h"
 
 #include <glm/geometric.hpp>
 
@@ -138,6 +139,45 @@ BounceLights placeBounceLights(const CasterScene& casters, const std::vector<Bou
   if (!result.lights.empty())
     result.minDistance = float(std::sqrt(litArea / double(result.lights.size())));
   return result;
+}
+
+std::vector<float> opaquePointPool(const CasterScene& casters, int count) {
+  const SceneTriangles& triangles = casters.triangles();
+  std::vector<double> cumulative;
+  std::vector<unsigned int> opaque;
+  double total = 0.0;
+  for (unsigned int i = 0; i < triangles.triangleCount(); ++i) {
+    if (!isOpaque(casters.surfaceColour(i, 1.0f / 3.0f, 1.0f / 3.0f).a)) continue;
+    const TriangleVertex* v = casters.corners(i);
+    const glm::vec3 a(v[0].position[0], v[0].position[1], v[0].position[2]);
+    const glm::vec3 b(v[1].position[0], v[1].position[1], v[1].position[2]);
+    const glm::vec3 c(v[2].position[0], v[2].position[1], v[2].position[2]);
+    const double area = 0.5 * double(glm::length(glm::cross(b - a, c - a)));
+    if (!(area > 0.0)) continue;
+    total += area;
+    cumulative.push_back(total);
+    opaque.push_back(i);
+  }
+  std::vector<float> points;
+  if (opaque.empty() || count <= 0) return points;
+  points.reserve(std::size_t(count) * 4);
+  for (int k = 0; k < count; ++k) {
+    const double at = (double(k) + 0.5) / double(count) * total;
+    const std::size_t index = std::size_t(
+        std::lower_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin());
+    const TriangleVertex* v = casters.corners(opaque[std::min(index, opaque.size() - 1)]);
+    float u, w;
+    r2(k, u, w);
+    if (u + w > 1.0f) {  // the square's other half folds onto the triangle
+      u = 1.0f - u;
+      w = 1.0f - w;
+    }
+    for (int axis = 0; axis < 3; ++axis)
+      points.push_back((1.0f - u - w) * v[0].position[axis] + u * v[1].position[axis] +
+                       w * v[2].position[axis]);
+    points.push_back(1.0f);
+  }
+  return points;
 }
 
 glm::vec3 gatherBounce(const BounceLights& lights, const glm::vec3& x, const glm::vec3& n,

@@ -54,6 +54,14 @@ IVSHADOW_INTERNAL BounceLights placeBounceLights(const CasterScene& casters,
                                                  const std::vector<BounceSource>& sources,
                                                  int count);
 
+// `count` points on the opaque casters of `casters` (a triangle counts as opaque where it is
+// at its centroid), spread by area: point k lies on the triangle that holds (k + 1/2) / count
+// of the total area, at a place on it given by an evenly spread sequence. As x, y, z, 1 floats;
+// empty when no caster is opaque. What the imperfect shadow maps are drawn from: consecutive
+// points lie on neighbouring parts of the area's order, so every m-th point from any start
+// covers all of it.
+IVSHADOW_INTERNAL std::vector<float> opaquePointPool(const CasterScene& casters, int count);
+
 // The one-bounce irradiance factor at `x` (unit normal `n`): (1 / pi) sum_i flux_i
 // max(n . w, 0) max(n_i . -w, 0) / max(r^2, minDistance^2), w the unit direction from x to
 // light i at distance r; times kd(x) it is the bounced light Coin's lighting would add. With

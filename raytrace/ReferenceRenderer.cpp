@@ -82,6 +82,7 @@ struct Group {
   std::vector<int> lights;         // every light turned on in the group's subgraph
   std::vector<int> casting;        // those that cast (nodes/CastingLight.h), as many as GL's
   std::unique_ptr<CasterScene> casters;
+  bool bounce = false;  // its bounce field
 };
 
 struct Material {
@@ -168,6 +169,7 @@ SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, cons
     return SoCallbackAction::CONTINUE;
   Group group;
   group.node = node;
+  group.bounce = static_cast<const SoTransparentShadowGroup*>(node)->bounce.getValue() == TRUE;
   group.path = CoinRef<SoPath>(action->getCurPath()->copy());
   group.toWorld = action->getModelMatrix();
   group.outsideLights = currentLights(data, action->getState());
@@ -545,7 +547,7 @@ class Tracer {
         lit += contribution(data_.lights[std::size_t(index)], tri, group, normal, position, diffuse,
                             material, rays);
     }
-    if (group != nullptr && options_.bounceSamples > 0)
+    if (group != nullptr && group->bounce && options_.bounceSamples > 0)
       lit += diffuse * indirect(*group, tri, normal, position, rays);
     return glm::clamp(lit, 0.0f, 1.0f);
   }

@@ -32,11 +32,13 @@ struct ReferenceOptions {
   const std::atomic<bool>* cancel = nullptr;
   // Rows finished so far, updated as the workers go; may be read from another thread.
   std::atomic<int>* rowsDone = nullptr;
-  // Above 0: one diffuse bounce of the casting lights of each active SoTransparentShadowGroup
-  // (seeds/001's indirect light), from this many cosine-weighted rays per shaded point
-  // (rounded up to a square, stratified): light that reached an opaque surface of the group
-  // directly, through its glass and tinted by it, lights the group's surfaces it faces.
-  int bounceSamples = 0;
+  // One diffuse bounce of the casting lights of each active SoTransparentShadowGroup whose
+  // bounce field is TRUE (seeds/001's indirect light), from this many cosine-weighted rays
+  // per shaded point (rounded up to a square, stratified; 0: no bounce): light that reached
+  // an opaque surface of the group directly, through its glass and tinted by it, lights the
+  // group's surfaces it faces.
+  int bounceSamples = kDefaultBounceSamples;
+  static constexpr int kDefaultBounceSamples = 256;
 };
 
 struct ReferenceResult {

@@ -294,6 +294,55 @@ vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColou
   return attenuation * colour;
 }
 
+#ifdef IVSHADOW_WITH_BOUNCE
+// One diffuse bounce (SoTransparentShadowGroup::bounce): the virtual point lights
+// (raytrace/BounceLights.h; position, normal, flux per light in uBounceLights) that see the
+// receiver in their imperfect shadow maps (callbacks/ImperfectShadowMaps.h), summed as
+// (1 / pi) flux cos_x cos_i / max(r^2, uBounceMinDistance^2), in the group's coordinates.
+uniform samplerBuffer uBounceLights;
+uniform sampler2D uBounceAtlas;
+uniform int uBounceCount;
+uniform int uBounceTiles;
+uniform int uBounceMapSize;
+uniform float uBounceLift;
+uniform float uBounceMinDistance;
+uniform mat3 uEyeToLocalNormal;
+
+vec3 bouncedLight(vec3 x, vec3 n) {
+  vec3 sum = vec3(0.0);
+  float minSquared = uBounceMinDistance * uBounceMinDistance;
+  for (int i = 0; i < uBounceCount; ++i) {
+    int first = IVSHADOW_BOUNCE_TEXELS_PER_LIGHT * i;
+    vec3 y = texelFetch(uBounceLights, first).xyz;
+    vec3 ny = texelFetch(uBounceLights, first + 1).xyz;
+    vec3 towards = y - x;
+    float squared = dot(towards, towards);
+    if (!(squared > 0.0)) continue;
+    vec3 w = towards * inversesqrt(squared);
+    float receiving = dot(n, w);
+    float sending = -dot(ny, w);
+    if (receiving <= 0.0 || sending <= 0.0) continue;
+    // The receiver as the light's map sees it: its direction and distance from the lifted
+    // light; hidden when a surface lies nearer that way.
+    // The receiver is moved off its surface towards the light by kIsmNormalOffset texels of
+    // the map at its distance (normal-offset shadow mapping): the splats of its own surface
+    // around it, seen at a slant, then lie behind it rather than in front.
+    float reach = sqrt(squared);
+    vec3 moved = x + n * (IVSHADOW_ISM_NORMAL_OFFSET * 4.0 / float(uBounceMapSize) * reach);
+    vec3 d = moved - (y + uBounceLift * ny);
+    float distance = length(d);
+    vec3 l = bounceLocal(ny, d / distance);
+    if (l.z <= 0.0) continue;
+    ivec2 texel = bounceTile(i, uBounceTiles, uBounceMapSize) +
+                  clamp(ivec2(bounceTexel(l, uBounceMapSize)), ivec2(0), ivec2(uBounceMapSize - 1));
+    float stored = texelFetch(uBounceAtlas, texel, 0).r;
+    if (distance > stored * (1.0 + IVSHADOW_ISM_BIAS)) continue;
+    sum += texelFetch(uBounceLights, first + 2).rgb * (receiving * sending / max(squared, minSquared));
+  }
+  return sum * 0.318309886;  // 1 / pi
+}
+#endif
+
 vec4 shade(vec4 texel) {
   vec4 colour = gl_Color;
   if (coin_light_model != 0) {
@@ -304,6 +353,9 @@ vec4 shade(vec4 texel) {
                gl_LightModel.ambient.rgb * gl_FrontMaterial.ambient.rgb;
     for (int i = 0; i < uLightCount; ++i)
       lit += lightContribution(i, normal, localPosition, gl_Color.rgb);
+#ifdef IVSHADOW_WITH_BOUNCE
+    lit += gl_Color.rgb * bouncedLight(localPosition, normalize(uEyeToLocalNormal * normal));
+#endif
     colour = vec4(clamp(lit, 0.0, 1.0), gl_Color.a);
   }
   if (coin_texunit0_model != kTextureNone)

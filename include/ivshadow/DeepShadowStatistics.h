@@ -60,6 +60,12 @@ struct DeepShadowStatistics {
   int rayCaptures = 0;           // frames that captured the visible surfaces for their trace
   int bvhBuilds = 0;             // times the casters' Embree scene was built
   int bvhRefits = 0;             // times it was refitted instead (the same triangles moved)
+  // One bounce (SoTransparentShadowGroup::bounce), its last placement and map build.
+  int bounceLights = 0;          // virtual point lights placed
+  int bounceSamples = 0;         // ... of samples traced from the lights (the rest met nothing)
+  double bouncePlaceMs = 0.0;    // placing them and the point pool, on the CPU
+  double bounceMapMs = 0.0;      // drawing their imperfect shadow maps, wall time to glFinish
+  std::uint64_t bounceBytes = 0; // the maps' atlas, the lights and the point pool in GL
 };
 
 }  // namespace ivshadow

@@ -44,6 +44,16 @@ struct PeelStatistics;
   coordinates, so transforms above move both. A change above the group is seen in the next
   frame (see docs/DEEP_SHADOWS.md, "State inherited from above the group").
 
+  With `bounce TRUE` the casting lights' light also reaches what they do not light directly,
+  after one diffuse reflection off an opaque caster, coloured by the transparent casters it
+  crossed on the way there (light through red glass onto a white floor puts red on the wall
+  beside it). It is computed as seeds/001 does: `bounceLights` virtual point lights are placed
+  where the lights land (traced with Embree on the CPU, whatever the method), each with an
+  imperfect shadow map (a point-sampled view of the opaque casters, holes filled by
+  pull-push), and every shaded point adds their diffuse light. Transparent casters filter the
+  light on its way to the bounce but not after it, and do not reflect (docs/DEEP_SHADOWS.md,
+  "One bounce").
+
   Transparent surfaces in the subgraph are composited in exact per-pixel depth order by
   default (transparency PEELED): the children are drawn once for the opaque surfaces and
   then peeled two layers per pass (dual depth peeling, as SoPeelingSeparator's DUAL), every
@@ -79,6 +89,11 @@ struct PeelStatistics;
         filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)
         transparency PEELED      # PEELED: transparent surfaces in exact depth order per
                                  #   pixel; COIN_BLENDING: Coin's transparency type
+        bounce FALSE         # TRUE: one diffuse bounce of the casting lights' light, tinted by
+                             #   the glass it passed (virtual point lights, seeds/001)
+        bounceLights 256     # bounce: virtual point lights, 1 .. 1024
+        bounceMapSize 128    # bounce: each one's imperfect shadow map, 16 .. 256 texels, a
+                             #   power of two
     }
   \endcode
 */
@@ -113,6 +128,9 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   SoSFEnum precision;
   SoSFEnum filter;
   SoSFInt32 filterSize;
+  SoSFBool bounce;
+  SoSFInt32 bounceLights;
+  SoSFInt32 bounceMapSize;
 
   //! What the last render in any context did: per light, layers used per face, map bytes,
   //! build time, and how many times the maps were rebuilt since the group was created.

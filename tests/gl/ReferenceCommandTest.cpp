@@ -68,12 +68,13 @@ TEST(ReferenceCommand, BadInputExitsTwoWithoutOutput) {
 }
 
 TEST(ReferenceCommand, BounceLightsTheWallTheLightMisses) {
-  // bounce_wall.iv's wall is parallel to its only light: black without the bounce, red-tinted
-  // with it (the analytic value is checked in ReferenceBounce.*); the command says how many
-  // bounce rays it traced.
+  // bounce_wall.iv's wall is parallel to its only light: black without the bounce (--bounce
+  // 0), red-tinted with it (its group's bounce TRUE; the analytic value is checked in
+  // ReferenceBounce.*); the command says how many bounce rays it traced.
   const std::string dir = test::outputDir();
-  const test::ProcessResult plain = run({test::ivshadowExe(), "reference", scene("bounce_wall.iv"),
-                                         "-o", dir + "/plain.png", "--size", "32x32"});
+  const test::ProcessResult plain =
+      run({test::ivshadowExe(), "reference", scene("bounce_wall.iv"), "-o", dir + "/plain.png",
+           "--size", "32x32", "--bounce", "0"});
   const test::ProcessResult bounced =
       run({test::ivshadowExe(), "reference", scene("bounce_wall.iv"), "-o", dir + "/bounce.png",
            "--size", "32x32", "--bounce", "64"});
@@ -91,6 +92,19 @@ TEST(ReferenceCommand, BounceLightsTheWallTheLightMisses) {
   EXPECT_NEAR(int(lit[0]), 40, 6);
   EXPECT_NEAR(int(lit[1]), 20, 4);
   EXPECT_NEAR(int(lit[2]), 20, 4);
+}
+
+TEST(ReferenceCommand, BounceSaysWhenNoGroupBounces) {
+  // lit_plane.iv's group has bounce FALSE: --bounce changes nothing, and says so.
+  const std::string dir = test::outputDir();
+  const test::ProcessResult result =
+      run({test::ivshadowExe(), "reference", scene("lit_plane.iv"), "-o", dir + "/a.png",
+           "--size", "16x16", "--bounce", "16"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.err.find("--bounce: no active TransparentShadowGroup has bounce TRUE"),
+            std::string::npos)
+      << result.err;
+  EXPECT_EQ(result.out.find("bounce rays"), std::string::npos) << result.out;
 }
 
 TEST(ReferenceCommand, CtrlCStopsWithoutAPartialFile) {
