@@ -2,7 +2,8 @@
 // headless renderer: frame time with a static scene and with the light moving every frame, at
 // 1k / 100k / 1M triangles and 640 x 480 / 1920 x 1080, the opacity map against its slices,
 // and the casters' Embree build against triangles. Run:
-// build/bin/ivshadow_bench --benchmark_filter='MethodFrame|OpacitySlices|BvhBuild'. RaysAgainstCoin puts
+// build/bin/ivshadow_bench --benchmark_filter='MethodFrame|OpacitySlices|BvhBuild'; one
+// bounce against none with --benchmark_filter=Bounce. RaysAgainstCoin puts
 // RAYS next to plain Coin (no shadows) in the same run: static, light moving, camera moving
 // (--benchmark_filter=RaysAgainstCoin), with the pass times of the last frame. Times are wall
 // clock, GPU finished.
@@ -116,6 +117,44 @@ void OpacitySlices(benchmark::State& state) {
   state.counters["map_MB"] = stats.lights.empty() ? 0.0 : double(stats.lights[0].bytes) / 1048576.0;
 }
 
+// Args: triangles, bounce lights (0: no bounce, the baseline in the same run), moving (0 /
+// 1). One bounce (SoTransparentShadowGroup::bounce) over the sphere field at 640 x 480 with a
+// RAYS light: a static frame pays the gather per pixel; a moving light also places the
+// lights again on the CPU and draws their imperfect shadow maps.
+void Bounce(benchmark::State& state) {
+  Scene s(state, int(state.range(0)), 640, 480, SoDeepShadowLight::RAYS);
+  if (!s.renderer) return;
+  SoSearchAction search;
+  search.setType(SoTransparentShadowGroup::getClassTypeId());
+  search.apply(s.root);
+  auto* group = static_cast<SoTransparentShadowGroup*>(search.getPath()->getTail());
+  const int lights = int(state.range(1));
+  group->bounce = lights > 0;
+  if (lights > 0) group->bounceLights = lights;
+  s.renderer->render(s.root);
+  const bool moving = state.range(2) != 0;
+  const SbVec3f start = s.light->location.getValue();
+  int frame = 0;
+  double place = 0.0, maps = 0.0;
+  for (auto _ : state) {
+    if (moving) s.light->location.setValue(start + SbVec3f(0.05f * float(++frame % 7), 0.0f, 0.0f));
+    state.SetIterationTime(s.renderer->render(s.root).wallMs * 1e-3);
+    const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(s.root);
+    place += stats.bouncePlaceMs;
+    maps += stats.bounceMapMs;
+  }
+  const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(s.root);
+  state.counters["lights"] = stats.bounceLights;
+  state.counters["triangles"] = stats.casterTriangles;
+  if (moving) {
+    state.counters["place_ms"] = place / double(state.iterations());
+    state.counters["maps_ms"] = maps / double(state.iterations());
+  }
+  state.counters["bounce_MB"] = double(stats.bounceBytes) / 1048576.0;
+  state.SetLabel(std::string(lights > 0 ? "bounce" : "no bounce") +
+                 (moving ? " moving light" : " static"));
+}
+
 // Arg: triangles. Changing a caster's material rebuilds the casters and their Embree scene;
 // the time is the BVH build alone.
 void BvhBuild(benchmark::State& state) {
@@ -197,6 +236,11 @@ void frames(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(MethodFrame)->Apply(frames);
+BENCHMARK(Bounce)
+    ->ArgsProduct({{1000, 100000}, {0, 64, 256}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 BENCHMARK(OpacitySlices)
     ->ArgsProduct({{1000, 100000}, {1, 4, 7, 8, 16, 32}})
     ->UseManualTime()
