@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -115,6 +116,38 @@ void expectLitWithoutShadow(const std::string& fault, const std::string& method,
   ASSERT_EQ(shadowed.result.exitCode, 0) << shadowed.result.err;
   ASSERT_GT(maxError(shadowed.image, unshadowed.image), 40) << "the scene shows no shadow";
   if (faulty.result.exitCode == 0) EXPECT_EQ(maxError(faulty.image, unshadowed.image), 0);
+}
+
+// The one bounce's maps that GL cannot hold: the group renders without the bounce, saying so
+// once, as bounce FALSE would draw it (the wall black, which with the bounce shows red).
+void expectNoBounce(const std::string& fault, const std::string& warning) {
+  std::ifstream file(test::scenesDir() + "/bounce_wall.iv");
+  std::stringstream text;
+  text << file.rdbuf();
+  const Rendered faulty = render("bounce_" + fault, text.str(), {"IVSHADOW_FAIL_GL=" + fault});
+  ASSERT_EQ(faulty.result.exitCode, 0) << faulty.result.err;
+  const std::string& err = faulty.result.err;
+  const std::size_t at = err.find(warning);
+  ASSERT_NE(at, std::string::npos) << err;
+  EXPECT_EQ(err.find(warning, at + 1), std::string::npos) << "said twice: " << err;
+  const Rendered bounced = render("bounce", text.str());
+  ASSERT_EQ(bounced.result.exitCode, 0) << bounced.result.err;
+  // The wall's centre: about 40 of red with the bounce (BounceTest), none without.
+  EXPECT_GT(int(bounced.image.pixel(48, 48)[0]), 20);
+  EXPECT_EQ(int(faulty.image.pixel(48, 48)[0]), 0);
+}
+
+TEST(GlFault, BounceMapsThatDoNotFitRenderWithoutTheBounce) {
+  expectNoBounce("texture",
+                 "TransparentShadowGroup 'Room': no memory for the imperfect shadow maps "
+                 "(GL_OUT_OF_MEMORY (forced by IVSHADOW_FAIL_GL)); rendering without the bounce");
+}
+
+TEST(GlFault, AnIncompleteBounceFramebufferRendersWithoutTheBounce) {
+  expectNoBounce("framebuffer",
+                 "TransparentShadowGroup 'Room': the imperfect shadow maps' framebuffer is "
+                 "incomplete (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT (forced by IVSHADOW_FAIL_GL)); "
+                 "rendering without the bounce");
 }
 
 TEST(GlFault, MapTexturesThatNeverFitLightWithoutAShadow) {
