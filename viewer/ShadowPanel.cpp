@@ -6,6 +6,7 @@
 #include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/DeepShadowSettings.h"
 #include "nodes/NodesOfType.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
@@ -40,6 +41,7 @@ const char* const kMap = "Map";
 const char* const kRays = "Rays";
 const char* const kPeeling = "Peeling";
 const char* const kFigures = "Figures";
+const char* const kBounce = "Bounce";
 
 struct FieldSpec {
   const char* section;
@@ -88,10 +90,17 @@ std::vector<FieldSpec> fieldsOfType(SoType type, std::vector<FieldSpec> first) {
   return first;
 }
 
+// The group's own fields, its lights' shadow fields, then its one bounce (bounceMapSize, a
+// power of two, is left to the file: a spin box would offer the values between).
 const std::vector<FieldSpec>& groupFields() {
-  static const std::vector<FieldSpec> fields = fieldsOfType(
-      SoTransparentShadowGroup::getClassTypeId(),
-      {{kMethod, "isActive", {}}, {kMethod, "transparency", {}}, {kMethod, "castingLights", {}}});
+  static const std::vector<FieldSpec> fields = [] {
+    std::vector<FieldSpec> all = fieldsOfType(
+        SoTransparentShadowGroup::getClassTypeId(),
+        {{kMethod, "isActive", {}}, {kMethod, "transparency", {}}, {kMethod, "castingLights", {}}});
+    all.push_back({kBounce, "bounce", {}});
+    all.push_back({kBounce, "bounceLights", {1, kMaxBounceLights, 16, 0}});
+    return all;
+  }();
   return fields;
 }
 

@@ -117,6 +117,15 @@ TEST(ViewerPanel, SwitchingTheGroupOffThroughThePanelRendersAsHeadless) {
   EXPECT_EQ(run.figures["dsm_bytes"], 0);
 }
 
+TEST(ViewerPanel, TheBounceSwitchedOffThroughThePanelRendersAsHeadless) {
+  // bounce_wall.iv's wall shows only the bounce: off, it goes black in both.
+  const PanelRun run = runPanel("bounce_wall.iv", {"Room.bounce=FALSE"});
+  test::expectMostlyEqual(run.viewer, run.headless, 2, kSameShare, "viewer against headless");
+  EXPECT_LT(test::shareWithin(run.viewer, run.headlessUnchanged, 2), kChangedShare)
+      << "switching the bounce off made no visible difference";
+  EXPECT_EQ(run.stats["bounce_lights"], 0);
+}
+
 TEST(ViewerPanel, PeelingAndLightLocationSetThroughThePanelRenderAsHeadless) {
   const PanelRun run =
       runPanel("peeled_glasses.iv", {"Lamp.method=MAP", "Glasses.method=FRONT_TO_BACK",
