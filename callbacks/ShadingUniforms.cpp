@@ -46,7 +46,6 @@ void ShadingUniforms::apply(const UniformLocations& locations) const {
   glProgramUniform1i(program, at("uBounceTiles"), bounceTiles);
   glProgramUniform1i(program, at("uBounceMapSize"), bounceMapSize);
   glProgramUniform1f(program, at("uBounceLift"), bounceLift);
-  glProgramUniform1f(program, at("uBounceMinDistance"), bounceMinDistance);
   glProgramUniformMatrix3fv(program, at("uEyeToLocalNormal"), 1, GL_FALSE, eyeToLocalNormal);
 }
 

@@ -35,13 +35,12 @@ struct ShadingUniforms {
   std::array<int, kMaxLights> mapRay = noRays();
   int rayLayers = 0;  // captured surface layers of the traced visibility
   // One bounce (ImperfectShadowMaps): the lights, the atlas's tiles per row and tile size, the
-  // maps' lift off their surfaces, the lights' minimum distance (BounceLights), and the
-  // matrix that takes eye-space normals to the group's coordinates (column-major).
+  // maps' lift off their surfaces, and the matrix that takes eye-space normals to the group's
+  // coordinates (column-major).
   int bounceCount = 0;
   int bounceTiles = 0;
   int bounceMapSize = 0;
   float bounceLift = 0.0f;
-  float bounceMinDistance = 0.0f;
   float eyeToLocalNormal[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
   // GL_MAX_TEXTURE_IMAGE_UNITS of the context: the samplers' units follow from it
   // (ShaderConstants.h).

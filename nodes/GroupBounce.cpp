@@ -49,9 +49,11 @@ void GroupBounce::place(const BounceSettings& settings, const GroupContents& con
   lights_ = placeBounceLights(casters, sources, settings.lights);
   packed_.clear();
   packed_.reserve(lights_.lights.size() * kBounceTexelsPerLight * 4);
-  for (const BounceLight& light : lights_.lights)
-    for (const glm::vec3& v : {light.position, light.normal, light.flux})
-      packed_.insert(packed_.end(), {v.x, v.y, v.z, 0.0f});
+  for (const BounceLight& light : lights_.lights) {
+    packed_.insert(packed_.end(), {light.position.x, light.position.y, light.position.z, 0.0f});
+    packed_.insert(packed_.end(), {light.normal.x, light.normal.y, light.normal.z, 0.0f});
+    packed_.insert(packed_.end(), {light.flux.x, light.flux.y, light.flux.z, light.discRadiusSquared});
+  }
   if (pointsCastersVersion_ != castersVersion || points_.empty()) {
     points_ = opaquePointPool(casters, kIsmPointPool);
     pointsCastersVersion_ = castersVersion;

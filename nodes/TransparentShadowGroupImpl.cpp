@@ -448,7 +448,6 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     uniforms->bounceTiles = context.bounceMaps->tiles();
     uniforms->bounceMapSize = bounce_.mapSize();
     uniforms->bounceLift = bounce_.lift();
-    uniforms->bounceMinDistance = bounce_.lights().minDistance;
     // Normals go to the group's coordinates by the transpose of the group-to-eye matrix's
     // inverse's inverse: its own transpose (SbMatrix rows are GL's columns).
     for (int row = 0; row < 3; ++row)

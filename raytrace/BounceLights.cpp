@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace ivshadow {
@@ -16,6 +17,9 @@ constexpr float kPi = 3.14159265358979f;
 // The golden angle: consecutive points of a Fibonacci spiral turn by it, which spreads any
 // number of them evenly over a sphere or a cap.
 constexpr float kGoldenAngle = 2.39996323f;
+// At most this many samples per light asked for: a light that mostly misses the casters
+// (a point light among a few small ones) places fewer lights rather than trace without end.
+constexpr int kMaxBounceSampling = 16;
 
 // Point i of n of Roberts' R2 sequence in the unit square: evenly spread for every n, where
 // a grid needs a square number.
@@ -79,23 +83,74 @@ std::vector<Sample> samplesOf(const BounceSource& source, int count, const SbBox
     }
     return samples;
   }
+  // The directions that can meet a caster: the cap about the casters' bounding sphere when
+  // the light is outside it (a point light beside a model sends most of its sphere to the
+  // sky), else the spot light's cone or the whole sphere; a spot light's cone where it is
+  // the narrower. Each sample stands for an equal share of the cap's solid angle.
   const bool spot = source.kind == LightKind::Spot;
   const float cosCutoff = spot ? std::clamp(source.cosCutoff, -1.0f, 1.0f) : -1.0f;
-  glm::vec3 axis = spot ? glm::normalize(source.axis) : glm::vec3(0, 0, 1);
+  const glm::vec3 spotAxis = spot ? glm::normalize(source.axis) : glm::vec3(0, 0, 1);
+  glm::vec3 axis = spotAxis;
+  float capCos = cosCutoff;
+  const SbVec3f centre = bounds.getCenter();
+  const glm::vec3 toCentre = glm::vec3(centre[0], centre[1], centre[2]) - source.position;
+  const float distance = glm::length(toCentre);
+  const float radius = 0.5f * (bounds.getMax() - bounds.getMin()).length();
+  if (distance > radius) {
+    const float boundsCos = std::sqrt(std::max(0.0f, 1.0f - (radius / distance) * (radius / distance)));
+    if (boundsCos > capCos) {
+      axis = toCentre / distance;
+      capCos = boundsCos;
+    }
+  }
   glm::vec3 t1, t2;
   across(axis, t1, t2);
-  const float solidAngle = 2.0f * kPi * (1.0f - cosCutoff);
+  const float solidAngle = 2.0f * kPi * (1.0f - capCos);
   for (int i = 0; i < count; ++i) {
-    // A Fibonacci spiral over the cap cos(theta) in [cosCutoff, 1] (the whole sphere for a
-    // point light): equal solid angle per point.
-    const float z = 1.0f - (float(i) + 0.5f) / float(count) * (1.0f - cosCutoff);
+    // A Fibonacci spiral over the cap cos(theta) in [capCos, 1]: equal solid angle per point.
+    const float z = 1.0f - (float(i) + 0.5f) / float(count) * (1.0f - capCos);
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     const float phi = kGoldenAngle * float(i);
     const glm::vec3 direction = r * std::cos(phi) * t1 + r * std::sin(phi) * t2 + z * axis;
-    const float falloff = spot ? std::pow(std::max(z, 0.0f), source.spotExponent) : 1.0f;
+    float falloff = 1.0f;
+    if (spot) {
+      const float c = glm::dot(direction, spotAxis);
+      falloff = c < cosCutoff ? 0.0f : std::pow(std::max(c, 0.0f), source.spotExponent);
+    }
     samples.push_back({source.position, direction, solidAngle / float(count), falloff});
   }
   return samples;
+}
+
+// The lights `samples` samples of `source` place, appended to `out`; how many it placed.
+int placeFrom(const CasterScene& casters, const BounceSource& source, int samples,
+              const SbBox3f& bounds, std::vector<BounceLight>& out) {
+  int placed = 0;
+  for (const Sample& sample : samplesOf(source, samples, bounds)) {
+    const CasterScene::SurfaceHit hit = casters.firstSurface(
+        sample.origin, sample.direction, std::numeric_limits<float>::infinity(), source.model);
+    if (!hit.hit) continue;
+    glm::vec3 normal = casters.geometricNormal(hit.primitive);
+    // The side the light falls on reflects it (a one-sided surface lit from behind too).
+    float cosine = -glm::dot(normal, sample.direction);
+    if (cosine < 0.0f) {
+      normal = -normal;
+      cosine = -cosine;
+    }
+    if (!(cosine > 0.0f)) continue;
+    const glm::vec3 kd = glm::vec3(casters.surfaceColour(hit.primitive, hit.u, hit.v));
+    // The area the sample stands for on the surface: across the light, or the solid angle at
+    // the distance reached, over the cosine; the direct diffuse term kd I cos att there times
+    // it leaves the cosine out.
+    const bool directional = source.kind == LightKind::Directional;
+    const float spread = directional ? sample.measure : sample.measure * hit.t * hit.t;
+    const glm::vec3 flux = glm::clamp(kd, 0.0f, 1.0f) * source.colour * hit.through *
+                           (attenuationAt(source, hit.t) * sample.spot * spread);
+    if (!(glm::dot(flux, glm::vec3(1.0f)) > 0.0f)) continue;
+    out.push_back({sample.origin + hit.t * sample.direction, normal, flux, spread / cosine / kPi});
+    ++placed;
+  }
+  return placed;
 }
 
 }  // namespace
@@ -105,39 +160,25 @@ BounceLights placeBounceLights(const CasterScene& casters, const std::vector<Bou
   BounceLights result;
   const SbBox3f& bounds = casters.triangles().bounds;
   if (sources.empty() || count <= 0 || bounds.isEmpty()) return result;
-  double litArea = 0.0;
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const BounceSource& source = sources[s];
     // The lights shared out evenly; the first ones take what the division leaves.
     const int share = count / int(sources.size()) + (int(s) < count % int(sources.size()) ? 1 : 0);
-    for (const Sample& sample : samplesOf(source, share, bounds)) {
-      ++result.samples;
-      const CasterScene::SurfaceHit hit = casters.firstSurface(
-          sample.origin, sample.direction, std::numeric_limits<float>::infinity(), source.model);
-      if (!hit.hit) continue;
-      glm::vec3 normal = casters.geometricNormal(hit.primitive);
-      // The side the light falls on reflects it (a one-sided surface lit from behind too).
-      float cosine = -glm::dot(normal, sample.direction);
-      if (cosine < 0.0f) {
-        normal = -normal;
-        cosine = -cosine;
-      }
-      if (!(cosine > 0.0f)) continue;
-      const glm::vec3 kd = glm::vec3(casters.surfaceColour(hit.primitive, hit.u, hit.v));
-      // The area the sample stands for on the surface: across the light, or the solid angle
-      // at the distance reached, over the cosine; the direct diffuse term kd I cos att there
-      // times it leaves the cosine out.
-      const bool directional = source.kind == LightKind::Directional;
-      const float spread = directional ? sample.measure : sample.measure * hit.t * hit.t;
-      const glm::vec3 flux = glm::clamp(kd, 0.0f, 1.0f) * source.colour * hit.through *
-                             (attenuationAt(source, hit.t) * sample.spot * spread);
-      if (!(glm::dot(flux, glm::vec3(1.0f)) > 0.0f)) continue;
-      litArea += double(spread / cosine);
-      result.lights.push_back({sample.origin + hit.t * sample.direction, normal, flux});
+    if (share <= 0) continue;
+    const std::size_t before = result.lights.size();
+    int samples = share;
+    const int placed = placeFrom(casters, source, samples, bounds, result.lights);
+    // Samples that met nothing placed nothing: as many more as the share that landed says
+    // give about `share` lights (at most kMaxBounceSampling times the share, for a light that
+    // mostly misses), placed anew from the finer pattern.
+    if (placed > 0 && placed < share) {
+      samples = int(std::min<std::int64_t>(std::int64_t(share) * kMaxBounceSampling,
+                                           (std::int64_t(share) * share + placed - 1) / placed));
+      result.lights.resize(before);
+      placeFrom(casters, source, samples, bounds, result.lights);
     }
+    result.samples += samples;
   }
-  if (!result.lights.empty())
-    result.minDistance = float(std::sqrt(litArea / double(result.lights.size())));
   return result;
 }
 
@@ -183,7 +224,6 @@ std::vector<float> opaquePointPool(const CasterScene& casters, int count) {
 glm::vec3 gatherBounce(const BounceLights& lights, const glm::vec3& x, const glm::vec3& n,
                        const CasterScene* visibility) {
   glm::vec3 sum(0.0f);
-  const float minSquared = lights.minDistance * lights.minDistance;
   for (const BounceLight& light : lights.lights) {
     const glm::vec3 towards = light.position - x;
     const float squared = glm::dot(towards, towards);
@@ -194,10 +234,10 @@ glm::vec3 gatherBounce(const BounceLights& lights, const glm::vec3& x, const glm
     float seen = 1.0f;
     if (visibility != nullptr) {
       // Stop short of the light's own surface, which the ray would otherwise meet at its end.
-      const glm::vec3 end = light.position - 1e-3f * lights.minDistance * w;
+      const glm::vec3 end = light.position - 1e-3f * std::sqrt(light.discRadiusSquared) * w;
       seen = visibility->transmittance(x, n, end, ShadowColourModel::Monochrome).x;
     }
-    sum += light.flux * (receiving * sending * seen / std::max(squared, minSquared));
+    sum += light.flux * (receiving * sending * seen / (squared + light.discRadiusSquared));
   }
   return sum / kPi;
 }

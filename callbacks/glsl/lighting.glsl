@@ -298,19 +298,18 @@ vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColou
 // One diffuse bounce (SoTransparentShadowGroup::bounce): the virtual point lights
 // (raytrace/BounceLights.h; position, normal, flux per light in uBounceLights) that see the
 // receiver in their imperfect shadow maps (callbacks/ImperfectShadowMaps.h), summed as
-// (1 / pi) flux cos_x cos_i / max(r^2, uBounceMinDistance^2), in the group's coordinates.
+// (1 / pi) flux cos_x cos_i / (r^2 + a^2), each light a disc of radius a (BounceLight), in
+// the group's coordinates.
 uniform samplerBuffer uBounceLights;
 uniform sampler2D uBounceAtlas;
 uniform int uBounceCount;
 uniform int uBounceTiles;
 uniform int uBounceMapSize;
 uniform float uBounceLift;
-uniform float uBounceMinDistance;
 uniform mat3 uEyeToLocalNormal;
 
 vec3 bouncedLight(vec3 x, vec3 n) {
   vec3 sum = vec3(0.0);
-  float minSquared = uBounceMinDistance * uBounceMinDistance;
   for (int i = 0; i < uBounceCount; ++i) {
     int first = IVSHADOW_BOUNCE_TEXELS_PER_LIGHT * i;
     vec3 y = texelFetch(uBounceLights, first).xyz;
@@ -337,7 +336,8 @@ vec3 bouncedLight(vec3 x, vec3 n) {
                   clamp(ivec2(bounceTexel(l, uBounceMapSize)), ivec2(0), ivec2(uBounceMapSize - 1));
     float stored = texelFetch(uBounceAtlas, texel, 0).r;
     if (distance > stored * (1.0 + IVSHADOW_ISM_BIAS)) continue;
-    sum += texelFetch(uBounceLights, first + 2).rgb * (receiving * sending / max(squared, minSquared));
+    vec4 flux = texelFetch(uBounceLights, first + 2);  // w: the disc's radius squared
+    sum += flux.rgb * (receiving * sending / (squared + flux.w));
   }
   return sum * 0.318309886;  // 1 / pi
 }

@@ -71,10 +71,10 @@ Patch measure(const Image& image) {
 }
 
 TEST(Bounce, TheWallShowsTheFloorsTintedLightTimesTheFormFactor) {
-  // 256 virtual point lights (179 on the floor, 0.15 apart) alone come within 0.5 % of the
+  // 256 virtual point lights (on the floor, 0.125 apart) alone come within 0.5 % of the
   // form factor on average (BounceLightsTest); their imperfect shadow maps may add false
   // occlusion by the wall's own splats, and the 8-bit picture 2.5 % on the green. Measured:
-  // the patch's mean within 0.2 %, every pixel within 2 levels. Bounds: the mean within 4 %,
+  // the patch's mean within 0.6 %, every pixel within 2 levels. Bounds: the mean within 4 %,
   // every pixel within 8 % past 2 levels, and the tint red twice green within 5 % (green is
   // about 20 levels: a level is 5 %). Without the receiver's normal offset
   // (kIsmNormalOffset) the patch was 10 % dark; a bounce that missed the glass, the normal's
@@ -88,21 +88,26 @@ TEST(Bounce, TheWallShowsTheFloorsTintedLightTimesTheFormFactor) {
 }
 
 TEST(Bounce, TheWallMatchesTheReferencesBounce) {
-  // The reference traces the same bounce exactly (256 rays per point, 5.9 % RMS per pixel):
-  // over the patch's 160 pixels the two agree to the VPL and ISM errors above plus the
-  // reference's noise in the mean (0.5 %); measured 0.5 %, bound 4 % of the mean.
+  // The reference traces the same bounce exactly, with 256 rays per point (5.9 % RMS per
+  // pixel). Over the patch's 160 pixels the signed mean difference is the GL path's bias plus
+  // the reference's noise in a mean (0.5 %): measured 0.25 %, bound 4 %; the mean absolute
+  // difference is mostly that noise per pixel (about 0.8 of its RMS): measured 4.9 %,
+  // bound 10 %.
   const std::string scene = bounceWall("bounce TRUE");
   const Image gl = renderIv(scene, kSize);
   const Image exact = referenceIv(scene, kSize);
-  double difference = 0.0, mean = 0.0;
+  double difference = 0.0, absolute = 0.0, mean = 0.0;
   for (int py = 0; py < kSize; ++py)
     for (int px = 0; px < kSize; ++px) {
       if (!inBounceWallPatch(bounceWallPoint(px, py, kSize))) continue;
-      difference += channel(gl, px, py, 0) - channel(exact, px, py, 0);
+      const double d = channel(gl, px, py, 0) - channel(exact, px, py, 0);
+      difference += d;
+      absolute += std::abs(d);
       mean += channel(exact, px, py, 0);
     }
   ASSERT_GT(mean, 0.0);
   EXPECT_LT(std::abs(difference) / mean, 0.04);
+  EXPECT_LT(absolute / mean, 0.10);
 }
 
 TEST(Bounce, OffByDefault) {
@@ -130,8 +135,9 @@ TEST(Bounce, EveryShadowMethodBouncesTheSame) {
     for (int py = 0; py < kSize; ++py)
       for (int px = 0; px < kSize; ++px)
         if (inBounceWallPatch(bounceWallPoint(px, py, kSize)))
-          ASSERT_NEAR(channel(other, px, py, 0), channel(rays, px, py, 0), 1.0)
-              << method << " at " << px << ", " << py;
+          for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(channel(other, px, py, c), channel(rays, px, py, c), 1.0)
+                << method << " at " << px << ", " << py << ", channel " << c;
   }
 }
 
@@ -139,7 +145,7 @@ TEST(Bounce, ABoxOnTheFloorShadowsTheBounceBehindIt) {
   // An opaque box 0.4 high on the floor in front of the wall's lower middle hides part of the
   // floor from it: the wall behind it gets less of the bounce in both paths (no analytic
   // answer; the reference is exact). Measured at the patch's lower half, y within 0.2: the
-  // reference keeps 44 % of the open wall, GL 45 %. Bounds: both below 60 %, and GL within
+  // reference keeps 44 % of the open wall, GL 44 % (0.99 of the reference's). Bounds: both below 60 %, and GL within
   // 10 % of the reference there (the ISM's own error, where occluders matter; a map that
   // missed the box would keep 100 %).
   const std::string box =
@@ -171,10 +177,12 @@ TEST(Bounce, StatisticsCountTheLightsAndTheirMemory) {
   renderIv(bounceWall("bounce TRUE bounceLights 64 bounceMapSize 64"), kSize, &root);
   const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
   root->unref();
-  // 64 samples over the pane's 2.4 x 2.4, of which those over the 2 x 2 floor (69 %) land;
-  // the memory is the atlas's three levels, the lights and the point pool.
-  EXPECT_EQ(stats.bounceSamples, 64);
-  EXPECT_NEAR(stats.bounceLights, 64 * 4.0 / 5.76, 3.0);
+  // Samples over the pane's 2.4 x 2.4, of which those over the 2 x 2 floor (69 %) land: the
+  // light is sampled again about 5.76 / 4 times as finely to place the 64 asked for (within
+  // a few: the pattern's share over the floor varies by a sample or two); the memory is the
+  // atlas's three levels, the lights and the point pool.
+  EXPECT_NEAR(stats.bounceSamples, 64 * 5.76 / 4.0, 5.0);
+  EXPECT_NEAR(stats.bounceLights, 64, 3.0);
   EXPECT_EQ(stats.bounceBytes, ImperfectShadowMaps::bytesFor(stats.bounceLights, 64));
   EXPECT_GT(stats.bounceMapMs, 0.0);
 }
@@ -206,7 +214,7 @@ TEST(Bounce, OutOfRangeFieldsAreClampedWithOneWarningEach) {
   EXPECT_NE(warnings[1].find("field bounceMapSize is 100, not a power of two; using 64"),
             std::string::npos)
       << warnings[1];
-  EXPECT_EQ(stats.bounceSamples, 1024);
+  EXPECT_NEAR(stats.bounceLights, 1024, 10);  // the clamped count placed (see above)
 }
 
 }  // namespace
