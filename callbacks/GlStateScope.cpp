@@ -25,6 +25,7 @@ const std::vector<GLenum>& fragmentSwitches() {
                                     GL_RASTERIZER_DISCARD,
                                     GL_SAMPLE_ALPHA_TO_COVERAGE,
                                     GL_PROGRAM_POINT_SIZE,
+                                    GL_POINT_SMOOTH,
                                     GL_DEPTH_TEST};
     const int clipPlanes = glInteger(GL_MAX_CLIP_DISTANCES);
     for (int i = 0; i < clipPlanes; ++i) switches.push_back(GL_CLIP_DISTANCE0 + GLenum(i));

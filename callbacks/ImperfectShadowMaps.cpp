@@ -14,10 +14,11 @@ namespace ivshadow {
 namespace {
 
 constexpr int kLevels = 1 + kIsmPullLevels;
-constexpr int kGroupSize = 8;  // the compute programs' local size
+static_assert(kIsmPointPool % kIsmPointsPerLight == 0 && kIsmPointsPerLight <= kIsmPointPool,
+              "each light draws every (pool / per light)-th point of the pool");
 
 GLuint groupsFor(int texels) {
-  return GLuint((texels + kGroupSize - 1) / kGroupSize);
+  return GLuint((texels + kIsmGroupSize - 1) / kIsmGroupSize);
 }
 
 // A buffer texture over `data` (RGBA 32-bit floats), made or refilled.
@@ -84,6 +85,11 @@ std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
   }
   upload(lightBuffer_, lightTexture_, *request.lights);
   const bool anyPoints = !request.points->empty();
+  if (anyPoints && request.points->size() != std::size_t(kIsmPointPool) * 4) {
+    release();
+    return "the bounce's point pool holds " + std::to_string(request.points->size() / 4) +
+           " points, not " + std::to_string(kIsmPointPool);
+  }
   if (anyPoints && (request.pointsChanged || !pointTexture_))
     upload(pointBuffer_, pointTexture_, *request.points);
   const int tiles = tilesFor(request.lightCount);
@@ -122,7 +128,9 @@ std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
   glBlendEquation(GL_MIN);
   glEnable(GL_PROGRAM_POINT_SIZE);
   glEnable(GL_CLIP_DISTANCE0);
-  glBindTextureUnit(0, pointTexture_.get());
+  // Without points nothing is drawn: unit 0 keeps what it holds (binding 0 would unbind
+  // every target there, not only the buffer the scope restores).
+  if (anyPoints) glBindTextureUnit(0, pointTexture_.get());
   glBindTextureUnit(1, lightTexture_.get());
   glUseProgram(points_.name());
   points_.setInt("uIsmPoints", 0);
@@ -185,6 +193,7 @@ std::vector<float> ImperfectShadowMaps::readAtlas(int& size) const {
   size = atlasSize_;
   std::vector<float> texels(std::size_t(size) * std::size_t(size));
   if (!atlas_) return {};
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // after the compute passes' image stores
   glGetTextureImage(atlas_.get(), 0, GL_RED, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
                     texels.data());
   return texels;

@@ -24,6 +24,8 @@ struct BounceMapRequest {
   bool fillHoles = true;      // false (tests): the splats alone, without pull-push
 };
 
+class GlStateScope;
+
 // The one-bounce lights' visibility (seeds/001, after Ritschel et al. 2008's imperfect shadow
 // maps): one atlas of tiles, one per light, each a paraboloid map of its hemisphere holding the
 // distance of the nearest pool point that way. The points are drawn for all lights in one
@@ -31,8 +33,6 @@ struct BounceMapRequest {
 // pull-push (kIsmPullLevels levels) over the whole atlas at once: the tiles are aligned
 // powers of two, so that is pull-push per tile, which the document found its time sink when
 // done tile by tile. The lights' buffer is kept for the gather (lighting.glsl).
-class GlStateScope;
-
 class IVSHADOW_INTERNAL ImperfectShadowMaps {
  public:
   // Tiles per row for `lights` lights: the atlas is square.

@@ -50,7 +50,9 @@ std::string shaderConstantDefines() {
        << "#define IVSHADOW_ISM_POINT_SIZE float(" << kIsmPointSize << ")\n"
        << "#define IVSHADOW_ISM_EMPTY " << kIsmEmpty << "\n"
        << "#define IVSHADOW_ISM_BIAS " << kIsmBias << "\n"
-       << "#define IVSHADOW_ISM_NORMAL_OFFSET " << kIsmNormalOffset << "\n"
+       << "#define IVSHADOW_ISM_NORMAL_OFFSET " << kIsmNormalOffset * 4.0f << "\n"
+       << "#define IVSHADOW_ISM_GROUP_SIZE " << kIsmGroupSize << "\n"
+       << "#define IVSHADOW_INVERSE_PI " << 0.318309886f << "\n"
        << "#define IVSHADOW_COLOUR_MONOCHROME " << int(ShadowColourModel::Monochrome) << "\n"
        << "#define IVSHADOW_COLOUR_SATURATE " << int(ShadowColourModel::Saturate) << "\n"
        << "#define IVSHADOW_COLOUR_POWER " << int(ShadowColourModel::Power) << "\n";

@@ -84,7 +84,8 @@ inline constexpr int kMaxScreenLayers = 5;
 inline constexpr float kVolumeDepthTolerance = 2e-6f;
 // Texture units of the plugin's passes, counted down from the context's highest unit so that
 // Coin's own textures keep the low ones: the maps (depth and visibility per light slot) at the
-// top, the peel targets below them, the traced shadows of RAYS lights below those.
+// top, the peel targets below them, the traced shadows of RAYS lights below those, the one
+// bounce's atlas and lights below those.
 inline constexpr int kMapUnits = 2 * kMaxGlLights;
 inline constexpr int kPeelUnits = 3;
 inline constexpr int kRayUnits = 4;
@@ -130,6 +131,8 @@ inline constexpr float kIsmPointSize = 3.0f;
 // Pull-push levels over the atlas (seeds/001: the last two push steps come nearest the
 // perfect map); tiles of at least 16 texels stay apart through them.
 inline constexpr int kIsmPullLevels = 2;
+// The pull and push compute programs' work group side.
+inline constexpr int kIsmGroupSize = 8;
 // What a texel holds where no point fell (after pull-push: no surface that way).
 inline constexpr float kIsmEmpty = 1.0e30f;
 // A receiver counts as seen by a light while its distance is within this fraction beyond the
@@ -140,7 +143,8 @@ inline constexpr float kIsmBias = 0.1f;
 // How far a receiver is moved along its normal towards each light before its map is read, in
 // texels of that map at the receiver's distance (a tile's texel spans 4 / size radians at its
 // centre, 2 / size at its rim): half a splat and more, so the splats of the receiver's own
-// surface do not hide it.
+// surface do not hide it. The shaders get it in radians per texel-of-a-one-texel-tile:
+// kIsmNormalOffset * 4, divided by the tile size there.
 inline constexpr float kIsmNormalOffset = 1.5f;
 // How far each light's map sits off its surface, as a fraction of the casters' diagonal
 // (seeds/001 moves it 0.01 along the normal): the surface's own points fall behind it.

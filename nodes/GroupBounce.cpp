@@ -4,7 +4,9 @@
 #include "ivshadow/DeepShadowStatistics.h"
 #include "raytrace/CasterScene.h"
 
+#include <Inventor/SoPath.h>
 #include <Inventor/elements/SoEnvironmentElement.h>
+#include <Inventor/nodes/SoEnvironment.h>
 #include <Inventor/nodes/SoLight.h>
 #include <Inventor/nodes/SoSpotLight.h>
 
@@ -28,8 +30,12 @@ void GroupBounce::place(const BounceSettings& settings, const GroupContents& con
                         DeepShadowStatistics& statistics) {
   const auto start = std::chrono::steady_clock::now();
   // Coin sends these to every GL light it turns on (SoEnvironmentElement): constant, linear,
-  // quadratic in reverse order.
-  const SbVec3f attenuation = SoEnvironmentElement::getLightAttenuation(state);
+  // quadratic in reverse order. An environment inside the group is traversed after this.
+  const SbVec3f attenuation =
+      contents.environmentPath()
+          ? static_cast<const SoEnvironment*>(contents.environmentPath()->getTail())
+                ->attenuation.getValue()
+          : SoEnvironmentElement::getLightAttenuation(state);
   std::vector<BounceSource> sources;
   for (std::size_t slot = 0; slot < std::min(maps.size(), contents.lights().size()); ++slot) {
     const MapState& map = maps[slot];
@@ -60,7 +66,6 @@ void GroupBounce::place(const BounceSettings& settings, const GroupContents& con
   }
   const SbBox3f& bounds = casters.triangles().bounds;
   lift_ = bounds.isEmpty() ? 0.0f : kBounceLiftFraction * (bounds.getMax() - bounds.getMin()).length();
-  mapSize_ = settings.mapSize;
   ++version_;
   statistics.bounceLights = int(lights_.lights.size());
   statistics.bounceSamples = lights_.samples;

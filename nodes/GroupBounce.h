@@ -23,8 +23,9 @@ struct DeepShadowStatistics;
 class GroupBounce {
  public:
   // Places the lights again for the casting lights of `contents` at their slots in `maps`,
-  // and the pool when `castersVersion` changed; `state` is the group's, whose environment
-  // gives point and spot lights their attenuation, as Coin's GL lights get it.
+  // and the pool when `castersVersion` changed. Point and spot lights take their attenuation
+  // from the environment in force, as Coin's GL lights do: an SoEnvironment inside the group
+  // (contents.environmentPath()) or else the group's `state`.
   void place(const BounceSettings& settings, const GroupContents& contents,
              const std::vector<MapState>& maps, const CasterScene& casters,
              std::uint64_t castersVersion, SoState* state, DeepShadowStatistics& statistics);
@@ -36,7 +37,6 @@ class GroupBounce {
   const std::vector<float>& points() const { return points_; }
   std::uint64_t version() const { return version_; }
   std::uint64_t pointsVersion() const { return pointsCastersVersion_; }
-  int mapSize() const { return mapSize_; }
   // How far each light's map sits off its surface (kBounceLiftFraction of the casters').
   float lift() const { return lift_; }
 
@@ -46,7 +46,6 @@ class GroupBounce {
   std::vector<float> points_;
   std::uint64_t version_ = 0;
   std::uint64_t pointsCastersVersion_ = 0;
-  int mapSize_ = kDefaultBounceMapSize;
   float lift_ = 0.0f;
 };
 

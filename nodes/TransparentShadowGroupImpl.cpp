@@ -254,12 +254,15 @@ bool TransparentShadowGroupImpl::updateBounce(SoGLRenderAction* action, Context&
     bounce_.clear();
     bouncePlaced_ = 0;
     context.bounceMaps.reset();
-    context.bounceVersion = 0;
+    context.bounceVersion = context.bouncePoints = 0;
+    context.bounceMapSize = 0;
     statistics_.bounceLights = statistics_.bounceSamples = 0;
     statistics_.bounceBytes = 0;
+    statistics_.bouncePlaceMs = statistics_.bounceMapMs = 0.0;
     return false;
   }
-  // The atlas within the maps' budget: smaller tiles, said once.
+  // The atlas within this context's map budget: smaller tiles, said once. The lights do not
+  // depend on it; each context draws its own maps.
   const std::uint64_t budget = mapMemoryBudget(context.softwareRenderer);
   const int asked = settings.mapSize;
   while (settings.mapSize > kMinBounceMapSize &&
@@ -267,11 +270,11 @@ bool TransparentShadowGroupImpl::updateBounce(SoGLRenderAction* action, Context&
     settings.mapSize /= 2;
   if (settings.mapSize != asked && firstWarning(owner_, "bounce budget"))
     SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                              "%s: %d bounce maps of %d texels exceed the map memory budget; "
-                              "using %d texels",
+                              "%s: bounceLights %d with maps of %d texels exceed the map memory "
+                              "budget; using %d texels",
                               describeNode(owner_).c_str(), settings.lights, asked,
                               settings.mapSize);
-  if (bouncePlaced_ != contents_.mapsVersion() || bounce_.mapSize() != settings.mapSize) {
+  if (bouncePlaced_ != contents_.mapsVersion()) {
     bouncePlaced_ = contents_.mapsVersion();
     // The lights are placed with Embree whatever the lights' methods.
     const SoLight* first = contents_.lights().front().light;
@@ -282,15 +285,17 @@ bool TransparentShadowGroupImpl::updateBounce(SoGLRenderAction* action, Context&
     else
       bounce_.clear();
   }
-  if (context.bounceVersion != bounce_.version()) {
+  if (context.bounceVersion != bounce_.version() || context.bounceMapSize != settings.mapSize) {
     context.bounceVersion = bounce_.version();
+    context.bounceMapSize = settings.mapSize;
     if (!context.bounceMaps) context.bounceMaps = std::make_unique<ImperfectShadowMaps>();
     BounceMapRequest request;
     request.lights = &bounce_.packed();
     request.lightCount = int(bounce_.lights().lights.size());
     request.points = &bounce_.points();
-    request.pointsChanged = true;
-    request.mapSize = bounce_.mapSize();
+    request.pointsChanged = context.bouncePoints != bounce_.pointsVersion();
+    context.bouncePoints = bounce_.pointsVersion();
+    request.mapSize = settings.mapSize;
     request.lift = bounce_.lift();
     context.bounceTimer.start();
     const std::string failure = context.bounceMaps->build(request);
@@ -446,7 +451,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   if (bounced) {
     uniforms->bounceCount = int(bounce_.lights().lights.size());
     uniforms->bounceTiles = context.bounceMaps->tiles();
-    uniforms->bounceMapSize = bounce_.mapSize();
+    uniforms->bounceMapSize = context.bounceMapSize;
     uniforms->bounceLift = bounce_.lift();
     // Normals go to the group's coordinates by the transpose of the group-to-eye matrix's
     // inverse's inverse: its own transpose (SbMatrix rows are GL's columns).

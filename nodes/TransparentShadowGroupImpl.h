@@ -78,6 +78,8 @@ class TransparentShadowGroupImpl {
     GlPassTimer shadingTimer;
     std::unique_ptr<ImperfectShadowMaps> bounceMaps;  // with bounce TRUE
     std::uint64_t bounceVersion = 0;                  // GroupBounce::version() drawn
+    std::uint64_t bouncePoints = 0;                   // GroupBounce::pointsVersion() uploaded
+    int bounceMapSize = 0;                            // the tiles drawn, within this budget
     GlPassTimer bounceTimer;
   };
 

@@ -1,7 +1,7 @@
 // Pull (Marroquim et al. 2007, seeds/001): a coarse texel is the mean of its valid 2 x 2
 // finer texels, empty when none is. Tiles are powers of two on aligned corners, so a 2 x 2
 // block never spans two lights' maps.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = IVSHADOW_ISM_GROUP_SIZE, local_size_y = IVSHADOW_ISM_GROUP_SIZE) in;
 layout(r32f, binding = 0) uniform readonly image2D uFine;
 layout(r32f, binding = 1) uniform writeonly image2D uCoarse;
 

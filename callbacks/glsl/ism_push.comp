@@ -2,7 +2,7 @@
 // weighted 9 : 3 : 3 : 1 by nearness, over those that are valid and in its own tile; a valid
 // texel keeps what its points gave it. In place: each texel writes only itself and reads the
 // coarser level, already final.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = IVSHADOW_ISM_GROUP_SIZE, local_size_y = IVSHADOW_ISM_GROUP_SIZE) in;
 layout(r32f, binding = 0) uniform readonly image2D uCoarse;
 layout(r32f, binding = 1) uniform image2D uFine;
 uniform int uCoarseTileSize;  // a tile's side at the coarser level, in its texels

@@ -322,12 +322,12 @@ vec3 bouncedLight(vec3 x, vec3 n) {
     float sending = -dot(ny, w);
     if (receiving <= 0.0 || sending <= 0.0) continue;
     // The receiver as the light's map sees it: its direction and distance from the lifted
-    // light; hidden when a surface lies nearer that way.
-    // The receiver is moved off its surface towards the light by kIsmNormalOffset texels of
-    // the map at its distance (normal-offset shadow mapping): the splats of its own surface
-    // around it, seen at a slant, then lie behind it rather than in front.
+    // light, hidden when a surface lies nearer that way. It is first moved off its surface
+    // towards the light by kIsmNormalOffset texels of the map at its distance (normal-offset
+    // shadow mapping), so that the splats of its own surface around it, seen at a slant, lie
+    // behind it rather than in front.
     float reach = sqrt(squared);
-    vec3 moved = x + n * (IVSHADOW_ISM_NORMAL_OFFSET * 4.0 / float(uBounceMapSize) * reach);
+    vec3 moved = x + n * (IVSHADOW_ISM_NORMAL_OFFSET / float(uBounceMapSize) * reach);
     vec3 d = moved - (y + uBounceLift * ny);
     float distance = length(d);
     vec3 l = bounceLocal(ny, d / distance);
@@ -339,7 +339,7 @@ vec3 bouncedLight(vec3 x, vec3 n) {
     vec4 flux = texelFetch(uBounceLights, first + 2);  // w: the disc's radius squared
     sum += flux.rgb * (receiving * sending / (squared + flux.w));
   }
-  return sum * 0.318309886;  // 1 / pi
+  return sum * IVSHADOW_INVERSE_PI;
 }
 #endif
 

@@ -64,7 +64,7 @@ struct DeepShadowStatistics {
   int bounceLights = 0;          // virtual point lights placed
   int bounceSamples = 0;         // ... of samples traced from the lights (the rest met nothing)
   double bouncePlaceMs = 0.0;    // placing them and the point pool, on the CPU
-  double bounceMapMs = 0.0;      // drawing their imperfect shadow maps, wall time to glFinish
+  double bounceMapMs = 0.0;      // drawing their imperfect shadow maps, on the GPU
   std::uint64_t bounceBytes = 0; // the maps' atlas, the lights and the point pool in GL
 };
 

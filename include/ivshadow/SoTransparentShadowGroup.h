@@ -91,7 +91,7 @@ struct PeelStatistics;
                                  #   pixel; COIN_BLENDING: Coin's transparency type
         bounce FALSE         # TRUE: one diffuse bounce of the casting lights' light, tinted by
                              #   the glass it passed (virtual point lights, seeds/001)
-        bounceLights 256     # bounce: virtual point lights, 1 .. 1024
+        bounceLights 256     # bounce: virtual point lights placed, about, 1 .. 1024
         bounceMapSize 128    # bounce: each one's imperfect shadow map, 16 .. 256 texels, a
                              #   power of two
     }
