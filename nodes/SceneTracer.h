@@ -1,0 +1,96 @@
+#pragma once
+
+#include "ivshadow/Export.h"
+
+#include <Inventor/SbMatrix.h>
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+class SoCallbackAction;
+class SoNode;
+class SoPath;
+
+namespace ivshadow {
+
+// How a trace runs: its size, its threads, how it stops early and how much bounce it
+// samples.
+struct TraceOptions {
+  int width = 800;
+  int height = 600;
+  int threads = 0;  // 0: every core
+  // Read by the workers between rows: set it (from a signal handler) to stop early.
+  const std::atomic<bool>* cancel = nullptr;
+  // Rows finished so far, updated as the workers go; may be read from another thread.
+  std::atomic<int>* rowsDone = nullptr;
+  // Cosine-weighted rays per shaded point for the bounce of a group whose bounce field is
+  // TRUE (rounded up to a square, stratified; 0: no bounce).
+  int bounceSamples = 256;
+};
+
+// What a trace gives for each pixel, rows top to bottom: the surfaces met, composited front
+// to back (rgb premultiplied: the light they send; a: the transmittance left for what lies
+// behind them), and the window depth (0 .. 1, GL's default depth range) of the nearest opaque
+// surface, or the limit it was given where there is none.
+struct TracedPixels {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgba;
+  std::vector<float> depth;
+  std::size_t shadowRays = 0;
+  std::size_t bounceRays = 0;
+};
+
+// The exact picture of a scene's triangles, computed on the CPU with Embree: the camera,
+// lights, materials, textures and every shape Coin can turn into triangles are read once
+// through a SoCallbackAction. Each pixel's ray meets every surface and composites them in
+// exact depth order; each surface is shaded with the GL path's per-pixel Coin lighting, and
+// every casting light of an active SoTransparentShadowGroup is attenuated by the
+// transmittance of every caster of that group between the point and the light (same colour
+// model, same SoShadowStyle rules). The reference renderer traces a whole scene with it; a
+// group whose renderer is TRACER traces its own subgraph (fromPath) and hands the picture to
+// GL.
+class IVSHADOW_INTERNAL SceneTracer {
+ public:
+  // The scene below `root`, made ready for viewing (its camera is the one traced by
+  // trace(options)). Throws std::runtime_error when Embree fails.
+  static std::unique_ptr<SceneTracer> fromScene(SoNode* root, int width, int height);
+  // What `path` (from a scene's root to a node) leads to, in the state in force there: the
+  // lights met on the way light it, as in the scene. Throws as fromScene.
+  static std::unique_ptr<SceneTracer> fromPath(const SoPath* path, int width, int height);
+  ~SceneTracer();
+  SceneTracer(const SceneTracer&) = delete;
+  SceneTracer& operator=(const SceneTracer&) = delete;
+
+  // Whether a camera was met before a triangle, and its matrices.
+  bool haveCamera() const;
+  const SbMatrix& viewing() const;
+  const SbMatrix& projection() const;
+  std::size_t triangles() const;
+  // The shapes drawn with lines, points or screen-aligned pixels, which are not traced: as
+  // described for a message, and as paths from the root traced (for GL to draw them).
+  const std::vector<std::string>& untracedShapes() const;
+  const std::vector<const SoPath*>& untracedPaths() const;
+
+  // Traces the picture seen through `viewing` and `projection` (world to eye, eye to clip).
+  // `depthLimit` (width x height window depths, rows bottom to top as GL reads them; may be
+  // null) ends each pixel's ray there: what GL drew before hides what lies behind it. Returns
+  // false when cancelled.
+  bool trace(const SbMatrix& viewing, const SbMatrix& projection, const float* depthLimit,
+             const TraceOptions& options, TracedPixels& out) const;
+  // The same with the camera met in the scene.
+  bool trace(const TraceOptions& options, TracedPixels& out) const;
+
+ private:
+  struct Data;
+  static std::unique_ptr<Data> extract(int width, int height,
+                                       const std::function<void(SoCallbackAction&)>& apply);
+  explicit SceneTracer(std::unique_ptr<Data> data);
+  std::unique_ptr<Data> data_;
+};
+
+}  // namespace ivshadow
