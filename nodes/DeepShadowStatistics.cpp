@@ -49,6 +49,10 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.bouncePlaceMs += stats.bouncePlaceMs;
     total.bounceMapMs += stats.bounceMapMs;
     total.bounceBytes += stats.bounceBytes;
+    total.tracerSceneMs += stats.tracerSceneMs;
+    total.tracerMs += stats.tracerMs;
+    total.tracerScenes += stats.tracerScenes;
+    total.tracerFrames += stats.tracerFrames;
   });
   return total;
 }

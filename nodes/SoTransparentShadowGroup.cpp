@@ -45,6 +45,10 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, PEELED);
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, COIN_BLENDING);
   SO_NODE_SET_SF_ENUM_TYPE(transparency, Transparency);
+  SO_NODE_ADD_FIELD(renderer, (RASTER));
+  SO_NODE_DEFINE_ENUM_VALUE(Renderer, RASTER);
+  SO_NODE_DEFINE_ENUM_VALUE(Renderer, TRACER);
+  SO_NODE_SET_SF_ENUM_TYPE(renderer, Renderer);
   SO_NODE_ADD_FIELD(bounce, (FALSE));
   SO_NODE_ADD_FIELD(bounceLights, (ivshadow::kDefaultBounceLights));
   SO_NODE_ADD_FIELD(bounceMapSize, (ivshadow::kDefaultBounceMapSize));

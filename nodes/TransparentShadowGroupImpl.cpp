@@ -91,7 +91,8 @@ TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner,
     : owner_(owner),
       renderChildren_(std::move(renderChildren)),
       contents_(owner, true),
-      shading_(contents_) {}
+      shading_(contents_),
+      tracer_(owner) {}
 
 TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
 
@@ -359,6 +360,12 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   if (ShadowGroupElement::peeling(state)) {
     peelStatistics_.passes = 0;
     return false;
+  }
+  // Traced, the group needs none of the GL path's programs or maps.
+  if (static_cast<SoTransparentShadowGroup*>(owner_)->renderer.getValue() ==
+      SoTransparentShadowGroup::TRACER) {
+    contents_.update(action);
+    if (tracer_.render(action, contents_, statistics_)) return true;
   }
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;

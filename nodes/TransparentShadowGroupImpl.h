@@ -9,6 +9,7 @@
 #include "nodes/GroupBounce.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
+#include "nodes/GroupTracer.h"
 #include "nodes/MapMethod.h"
 #include "nodes/MapState.h"
 #include "nodes/PerContext.h"
@@ -111,6 +112,7 @@ class TransparentShadowGroupImpl {
   PeelStatistics peelStatistics_;
   RayCasters rayCasters_;
   GroupBounce bounce_;
+  GroupTracer tracer_;  // renderer TRACER
   std::uint64_t bouncePlaced_ = 0;  // the mapsVersion the bounce's lights were placed for
   std::set<const SoLight*> methodLogged_;  // lights whose AUTO choice was said
 };

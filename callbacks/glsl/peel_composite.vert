@@ -1,4 +1,5 @@
-// A triangle covering the viewport, for SoPeelingSeparator's compositing passes.
+// A triangle covering the viewport, for the passes that compose a picture from textures
+// (SoPeelingSeparator's compositing, a traced group's picture).
 void main() {
   vec2 corner = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
   gl_Position = vec4(corner, 0.0, 1.0);

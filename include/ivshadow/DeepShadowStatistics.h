@@ -66,6 +66,11 @@ struct DeepShadowStatistics {
   double bouncePlaceMs = 0.0;    // placing them and the point pool, on the CPU
   double bounceMapMs = 0.0;      // drawing their imperfect shadow maps, on the GPU
   std::uint64_t bounceBytes = 0; // the maps' atlas, the lights and the point pool in GL
+  // A group whose renderer is TRACER (its subgraph traced whole on the CPU).
+  double tracerSceneMs = 0.0;    // last read of the subgraph and build of its Embree scenes
+  double tracerMs = 0.0;         // last trace of the picture and its upload, wall time
+  int tracerScenes = 0;          // times the subgraph was read
+  int tracerFrames = 0;          // frames that traced (others drew the picture kept)
 };
 
 }  // namespace ivshadow

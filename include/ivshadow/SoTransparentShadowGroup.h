@@ -65,6 +65,17 @@ struct PeelStatistics;
   leaves transparency to Coin (the action's transparency type, in traversal order), as
   before.
 
+  With `renderer TRACER` the children's triangles are not drawn by GL: every pixel's ray is
+  traced through them on the CPU with Embree (the reference renderer's code: exact shadows of
+  every casting light, whatever its method, and every transparent surface composited in
+  exact depth order), from the near plane to the depth GL drew before the group, and the
+  picture is blended onto the framebuffer with the depth of its nearest opaque surface, so
+  what GL draws after the group depth-tests against it. The picture is kept while the
+  subgraph, the camera, the viewport and the depth drawn before it stay the same: a still
+  frame only draws it again. Shapes drawn with lines, points or screen-aligned pixels are not
+  drawn (one warning names them). With `bounce TRUE`, `bounceLights` is the number of bounce
+  rays per pixel. The fields of the maps (resolution, layers, filters) do not apply.
+
   FILE FORMAT/DEFAULTS:
   \code
     TransparentShadowGroup {
@@ -94,6 +105,8 @@ struct PeelStatistics;
         bounceLights 256     # bounce: virtual point lights placed, about, 1 .. 1024
         bounceMapSize 128    # bounce: each one's imperfect shadow map, 16 .. 256 texels, a
                              #   power of two
+        renderer RASTER      # RASTER: GL draws the children; TRACER: their triangles are
+                             #   traced on the CPU (exact shadows and glass in one pass)
     }
   \endcode
 */
@@ -110,6 +123,10 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
     COIN_BLENDING  //!< Coin's transparency type (order-dependent)
   };
 
+  enum Renderer {
+    RASTER,  //!< GL draws the children, shaded with the group's shadows
+    TRACER   //!< Embree traces the children's triangles on the CPU; GL draws the picture
+  };
   enum CastingLights {
     ALL_LIGHTS,         //!< every light turned on in the subgraph casts
     DEEP_SHADOW_LIGHTS  //!< only SoDeepShadowLight nodes cast; other lights only light
@@ -117,6 +134,7 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
 
   SoSFBool isActive;
   SoSFEnum transparency;
+  SoSFEnum renderer;
   SoSFEnum castingLights;
   SoSFEnum method;
   SoSFInt32 resolution;

@@ -1,0 +1,93 @@
+#include "callbacks/TracedPicturePass.h"
+
+#include "GlslSources.h"
+#include "callbacks/GlAllocationCheck.h"
+#include "callbacks/GlStateScope.h"
+#include "callbacks/PixelStoreScope.h"
+
+#include <epoxy/gl.h>
+
+namespace ivshadow {
+namespace {
+
+// The picture's units: Coin's bindings there are put back after the draw.
+constexpr int kColourUnit = 0;
+constexpr int kDepthUnit = 1;
+
+}  // namespace
+
+std::unique_ptr<TracedPicturePass> TracedPicturePass::create(std::string& whyNot) {
+  if (epoxy_gl_version() < 45) {
+    whyNot = "OpenGL 4.5 is needed to draw a traced picture; this context offers " +
+             std::to_string(epoxy_gl_version() / 10) + "." +
+             std::to_string(epoxy_gl_version() % 10);
+    return nullptr;
+  }
+  std::unique_ptr<TracedPicturePass> pass(new TracedPicturePass);
+  pass->program_ = GlProgram::link(composeShader(glsl::kPeelCompositeVert),
+                                   composeShader(glsl::kTracedPictureFrag), whyNot);
+  if (!pass->program_) return nullptr;
+  pass->emptyVertexArray_ = createVertexArray();
+  return pass;
+}
+
+void TracedPicturePass::readDepth(const std::array<int, 4>& viewport,
+                                  std::vector<float>& out) const {
+  out.resize(std::size_t(viewport[2]) * std::size_t(viewport[3]));
+  GlStateScope scope(GlStateScope::kFramebuffers);
+  PixelStoreScope store;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(scope.drawFramebuffer()));
+  glReadPixels(viewport[0], viewport[1], viewport[2], viewport[3], GL_DEPTH_COMPONENT, GL_FLOAT,
+               out.data());
+}
+
+std::string TracedPicturePass::upload(const std::array<int, 4>& viewport, const float* rgba,
+                                      const float* depth) {
+  const int width = viewport[2], height = viewport[3];
+  if (width != width_ || height != height_) {
+    width_ = height_ = 0;
+    clearGlErrors();
+    colour_ = createTarget2D(GL_RGBA32F, width, height);
+    depth_ = createTarget2D(GL_R32F, width, height);
+    const std::string error = glAllocationError(GlAllocation::Texture);
+    if (!error.empty()) {
+      colour_ = GlTexture();
+      depth_ = GlTexture();
+      return error;
+    }
+    width_ = width;
+    height_ = height;
+  }
+  PixelStoreScope store;
+  glTextureSubImage2D(colour_.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);
+  glTextureSubImage2D(depth_.get(), 0, 0, 0, width, height, GL_RED, GL_FLOAT, depth);
+  return {};
+}
+
+void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
+  GlStateScope scope(GlStateScope::kProgram | GlStateScope::kVertexArray |
+                         GlStateScope::kBlendFunction | GlStateScope::kDepth |
+                         GlStateScope::kFragmentTests,
+                     {{kColourUnit, kDepthUnit}, {GL_TEXTURE_2D}});
+  scope.disableFragmentTests();
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  // dst = src.rgb + dst * src.a, keeping the framebuffer's alpha.
+  glBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
+  // The trace already ended at the depth GL held: every fragment is written, with its depth.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  glDepthRange(0.0, 1.0);
+  glUseProgram(program_.name());
+  program_.setInt("uColour", kColourUnit);
+  program_.setInt("uDepth", kDepthUnit);
+  glUniform2i(program_.location("uOrigin"), viewport[0], viewport[1]);
+  program_.setInt("uHeight", viewport[3]);
+  glBindTextureUnit(GLuint(kColourUnit), colour_.get());
+  glBindTextureUnit(GLuint(kDepthUnit), depth_.get());
+  glBindVertexArray(emptyVertexArray_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "callbacks/GlHandles.h"
+#include "callbacks/GlProgram.h"
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ivshadow {
+
+// The GL side of a group whose renderer is TRACER, in one context: reads the depth that GL
+// drew before the group (the trace ends there), then hands the traced picture to the
+// framebuffer: its colour composited over what is there (dst = rgb + a * dst, alpha the
+// transmittance the picture leaves) and its nearest opaque depth written, so that what GL
+// draws after depth-tests against it.
+class TracedPicturePass {
+ public:
+  // Null, with the reason, when the context lacks what the pass needs (GL 4.5, its program).
+  static std::unique_ptr<TracedPicturePass> create(std::string& whyNot);
+
+  // The draw framebuffer's window depths over `viewport` (x, y, width, height), rows bottom
+  // to top.
+  void readDepth(const std::array<int, 4>& viewport, std::vector<float>& out) const;
+  // Uploads a picture of viewport size (`rgba` premultiplied colour and transmittance,
+  // `depth` window depths, rows top to bottom). Empty when uploaded; else what GL said when
+  // allocating the textures.
+  std::string upload(const std::array<int, 4>& viewport, const float* rgba, const float* depth);
+  // Draws the picture uploaded last over `viewport`, whatever state Coin left, and puts the
+  // state back.
+  void draw(const std::array<int, 4>& viewport) const;
+
+ private:
+  TracedPicturePass() = default;
+
+  GlProgram program_;
+  GlVertexArray emptyVertexArray_;
+  GlTexture colour_;
+  GlTexture depth_;
+  int width_ = 0;
+  int height_ = 0;
+};
+
+}  // namespace ivshadow
