@@ -4,8 +4,10 @@
 // and the casters' Embree build against triangles. Run:
 // build/bin/ivshadow_bench --benchmark_filter='MethodFrame|OpacitySlices|BvhBuild'; one
 // bounce against none with --benchmark_filter=Bounce. RaysAgainstCoin puts
-// RAYS next to plain Coin (no shadows) in the same run: static, light moving, camera moving
-// (--benchmark_filter=RaysAgainstCoin), with the pass times of the last frame. Times are wall
+// RAYS and the group's renderer TRACER next to plain Coin (no shadows) in the same run:
+// static, light moving, camera moving (--benchmark_filter=RaysAgainstCoin; arguments
+// triangles, kind: 0 plain Coin, 1 RAYS PEELED, 2 RAYS COIN_BLENDING, 3 TRACER, motion), with
+// the pass times of the last frame. Times are wall
 // clock, GPU finished.
 #include "BenchScenes.h"
 #include "headless/OffscreenRenderer.h"
@@ -189,10 +191,15 @@ void RaysAgainstCoin(benchmark::State& state) {
   SoSearchAction search;
   search.setType(SoTransparentShadowGroup::getClassTypeId());
   search.apply(s.root);
+  auto* group = shadows != 0 ? static_cast<SoTransparentShadowGroup*>(search.getPath()->getTail())
+                              : nullptr;
   if (shadows == 2) {
-    static_cast<SoTransparentShadowGroup*>(search.getPath()->getTail())->transparency =
-        SoTransparentShadowGroup::COIN_BLENDING;
+    group->transparency = SoTransparentShadowGroup::COIN_BLENDING;
     s.renderer->render(s.root);  // the blending program variants
+  }
+  if (shadows == 3) {
+    group->renderer = SoTransparentShadowGroup::TRACER;
+    s.renderer->render(s.root);  // the subgraph read for the tracer, the first trace
   }
   search.setType(SoCamera::getClassTypeId());
   search.apply(s.root);
@@ -220,8 +227,12 @@ void RaysAgainstCoin(benchmark::State& state) {
     state.counters["layers"] = stats.rayLayers;
     state.counters["peel_ms"] = peel.peelMs;
     state.counters["peel_passes"] = peel.passes;
+    state.counters["tracer_ms"] = stats.tracerMs;
+    state.counters["tracer_scene_ms"] = stats.tracerSceneMs;
+    state.counters["tracer_lights_ms"] = stats.tracerLightsMs;
   }
-  static const char* const kinds[3] = {"plain Coin", "RAYS PEELED", "RAYS COIN_BLENDING"};
+  static const char* const kinds[4] = {"plain Coin", "RAYS PEELED", "RAYS COIN_BLENDING",
+                                       "renderer TRACER"};
   static const char* const motions[3] = {" static", " light moving", " camera moving"};
   state.SetLabel(std::string(kinds[shadows]) + motions[motion]);
 }
@@ -247,7 +258,7 @@ BENCHMARK(OpacitySlices)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
 BENCHMARK(RaysAgainstCoin)
-    ->ArgsProduct({{1000, 100000}, {0, 1, 2}, {0, 1, 2}})
+    ->ArgsProduct({{1000, 100000}, {0, 1, 2, 3}, {0, 1, 2}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(5);

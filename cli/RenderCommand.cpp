@@ -105,6 +105,11 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["passes"]["bounce_place_ms"] = shadows.bouncePlaceMs;
   stats["passes"]["bounce_map_ms"] = shadows.bounceMapMs;
   stats["bounce_bytes"] = shadows.bounceBytes;
+  stats["tracer_scenes"] = shadows.tracerScenes;
+  stats["tracer_frames"] = shadows.tracerFrames;
+  stats["passes"]["tracer_scene_ms"] = shadows.tracerSceneMs;
+  stats["passes"]["tracer_lights_ms"] = shadows.tracerLightsMs;
+  stats["passes"]["tracer_ms"] = shadows.tracerMs;
   stats["dsm_layers_used"] = lights;
   stats["dsm_bytes"] = bytes;
   // Peeling runs every frame; these are the last frame's figures, summed over separators.

@@ -50,6 +50,7 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.bounceMapMs += stats.bounceMapMs;
     total.bounceBytes += stats.bounceBytes;
     total.tracerSceneMs += stats.tracerSceneMs;
+    total.tracerLightsMs += stats.tracerLightsMs;
     total.tracerMs += stats.tracerMs;
     total.tracerScenes += stats.tracerScenes;
     total.tracerFrames += stats.tracerFrames;

@@ -40,16 +40,23 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
                               DeepShadowStatistics& statistics) {
   SoState* state = action->getState();
   const SbMatrix& viewing = SoViewingMatrixElement::get(state);
-  // Lights before the camera are fixed in eye space and fog is measured from the eye: a
-  // moved camera moves them, and the subgraph is read again.
-  if (scene_ && castersVersion_ == contents.castersVersion() &&
-      mapsVersion_ == contents.mapsVersion() && viewVersion_ == contents.viewVersion() &&
-      sceneViewing_ == viewing)
-    return;
+  const bool shapesKept = scene_ && castersVersion_ == contents.castersVersion() &&
+                          viewVersion_ == contents.viewVersion() &&
+                          (sceneViewing_ == viewing || !scene_->viewDependent());
+  if (shapesKept && mapsVersion_ == contents.mapsVersion() && sceneViewing_ == viewing) return;
   const auto start = std::chrono::steady_clock::now();
   const SbVec2s size = SoViewportRegionElement::get(state).getViewportSizePixels();
   // A copy: the action's own path changes as it traverses; this one is applied to.
   const CoinRef<SoPath> toGroup(action->getCurPath()->copy());
+  // A moved light, or a moved camera (lights before it are fixed in eye space), changes only
+  // the lights: they are read again without the shapes.
+  if (shapesKept && scene_->updateLights(toGroup.get())) {
+    mapsVersion_ = contents.mapsVersion();
+    sceneViewing_ = viewing;
+    ++sceneVersion_;
+    statistics.tracerLightsMs = millisecondsSince(start);
+    return;
+  }
   scene_ = SceneTracer::fromPath(toGroup.get(), size[0], size[1]);
   castersVersion_ = contents.castersVersion();
   mapsVersion_ = contents.mapsVersion();

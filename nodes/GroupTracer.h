@@ -22,8 +22,8 @@ struct DeepShadowStatistics;
 // A SoTransparentShadowGroup whose renderer is TRACER: its subgraph's triangles are traced
 // on the CPU (SceneTracer: exact shadows and exact glass in one pass, from the depth GL drew
 // before the group on) and the picture is handed to the framebuffer with its depth
-// (TracedPicturePass). The subgraph is read again when it changes (its casters, lights or
-// the inherited state) or the camera moves; the picture is traced again when the subgraph,
+// (TracedPicturePass). The subgraph is read again when it changes (its shapes or the
+// inherited state), only its lights when they or the camera moved; the picture is traced again when the subgraph,
 // the camera, the viewport or the depth drawn before it changed, else the one kept is drawn.
 class GroupTracer {
  public:
@@ -50,7 +50,8 @@ class GroupTracer {
     std::vector<float> depthNow;     // read this frame
   };
 
-  // Reads the subgraph again when it changed since the last read.
+  // Reads the subgraph again when it changed since the last read, or only its lights when
+  // only they (or the camera) changed.
   void updateScene(SoGLRenderAction* action, const GroupContents& contents,
                    DeepShadowStatistics& statistics);
 

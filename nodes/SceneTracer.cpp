@@ -143,6 +143,13 @@ struct Extraction {
   SbMatrix projection = SbMatrix::identity();
   bool haveCamera = false;
   std::uint32_t shape = 0;
+  // Some fog's distance is the view volume's depth (visibility 0): a moved camera changes it.
+  bool fogFollowsView = false;
+  // A pass that reads only the lights again (SceneTracer::updateLights): the groups met are
+  // the ones read before, in the same order.
+  bool lightsOnly = false;
+  std::size_t groupsMet = 0;
+  bool groupsChanged = false;  // ... and they were not
 };
 
 std::vector<int> currentLights(Extraction& data, SoState* state) {
@@ -170,6 +177,20 @@ SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, cons
   auto& data = *static_cast<Extraction*>(user);
   if (!static_cast<const SoTransparentShadowGroup*>(node)->isActive.getValue())
     return SoCallbackAction::CONTINUE;
+  data.viewing = action->getViewingMatrix();
+  if (data.lightsOnly) {
+    const std::size_t index = data.groupsMet++;
+    if (index >= data.groups.size() || data.groups[index].node != node) {
+      data.groupsChanged = true;
+      return SoCallbackAction::PRUNE;
+    }
+    Group& group = data.groups[index];
+    group.lights.clear();
+    group.casting.clear();
+    group.outsideLights = currentLights(data, action->getState());
+    data.groupStack.push_back(int(index));
+    return SoCallbackAction::CONTINUE;
+  }
   Group group;
   group.node = node;
   group.bounce = static_cast<const SoTransparentShadowGroup*>(node)->bounce.getValue() == TRUE;
@@ -247,6 +268,10 @@ void notTriangles(SoCallbackAction* action, Extraction& data) {
   data.untracedPaths.emplace_back(action->getCurPath()->copy());
 }
 
+SoCallbackAction::Response pruneShape(void*, SoCallbackAction*, const SoNode*) {
+  return SoCallbackAction::PRUNE;
+}
+
 SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, const SoNode* node) {
   auto& data = *static_cast<Extraction*>(user);
   ++data.shape;
@@ -310,6 +335,7 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
                             fogVisibility, fogStart);
   material.globalAmbient = toGlm(ambientColour) * ambientIntensity;
   if (fogType != SoEnvironmentElement::NONE) {
+    if (!(fogVisibility > 0.0f)) data.fogFollowsView = true;
     const SbViewVolume& volume = action->getViewVolume();
     const float far =
         fogVisibility > 0.0f ? fogVisibility : volume.getNearDist() + volume.getDepth();
@@ -738,6 +764,40 @@ struct SceneTracer::Data {
   std::vector<const SoPath*> untracedPaths;
 };
 
+namespace {
+
+// Lights were recorded in eye space, as GL keeps them; shading happens in world space. Then
+// the lights that cast in each group, decided as the group decides it
+// (GroupContents::findLights).
+void placeLights(Extraction& data) {
+  const SbMatrix eyeToWorld = data.viewing.inverse();
+  for (Light& light : data.lights) {
+    SbVec3f v;
+    if (light.type == LightType::Directional) {
+      eyeToWorld.multDirMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
+      light.towardsLight = toGlm(v);
+    } else {
+      eyeToWorld.multVecMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
+      light.position = toGlm(v);
+      eyeToWorld.multDirMatrix(
+          SbVec3f(light.eyeSpotDirection.x, light.eyeSpotDirection.y, light.eyeSpotDirection.z), v);
+      light.spotDirection = toGlm(v);
+    }
+  }
+  for (Group& group : data.groups) {
+    const auto& node = *static_cast<const SoTransparentShadowGroup*>(group.node);
+    group.casting.clear();
+    for (int index : group.lights) {
+      CastingLight where;
+      if (int(group.casting.size()) < kMaxGlLights &&
+          castingLight(*data.lights[std::size_t(index)].node, node, SbMatrix::identity(), where))
+        group.casting.push_back(index);
+    }
+  }
+}
+
+}  // namespace
+
 // Reads the scene through `apply` (applying the callback action to a node or a path), then
 // builds the groups' casters and the camera rays' scene.
 std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
@@ -758,35 +818,12 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
     apply(action);
   }
   for (const CoinRef<SoPath>& path : data.untracedPaths) result->untracedPaths.push_back(path.get());
-
-  // Lights were recorded in eye space, as GL keeps them; shading happens in world space.
-  const SbMatrix eyeToWorld = data.viewing.inverse();
-  for (Light& light : data.lights) {
-    SbVec3f v;
-    if (light.type == LightType::Directional) {
-      eyeToWorld.multDirMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
-      light.towardsLight = toGlm(v);
-    } else {
-      eyeToWorld.multVecMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
-      light.position = toGlm(v);
-      eyeToWorld.multDirMatrix(
-          SbVec3f(light.eyeSpotDirection.x, light.eyeSpotDirection.y, light.eyeSpotDirection.z), v);
-      light.spotDirection = toGlm(v);
-    }
-  }
+  placeLights(data);
 
   std::string error;
   result->device = createEmbreeDevice(error);
   if (!result->device) throw std::runtime_error(error);
   for (Group& group : data.groups) {
-    // The lights that cast, decided as the group decides it (GroupContents::findLights).
-    const auto& node = *static_cast<const SoTransparentShadowGroup*>(group.node);
-    for (int index : group.lights) {
-      CastingLight where;
-      if (int(group.casting.size()) < kMaxGlLights &&
-          castingLight(*data.lights[std::size_t(index)].node, node, SbMatrix::identity(), where))
-        group.casting.push_back(index);
-    }
     // In the group's coordinates, from the state in force at the group (as the GL path takes
     // them), then placed in the world.
     SceneTriangles casters = extractShadowCasters(group.path.get());
@@ -804,6 +841,33 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
       [&data](std::size_t i) { return &data.positions[i].x; }, cameraFilter, error);
   if (!result->scene) throw std::runtime_error(error);
   return result;
+}
+
+bool SceneTracer::updateLights(const SoPath* path) {
+  Extraction& data = data_->extraction;
+  data.lights.clear();
+  data.lightOfNode.clear();
+  data.groupStack.clear();
+  data.lightsOnly = true;
+  data.groupsMet = 0;
+  data.groupsChanged = false;
+  {
+    SoCallbackAction action;
+    action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
+    action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
+    action.addPreCallback(SoLight::getClassTypeId(), light, &data);
+    action.addPreCallback(SoShape::getClassTypeId(), pruneShape, nullptr);
+    action.apply(const_cast<SoPath*>(path));
+  }
+  data.lightsOnly = false;
+  data.groupStack.clear();
+  if (data.groupsChanged || data.groupsMet != data.groups.size()) return false;
+  placeLights(data);
+  return true;
+}
+
+bool SceneTracer::viewDependent() const {
+  return data_->extraction.fogFollowsView;
 }
 
 SceneTracer::SceneTracer(std::unique_ptr<Data> data) : data_(std::move(data)) {}

@@ -66,6 +66,14 @@ class IVSHADOW_INTERNAL SceneTracer {
   SceneTracer(const SceneTracer&) = delete;
   SceneTracer& operator=(const SceneTracer&) = delete;
 
+  // Reads the lights on the way to and below `path` again (the one fromPath read), and
+  // where they are, without the shapes: what a moved light or camera changes. False when
+  // the groups below are not the ones read (read the path again).
+  bool updateLights(const SoPath* path);
+  // Whether the picture depends on the camera beyond its rays: a fog whose distance is the
+  // view volume's (visibility 0), read with the triangles.
+  bool viewDependent() const;
+
   // Whether a camera was met before a triangle, and its matrices.
   bool haveCamera() const;
   const SbMatrix& viewing() const;

@@ -68,6 +68,7 @@ struct DeepShadowStatistics {
   std::uint64_t bounceBytes = 0; // the maps' atlas, the lights and the point pool in GL
   // A group whose renderer is TRACER (its subgraph traced whole on the CPU).
   double tracerSceneMs = 0.0;    // last read of the subgraph and build of its Embree scenes
+  double tracerLightsMs = 0.0;   // last read of its lights alone (a light or the camera moved)
   double tracerMs = 0.0;         // last trace of the picture and its upload, wall time
   int tracerScenes = 0;          // times the subgraph was read
   int tracerFrames = 0;          // frames that traced (others drew the picture kept)
