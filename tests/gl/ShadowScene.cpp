@@ -48,7 +48,8 @@ std::string ShadowScene::text() const {
      << -rotationAngle << " }\n"
      << "  " << aboveGroup << "\n"
      << "  DEF Group TransparentShadowGroup {\n"
-     << "    isActive " << (shadowGroupActive ? "TRUE" : "FALSE") << "\n"
+     << "    isActive " << (shadowGroupActive ? "TRUE" : "FALSE")
+     << (groupFields.empty() ? std::string() : " " + groupFields) << "\n"
      << "    Rotation { rotation " << axis[0] << ' ' << axis[1] << ' ' << axis[2] << ' '
      << rotationAngle << " }\n";
   for (int i = 0; i < lightCount; ++i)
@@ -79,7 +80,9 @@ std::string ShadowScene::text() const {
        << "      FaceSet { numVertices 4 }\n    }\n";
   }
   if (peelFilters) iv << "    }\n";
-  iv << "    " << groupNodes << "\n  }\n}\n";
+  iv << "    " << groupNodes << "\n  }\n";
+  if (!belowGroup.empty()) iv << "  " << belowGroup << "\n";
+  iv << "}\n";
   return iv.str();
 }
 

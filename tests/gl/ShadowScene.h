@@ -57,6 +57,8 @@ struct ShadowScene {
   std::string floorNodes;      // Inventor nodes placed before the floor's mesh
   std::string aboveGroup;      // Inventor nodes placed just before the group, outside it
   std::string groupNodes;      // Inventor nodes placed in the group after the filters
+  std::string groupFields;     // fields of the group, e.g. "renderer TRACER"
+  std::string belowGroup;      // Inventor nodes placed just after the group, outside it
   std::array<double, 3> rotationAxis{0.0, 0.0, 1.0};
   double rotationAngle = 0.0;
   int floorCells = 1;  // quads per side of the floor mesh

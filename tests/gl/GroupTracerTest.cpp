@@ -1,0 +1,175 @@
+// SoTransparentShadowGroup renderer TRACER: the analytic pictures of the deep shadow tests,
+// what GL drew before the group hiding what lies behind it, what GL draws after depth-testing
+// against the traced picture, and what is traced or read again when something moves. Every
+// picture is checked against an expectation computed without the tracer (ShadowScene's
+// analytic picture, or a colour set in the scene).
+#include "headless/OffscreenRenderer.h"
+#include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "tests/gl/ShadowScene.h"
+
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTranslation.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace ivshadow::test {
+namespace {
+
+// The tracer shades and composites in floats (the reference's code) and the picture is
+// blended once onto a black framebuffer in 32-bit floats, then rounded to 8 bits: one step.
+constexpr double kTolerance = 1.0;
+
+ShadowScene traced(ShadowScene scene) {
+  scene.groupFields = "renderer TRACER";
+  return scene;
+}
+
+class TracedGroupAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
+
+TEST_P(TracedGroupAnalytic, MatchesThePicture) {
+  const ShadowScene scene = traced(GetParam().scene);
+  const Image image = renderIv(scene.text(), ShadowScene::kSize);
+  const std::string failure = compareWithExpectation(image, GetParam().picture(), kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, TracedGroupAnalytic, ::testing::ValuesIn(analyticCases()),
+                         analyticCaseName);
+
+// A blue square drawn by GL (BASE_COLOR) before or after the group, at height `z` over the
+// floor's left part: x in [-0.95, -0.6], y in [-0.95, 0.95].
+std::string blueSquare(double z) {
+  const std::string h = " " + std::to_string(z);
+  return "Separator { LightModel { model BASE_COLOR } BaseColor { rgb 0 0 1 } "
+         "Coordinate3 { point [ -0.95 -0.95" + h + ", -0.6 -0.95" + h + ", -0.6 0.95" + h +
+         ", -0.95 0.95" + h + " ] } FaceSet { numVertices 4 } }";
+}
+
+// The analytic picture away from the square (ten pixels' margin); inside it, blue or the
+// floor as `blueThere` says.
+ExpectedImage squareOrFloor(const ShadowScene& scene, bool blueThere) {
+  const ShadowPicture floor{&scene, ColourModel::Saturate};
+  return [floor, blueThere](int px, int py) {
+    const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
+    const bool inside = x > -0.85 && x < -0.7 && std::fabs(y) < 0.85;
+    const bool away = x > -0.5 || x < -1.05 || std::fabs(y) > 1.05;
+    if (inside && blueThere) return Expectation{true, {0.0, 0.0, 255.0}};
+    if (inside || away) return floor(px, py);
+    return Expectation{};
+  };
+}
+
+TEST(TracedGroup, WhatGlDrewInFrontBeforeTheGroupHidesTheTracedSurfaces) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.aboveGroup = blueSquare(0.75);  // above the floor and the glass, nearer the camera
+  const Image image = renderIv(scene.text(), ShadowScene::kSize);
+  const std::string failure = compareWithExpectation(image, squareOrFloor(scene, true), kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST(TracedGroup, WhatGlDrewBehindBeforeTheGroupIsHiddenByIt) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.aboveGroup = blueSquare(-0.5);  // below the floor
+  const Image image = renderIv(scene.text(), ShadowScene::kSize);
+  const std::string failure =
+      compareWithExpectation(image, squareOrFloor(scene, false), kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST(TracedGroup, WhatGlDrawsAfterTheGroupDepthTestsAgainstItsPicture) {
+  for (const double z : {0.75, -0.5}) {
+    ShadowScene scene = traced(ShadowScene{});
+    scene.filters = {kRedGlass, kGreenGlass};
+    scene.belowGroup = blueSquare(z);
+    const Image image = renderIv(scene.text(), ShadowScene::kSize);
+    const std::string failure =
+        compareWithExpectation(image, squareOrFloor(scene, z > 0.0), kTolerance);
+    EXPECT_TRUE(failure.empty()) << "square at z = " << z << ": " << failure;
+  }
+}
+
+struct Rendering {
+  SoSeparator* root = nullptr;
+  std::unique_ptr<OffscreenRenderer> renderer;
+  SoDeepShadowLight* lamp = nullptr;
+
+  explicit Rendering(const ShadowScene& scene) {
+    root = readIv(scene.text());
+    std::string error;
+    renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+    EXPECT_TRUE(renderer) << error;
+    lamp = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
+  }
+  ~Rendering() { root->unref(); }
+  DeepShadowStatistics frame() {
+    renderer->render(root);
+    return collectDeepShadowStatistics(root);
+  }
+  void expectAnalytic(const ShadowScene& scene, const char* when) {
+    renderer->render(root);
+    const std::string failure = compareWithExpectation(
+        renderer->read(), ShadowPicture{&scene, ColourModel::Saturate}, kTolerance);
+    EXPECT_TRUE(failure.empty()) << when << ": " << failure;
+  }
+};
+
+TEST(TracedGroup, AStillFrameDrawsThePictureKeptAndAMoveTracesAgain) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.floorNodes = "DEF Lift Translation { translation 0 0 0 }";
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer && r.lamp);
+  const SbVec3f place = r.lamp->location.getValue();
+  r.lamp->location = SbVec3f(0.35f, -0.2f, 1.3f);
+  DeepShadowStatistics stats = r.frame();
+  EXPECT_EQ(stats.tracerScenes, 1);
+  EXPECT_EQ(stats.tracerFrames, 1);
+  stats = r.frame();
+  EXPECT_EQ(stats.tracerFrames, 1) << "a still frame traces nothing";
+
+  // A moved light: the lights alone are read again, and the picture is traced again.
+  r.lamp->location = place;
+  r.expectAnalytic(scene, "after the light moved");
+  stats = collectDeepShadowStatistics(r.root);
+  EXPECT_EQ(stats.tracerScenes, 1);
+  EXPECT_EQ(stats.tracerFrames, 2);
+
+  // A moved camera, and back.
+  auto* camera = static_cast<SoCamera*>(SoNode::getByName("Camera"));
+  if (camera == nullptr) {
+    SoSearchAction search;
+    search.setType(SoCamera::getClassTypeId());
+    search.apply(r.root);
+    camera = static_cast<SoCamera*>(search.getPath()->getTail());
+  }
+  const SbVec3f eye = camera->position.getValue();
+  camera->position = eye + SbVec3f(0.3f, 0.1f, 0.0f);
+  stats = r.frame();
+  EXPECT_EQ(stats.tracerFrames, 3);
+  camera->position = eye;
+  r.expectAnalytic(scene, "after the camera moved and came back");
+  EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerScenes, 1) << "the shapes were kept";
+
+  // A moved caster (the floor): the subgraph is read again.
+  auto* lift = static_cast<SoTranslation*>(SoNode::getByName("Lift"));
+  ASSERT_NE(lift, nullptr);
+  lift->translation = SbVec3f(0.0f, 0.0f, 0.1f);
+  r.frame();
+  lift->translation = SbVec3f(0.0f, 0.0f, 0.0f);
+  r.expectAnalytic(scene, "after the floor moved and came back");
+  EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerScenes, 3);
+}
+
+}  // namespace
+}  // namespace ivshadow::test
