@@ -96,7 +96,10 @@ const std::vector<FieldSpec>& groupFields() {
   static const std::vector<FieldSpec> fields = [] {
     std::vector<FieldSpec> all = fieldsOfType(
         SoTransparentShadowGroup::getClassTypeId(),
-        {{kMethod, "isActive", {}}, {kMethod, "transparency", {}}, {kMethod, "castingLights", {}}});
+        {{kMethod, "isActive", {}},
+         {kMethod, "renderer", {}},
+         {kMethod, "transparency", {}},
+         {kMethod, "castingLights", {}}});
     all.push_back({kBounce, "bounce", {}});
     all.push_back({kBounce, "bounceLights", {1, kMaxBounceLights, 16, 0}});
     return all;
