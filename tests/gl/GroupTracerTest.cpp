@@ -6,6 +6,7 @@
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/SoPath.h>
@@ -169,6 +170,37 @@ TEST(TracedGroup, AStillFrameDrawsThePictureKeptAndAMoveTracesAgain) {
   lift->translation = SbVec3f(0.0f, 0.0f, 0.0f);
   r.expectAnalytic(scene, "after the floor moved and came back");
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerScenes, 3);
+}
+
+TEST(TracedGroup, LinesItCannotTraceAreNamedOnceAndTheRestIsDrawn) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass};
+  scene.groupNodes =
+      "DEF Outline Separator { Coordinate3 { point [ -0.9 -0.9 0.1, 0.9 0.9 0.1 ] } "
+      "LineSet { numVertices 2 } }";
+  CoinMessageCapture capture;
+  SoSeparator* root = readIv(scene.text());
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  renderer->render(root);
+  renderer->render(root);
+  int named = 0;
+  for (const CoinMessageCapture::Message& message : capture.messages())
+    if (message.text.find("renderer TRACER") != std::string::npos &&
+        message.text.find("LineSet") != std::string::npos)
+      ++named;
+  EXPECT_EQ(named, 1);
+  // The floor and the glass's shadow are traced; the line's pixels are not checked.
+  const ShadowPicture floor{&scene, ColourModel::Saturate};
+  const std::string failure = compareWithExpectation(
+      renderer->read(),
+      [&floor](int px, int py) {
+        return std::abs(px - (ShadowScene::kSize - 1 - py)) > 4 ? floor(px, py) : Expectation{};
+      },
+      kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+  root->unref();
 }
 
 }  // namespace
