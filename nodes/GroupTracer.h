@@ -23,8 +23,9 @@ struct DeepShadowStatistics;
 // on the CPU (SceneTracer: exact shadows and exact glass in one pass, from the depth GL drew
 // before the group on) and the picture is handed to the framebuffer with its depth
 // (TracedPicturePass). The subgraph is read again when it changes (its shapes or the
-// inherited state), only its lights when they or the camera moved; the picture is traced again when the subgraph,
-// the camera, the viewport or the depth drawn before it changed, else the one kept is drawn.
+// inherited state), only its lights when they or the camera moved; the picture is traced again when
+// the subgraph, the camera, the viewport or the depth drawn before it changed, else the one kept is
+// drawn.
 class GroupTracer {
  public:
   explicit GroupTracer(SoSeparator* owner);

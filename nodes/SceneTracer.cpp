@@ -137,8 +137,8 @@ struct Extraction {
   std::vector<Group> groups;
   std::vector<int> groupStack;
   std::map<const SoNode*, std::string> skipped;  // shapes without triangles
-  std::vector<std::string> untracedShapes;        // their names, in traversal order
-  std::vector<CoinRef<SoPath>> untracedPaths;     // and the paths to them
+  std::vector<std::string> untracedShapes;       // their names, in traversal order
+  std::vector<CoinRef<SoPath>> untracedPaths;    // and the paths to them
   SbMatrix viewing = SbMatrix::identity();
   SbMatrix projection = SbMatrix::identity();
   bool haveCamera = false;
@@ -527,7 +527,8 @@ class Tracer {
   bool metBefore(const std::vector<Hit>& hits, std::size_t i) const {
     const Triangle& tri = data_.triangles[hits[i].primitive];
     for (std::size_t j = 0; j < i; ++j)
-      if (data_.triangles[hits[j].primitive].shape == tri.shape && sameSurface(hits[j].t, hits[i].t))
+      if (data_.triangles[hits[j].primitive].shape == tri.shape &&
+          sameSurface(hits[j].t, hits[i].t))
         return true;
     return false;
   }
@@ -610,8 +611,7 @@ class Tracer {
     float attenuation;
   };
   static Incidence incidence(const Light& light, const glm::vec3& position) {
-    if (light.type == LightType::Directional)
-      return {glm::normalize(light.towardsLight), 1.0f};
+    if (light.type == LightType::Directional) return {glm::normalize(light.towardsLight), 1.0f};
     const glm::vec3 v = light.position - position;
     const float distance = glm::length(v);
     Incidence in{distance > 0.0f ? v / distance : glm::vec3(0.0f, 0.0f, 1.0f), 1.0f};
@@ -619,7 +619,8 @@ class Tracer {
                              light.attenuation.z * distance * distance);
     if (light.type == LightType::Spot) {
       const float spotCos = glm::dot(-in.toLight, glm::normalize(light.spotDirection));
-      in.attenuation *= spotCos < light.spotCosCutoff ? 0.0f : std::pow(spotCos, light.spotExponent);
+      in.attenuation *=
+          spotCos < light.spotCosCutoff ? 0.0f : std::pow(spotCos, light.spotExponent);
     }
     return in;
   }
@@ -630,7 +631,8 @@ class Tracer {
   }
 
   ShadowColourModel modelOf(const Group& group, const Light& light) const {
-    return castingColourModel(*light.node, *static_cast<const SoTransparentShadowGroup*>(group.node),
+    return castingColourModel(*light.node,
+                              *static_cast<const SoTransparentShadowGroup*>(group.node),
                               group.casters->coloured());
   }
 
@@ -695,8 +697,8 @@ class Tracer {
     // The surface's own side: directions into it are counted as light that does not come.
     const glm::vec3 front =
         glm::dot(tri.geometricNormal, normal) >= 0.0f ? tri.geometricNormal : -tri.geometricNormal;
-    const float scale = std::max({std::fabs(position.x), std::fabs(position.y),
-                                  std::fabs(position.z), 1.0f});
+    const float scale =
+        std::max({std::fabs(position.x), std::fabs(position.y), std::fabs(position.z), 1.0f});
     glm::vec3 sum(0.0f);
     for (int i = 0; i < side; ++i)
       for (int j = 0; j < side; ++j) {
@@ -707,8 +709,8 @@ class Tracer {
                                     std::sqrt(std::max(0.0f, 1.0f - u)) * normal;
         if (!(glm::dot(direction, front) > 0.0f)) continue;
         ++rays.bounce;
-        if (!surfacesAlong(position, direction, 1e-5f * scale, std::numeric_limits<float>::infinity(),
-                           hits))
+        if (!surfacesAlong(position, direction, 1e-5f * scale,
+                           std::numeric_limits<float>::infinity(), hits))
           continue;
         const Hit& hit = hits.back();
         const Triangle& reflector = data_.triangles[hit.primitive];
@@ -734,9 +736,8 @@ class Tracer {
             const TextureImage* glassImage = imageOf(data_, glass);
             const SurfaceSample g =
                 sampleSurface(glass.colour, glass.texCoord, glassImage, hits[k].u, hits[k].v);
-            through *= transmittance(glm::clamp(texturedColour(g.colour, g.texel, glassImage),
-                                                0.0f, 1.0f),
-                                     model);
+            through *= transmittance(
+                glm::clamp(texturedColour(g.colour, g.texel, glassImage), 0.0f, 1.0f), model);
           }
           ++rays.shadow;
           sum += through * kd * light.colour * (nDotL * in.attenuation) *
@@ -817,7 +818,8 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
     action.addPointCallback(SoShape::getClassTypeId(), point, &data);
     apply(action);
   }
-  for (const CoinRef<SoPath>& path : data.untracedPaths) result->untracedPaths.push_back(path.get());
+  for (const CoinRef<SoPath>& path : data.untracedPaths)
+    result->untracedPaths.push_back(path.get());
   placeLights(data);
 
   std::string error;
@@ -879,9 +881,10 @@ std::unique_ptr<SceneTracer> SceneTracer::fromScene(SoNode* root, int width, int
 }
 
 std::unique_ptr<SceneTracer> SceneTracer::fromPath(const SoPath* path, int width, int height) {
-  return std::unique_ptr<SceneTracer>(new SceneTracer(extract(
-      width, height,
-      [path](SoCallbackAction& action) { action.apply(const_cast<SoPath*>(path)); })));
+  return std::unique_ptr<SceneTracer>(
+      new SceneTracer(extract(width, height, [path](SoCallbackAction& action) {
+        action.apply(const_cast<SoPath*>(path));
+      })));
 }
 
 bool SceneTracer::haveCamera() const {

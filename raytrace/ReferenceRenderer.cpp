@@ -48,9 +48,8 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   if (!tracer->trace(trace, pixelsOut)) return std::nullopt;
   for (std::size_t i = 0; i < pixels; ++i)
     for (int c = 0; c < 3; ++c)
-      result.image.rgb[i * 3 + std::size_t(c)] =
-          pixelsOut.rgba[i * 4 + std::size_t(c)] +
-          pixelsOut.rgba[i * 4 + 3] * options.background[c];
+      result.image.rgb[i * 3 + std::size_t(c)] = pixelsOut.rgba[i * 4 + std::size_t(c)] +
+                                                 pixelsOut.rgba[i * 4 + 3] * options.background[c];
   result.shadowRays = pixelsOut.shadowRays;
   result.bounceRays = pixelsOut.bounceRays;
   return result;

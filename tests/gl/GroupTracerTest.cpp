@@ -51,8 +51,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, TracedGroupAnalytic, ::testing::ValuesIn(analyti
 std::string blueSquare(double z) {
   const std::string h = " " + std::to_string(z);
   return "Separator { LightModel { model BASE_COLOR } BaseColor { rgb 0 0 1 } "
-         "Coordinate3 { point [ -0.95 -0.95" + h + ", -0.6 -0.95" + h + ", -0.6 0.95" + h +
-         ", -0.95 0.95" + h + " ] } FaceSet { numVertices 4 } }";
+         "Coordinate3 { point [ -0.95 -0.95" +
+         h + ", -0.6 -0.95" + h + ", -0.6 0.95" + h + ", -0.95 0.95" + h +
+         " ] } FaceSet { numVertices 4 } }";
 }
 
 // The analytic picture away from the square (ten pixels' margin); inside it, blue or the
@@ -178,8 +179,8 @@ TEST(TracedGroup, LinesItCannotTraceAreNamedOnceAndTheRestIsDrawn) {
   scene.groupNodes =
       "DEF Outline Separator { Coordinate3 { point [ -0.9 -0.9 0.1, 0.9 0.9 0.1 ] } "
       "LineSet { numVertices 2 } }";
+  SoSeparator* root = readIv(scene.text());  // initialises Coin, which sets its handlers
   CoinMessageCapture capture;
-  SoSeparator* root = readIv(scene.text());
   std::string error;
   auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
