@@ -5,6 +5,7 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/GroupContents.h"
 #include "scene/CoinRef.h"
+#include "scene/EnvironmentValues.h"
 #include "scene/SceneTriangles.h"
 #include "scene/WarnOnce.h"
 
@@ -14,10 +15,13 @@
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
 #include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoLightElement.h>
+#include <Inventor/elements/SoModelMatrixElement.h>
 #include <Inventor/elements/SoProjectionMatrixElement.h>
 #include <Inventor/elements/SoViewingMatrixElement.h>
 #include <Inventor/elements/SoViewportRegionElement.h>
 #include <Inventor/errors/SoDebugError.h>
+#include <Inventor/lists/SoNodeList.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <chrono>
@@ -25,6 +29,36 @@
 
 namespace ivshadow {
 namespace {
+
+// What the state above the group holds that the traced picture depends on and the group
+// is not notified of: the lights in force (node, version, where) and the model matrix, then
+// the lighting's material values, the light model and the environment. `lights` gets the
+// first part, `shading` the second.
+void stateAbove(SoState* state, std::vector<float>& lights, std::vector<float>& shading) {
+  lights.clear();
+  shading.clear();
+  const SoNodeList& inForce = SoLightElement::getLights(state);
+  for (int i = 0; i < inForce.getLength(); ++i) {
+    lights.push_back(float(inForce[i]->getNodeId()));
+    const SbMatrix& matrix = SoLightElement::getMatrix(state, i);
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) lights.push_back(matrix[r][c]);
+  }
+  const SbMatrix& model = SoModelMatrixElement::get(state);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) shading.push_back(model[r][c]);
+  for (const SbColor* colour :
+       {&SoLazyElement::getAmbient(state), &SoLazyElement::getEmissive(state),
+        &SoLazyElement::getSpecular(state)})
+    for (int i = 0; i < 3; ++i) shading.push_back((*colour)[i]);
+  shading.push_back(SoLazyElement::getShininess(state));
+  shading.push_back(float(SoLazyElement::getLightModel(state)));
+  const EnvironmentValues e = EnvironmentValues::of(state);
+  shading.insert(shading.end(),
+                 {e.ambientIntensity, e.ambientColour[0], e.ambientColour[1], e.ambientColour[2],
+                  e.attenuation[0], e.attenuation[1], e.attenuation[2], float(e.fogType),
+                  e.fogColour[0], e.fogColour[1], e.fogColour[2], e.fogVisibility, e.fogStart});
+}
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -40,16 +74,26 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
                               DeepShadowStatistics& statistics) {
   SoState* state = action->getState();
   const SbMatrix& viewing = SoViewingMatrixElement::get(state);
-  const bool shapesKept = scene_ && castersVersion_ == contents.castersVersion() &&
-                          viewVersion_ == contents.viewVersion() &&
-                          (sceneViewing_ == viewing || !scene_->viewDependent());
-  if (shapesKept && mapsVersion_ == contents.mapsVersion() && sceneViewing_ == viewing) return;
+  const SbMatrix& projection = SoProjectionMatrixElement::get(state);
+  stateAbove(state, lightsNow_, shadingNow_);
+  // The triangles are kept in the world: a transform above the group moves them, as does a
+  // change of the material or environment above it, which the group is not notified of.
+  const bool shapesKept =
+      scene_ && castersVersion_ == contents.castersVersion() &&
+      viewVersion_ == contents.viewVersion() && shadingNow_ == shadingAbove_ &&
+      ((sceneViewing_ == viewing && sceneProjection_ == projection) || !scene_->viewDependent());
+  if (shapesKept && mapsVersion_ == contents.mapsVersion() && sceneViewing_ == viewing &&
+      lightsNow_ == lightsAbove_)
+    return;
   const auto start = std::chrono::steady_clock::now();
   const SbVec2s size = SoViewportRegionElement::get(state).getViewportSizePixels();
   // A copy: the action's own path changes as it traverses; this one is applied to.
   const CoinRef<SoPath> toGroup(action->getCurPath()->copy());
   // A moved light, or a moved camera (lights before it are fixed in eye space), changes only
   // the lights: they are read again without the shapes.
+  lightsAbove_.swap(lightsNow_);
+  shadingAbove_.swap(shadingNow_);
+  sceneProjection_ = projection;
   if (shapesKept && scene_->updateLights(toGroup.get())) {
     mapsVersion_ = contents.mapsVersion();
     sceneViewing_ = viewing;

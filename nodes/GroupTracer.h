@@ -63,6 +63,9 @@ class GroupTracer {
   std::uint64_t mapsVersion_ = ~std::uint64_t(0);
   std::uint64_t viewVersion_ = ~std::uint64_t(0);
   SbMatrix sceneViewing_;  // lights fixed in eye space were placed with it
+  SbMatrix sceneProjection_;
+  // The state above the group the subgraph was read in (stateAbove), and this frame's.
+  std::vector<float> lightsAbove_, shadingAbove_, lightsNow_, shadingNow_;
   PerContext<Context> contexts_;
   TracedPixels pixels_;
 };

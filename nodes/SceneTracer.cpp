@@ -10,6 +10,7 @@
 #include "raytrace/ParallelRows.h"
 #include "raytrace/SurfaceOptics.h"
 #include "scene/CoinRef.h"
+#include "scene/EnvironmentValues.h"
 #include "scene/SceneTriangles.h"
 #include "scene/ShapeValidation.h"
 
@@ -177,8 +178,8 @@ SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, cons
   auto& data = *static_cast<Extraction*>(user);
   if (!static_cast<const SoTransparentShadowGroup*>(node)->isActive.getValue())
     return SoCallbackAction::CONTINUE;
-  data.viewing = action->getViewingMatrix();
   if (data.lightsOnly) {
+    data.viewing = action->getViewingMatrix();
     const std::size_t index = data.groupsMet++;
     if (index >= data.groups.size() || data.groups[index].node != node) {
       data.groupsChanged = true;
@@ -327,12 +328,12 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   material.specular = toGlm(specular);
   material.emission = toGlm(emission);
   material.shininess = shininess * 128.0f;
-  float ambientIntensity = 0.0f, fogVisibility = 0.0f, fogStart = 0.0f;
-  SbColor ambientColour, fogColour;
-  SbVec3f attenuation;
-  int32_t fogType = 0;
-  SoEnvironmentElement::get(state, ambientIntensity, ambientColour, attenuation, fogType, fogColour,
-                            fogVisibility, fogStart);
+  const EnvironmentValues environment = EnvironmentValues::of(state);
+  const float ambientIntensity = environment.ambientIntensity;
+  const float fogVisibility = environment.fogVisibility, fogStart = environment.fogStart;
+  const SbColor& ambientColour = environment.ambientColour;
+  const SbColor& fogColour = environment.fogColour;
+  const int32_t fogType = environment.fogType;
   material.globalAmbient = toGlm(ambientColour) * ambientIntensity;
   if (fogType != SoEnvironmentElement::NONE) {
     if (!(fogVisibility > 0.0f)) data.fogFollowsView = true;
@@ -763,6 +764,8 @@ struct SceneTracer::Data {
   EmbreeDevice device;
   EmbreeScene scene;
   std::vector<const SoPath*> untracedPaths;
+  int width = 0;
+  int height = 0;
 };
 
 namespace {
@@ -804,6 +807,8 @@ void placeLights(Extraction& data) {
 std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
     int width, int height, const std::function<void(SoCallbackAction&)>& apply) {
   auto result = std::make_unique<Data>();
+  result->width = width;
+  result->height = height;
   Extraction& data = result->extraction;
   {
     SoCallbackAction action{SbViewportRegion(short(width), short(height))};
@@ -847,6 +852,8 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
 
 bool SceneTracer::updateLights(const SoPath* path) {
   Extraction& data = data_->extraction;
+  // Triangles outside any group index light sets of the lights read before.
+  if (!data.lightSets.empty()) return false;
   data.lights.clear();
   data.lightOfNode.clear();
   data.groupStack.clear();
@@ -854,7 +861,8 @@ bool SceneTracer::updateLights(const SoPath* path) {
   data.groupsMet = 0;
   data.groupsChanged = false;
   {
-    SoCallbackAction action;
+    // The viewport of the read: a level of detail picks the same children.
+    SoCallbackAction action{SbViewportRegion(short(data_->width), short(data_->height))};
     action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
     action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
     action.addPreCallback(SoLight::getClassTypeId(), light, &data);

@@ -71,10 +71,11 @@ struct PeelStatistics;
   exact depth order), from the near plane to the depth GL drew before the group, and the
   picture is blended onto the framebuffer with the depth of its nearest opaque surface, so
   what GL draws after the group depth-tests against it. The picture is kept while the
-  subgraph, the camera, the viewport and the depth drawn before it stay the same: a still
+  subgraph, the state above the group (transforms, lights, material, light model,
+  environment), the camera, the viewport and the depth drawn before it stay the same: a still
   frame only draws it again. Shapes drawn with lines, points or screen-aligned pixels are not
   drawn (one warning names them). With `bounce TRUE`, `bounceLights` is the number of bounce
-  rays per pixel. The fields of the maps (resolution, layers, filters) do not apply.
+  rays per shaded point (rounded up to a square). The fields of the maps (resolution, layers, filters) do not apply.
 
   FILE FORMAT/DEFAULTS:
   \code

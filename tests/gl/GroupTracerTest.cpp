@@ -12,6 +12,8 @@
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoLight.h>
+#include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTranslation.h>
 
@@ -21,6 +23,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ivshadow::test {
 namespace {
@@ -171,6 +174,41 @@ TEST(TracedGroup, AStillFrameDrawsThePictureKeptAndAMoveTracesAgain) {
   lift->translation = SbVec3f(0.0f, 0.0f, 0.0f);
   r.expectAnalytic(scene, "after the floor moved and came back");
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerScenes, 3);
+}
+
+// The group is not notified of changes above it: a transform, a light or a material there
+// changes what is traced all the same. Each case starts away from ShadowScene's picture and
+// is put back; a picture kept from before would be the first frame's.
+TEST(TracedGroup, ChangesAboveTheGroupAreTraced) {
+  struct Case {
+    const char* name;
+    std::string above;
+    std::function<void()> putBack;
+  };
+  const std::vector<Case> cases = {
+      {"a translation", "DEF Shift Translation { translation 0.3 0 0 }",
+       [] {
+         static_cast<SoTranslation*>(SoNode::getByName("Shift"))->translation =
+             SbVec3f(0.0f, 0.0f, 0.0f);
+       }},
+      {"a light", "DEF Above DirectionalLight { direction 0 0 -1 }",
+       [] { static_cast<SoLight*>(SoNode::getByName("Above"))->on = FALSE; }},
+      {"a material", "DEF Glow Material { emissiveColor 0.3 0.3 0.3 }",
+       [] {
+         static_cast<SoMaterial*>(SoNode::getByName("Glow"))->emissiveColor =
+             SbColor(0.0f, 0.0f, 0.0f);
+       }},
+  };
+  for (const Case& c : cases) {
+    ShadowScene scene = traced(ShadowScene{});
+    scene.filters = {kRedGlass};
+    scene.aboveGroup = c.above;
+    Rendering r(scene);
+    ASSERT_TRUE(r.renderer);
+    r.frame();
+    c.putBack();
+    r.expectAnalytic(scene, c.name);
+  }
 }
 
 TEST(TracedGroup, LinesItCannotTraceAreNamedOnceAndTheRestIsDrawn) {
