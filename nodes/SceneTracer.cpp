@@ -26,14 +26,11 @@
 #include <Inventor/elements/SoLightElement.h>
 #include <Inventor/lists/SoNodeList.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
-#include <Inventor/nodes/SoDrawStyle.h>
-#include <Inventor/nodes/SoImage.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoPointLight.h>
 #include <Inventor/nodes/SoShape.h>
 #include <Inventor/nodes/SoShapeHints.h>
 #include <Inventor/nodes/SoSpotLight.h>
-#include <Inventor/nodes/SoText2.h>
 
 #include <cstring>
 #include <functional>
@@ -276,23 +273,17 @@ SoCallbackAction::Response pruneShape(void*, SoCallbackAction*, const SoNode*) {
 SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, const SoNode* node) {
   auto& data = *static_cast<Extraction*>(user);
   ++data.shape;
-  // Screen-aligned text and images give no primitive (extractShadowCasters): said, not drawn.
-  if (node->isOfType(SoText2::getClassTypeId()) || node->isOfType(SoImage::getClassTypeId())) {
-    notTriangles(action, data);
-    return SoCallbackAction::PRUNE;
-  }
-  // SoCallbackAction generates a shape's triangles whatever the draw style, as for the
-  // casters (extractShadowCasters): GL draws outlines or points, which this does not draw.
-  switch (action->getDrawStyle()) {
-    case SoDrawStyle::INVISIBLE:
+  // What GL draws as pixels, outlines or points is said, not drawn.
+  switch (shapeFill(action, node)) {
+    case ShapeFill::Invisible:
       return SoCallbackAction::PRUNE;
-    case SoDrawStyle::LINES:
-    case SoDrawStyle::POINTS:
+    case ShapeFill::Unfilled:
       notTriangles(action, data);
       return SoCallbackAction::PRUNE;
-    default:
-      return SoCallbackAction::CONTINUE;
+    case ShapeFill::Filled:
+      break;
   }
+  return SoCallbackAction::CONTINUE;
 }
 
 void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,

@@ -146,6 +146,25 @@ void triangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   if (transparent) collector.result.transparentBounds.extendBy(corners);
 }
 
+}  // namespace
+
+ShapeFill shapeFill(SoCallbackAction* action, const SoNode* node) {
+  // Coin draws screen-aligned text and images as pixels at a projected point.
+  if (node->isOfType(SoText2::getClassTypeId()) || node->isOfType(SoImage::getClassTypeId()))
+    return ShapeFill::Unfilled;
+  switch (action->getDrawStyle()) {
+    case SoDrawStyle::INVISIBLE:
+      return ShapeFill::Invisible;
+    case SoDrawStyle::LINES:
+    case SoDrawStyle::POINTS:
+      return ShapeFill::Unfilled;
+    default:
+      return ShapeFill::Filled;
+  }
+}
+
+namespace {
+
 void notTriangles(Collector& collector, SoCallbackAction* action) {
   if (!(SoShadowStyleElement::get(action->getState()) & SoShadowStyleElement::CASTS_SHADOW)) return;
   const SoNode* node = action->getCurPathTail();
@@ -171,24 +190,17 @@ SoCallbackAction::Response startShape(void* data, SoCallbackAction* action, cons
   ++collector.shape;
   if (skipDefectiveShape(nullptr, action, node) == SoCallbackAction::PRUNE)
     return SoCallbackAction::PRUNE;
-  // Screen-aligned text and images: Coin draws their pixels at a projected point and gives a
-  // callback action no primitive, so they would cast nothing without a word.
-  if (node->isOfType(SoText2::getClassTypeId()) || node->isOfType(SoImage::getClassTypeId())) {
-    notTriangles(collector, action);
-    return SoCallbackAction::PRUNE;
-  }
-  // SoCallbackAction generates a shape's triangles whatever the draw style; Coin's GL
-  // rendering draws them as outlines or points (which cast nothing) or not at all.
-  switch (action->getDrawStyle()) {
-    case SoDrawStyle::INVISIBLE:
+  // What GL does not fill casts nothing; what it draws as pixels, outlines or points is said.
+  switch (shapeFill(action, node)) {
+    case ShapeFill::Invisible:
       return SoCallbackAction::PRUNE;
-    case SoDrawStyle::LINES:
-    case SoDrawStyle::POINTS:
+    case ShapeFill::Unfilled:
       notTriangles(collector, action);
       return SoCallbackAction::PRUNE;
-    default:
-      return SoCallbackAction::CONTINUE;
+    case ShapeFill::Filled:
+      break;
   }
+  return SoCallbackAction::CONTINUE;
 }
 
 SceneTriangles extract(const std::function<void(SoCallbackAction&)>& apply) {

@@ -82,6 +82,13 @@ IVSHADOW_INTERNAL SceneTriangles extractShadowCasters(SoNode* root);
 // The triangles are in the tail's own coordinates (transforms above it are undone).
 IVSHADOW_INTERNAL SceneTriangles extractShadowCasters(const SoPath* toGroup);
 
+// What Coin's GL rendering fills of a shape that SoCallbackAction turns into triangles
+// whatever it is: its triangles (Filled); nothing of them (Unfilled: screen-aligned SoText2
+// and SoImage, which give a callback action no primitive, and DrawStyle LINES or POINTS,
+// drawn as outlines or points); or nothing at all (Invisible: DrawStyle INVISIBLE).
+enum class ShapeFill { Filled, Unfilled, Invisible };
+IVSHADOW_INTERNAL ShapeFill shapeFill(SoCallbackAction* action, const SoNode* node);
+
 // A node as messages name it: its type and, when it has one, its DEF name ("LineSet 'Wire'").
 IVSHADOW_INTERNAL std::string describeNode(const SoNode* node);
 
