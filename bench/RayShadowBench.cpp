@@ -6,7 +6,8 @@
 // bounce against none with --benchmark_filter=Bounce. RaysAgainstCoin puts
 // RAYS and the group's renderer TRACER next to plain Coin (no shadows) in the same run:
 // static, light moving, camera moving (--benchmark_filter=RaysAgainstCoin; arguments
-// triangles, kind: 0 plain Coin, 1 RAYS PEELED, 2 RAYS COIN_BLENDING, 3 TRACER, motion), with
+// triangles, kind: 0 plain Coin, 1 RAYS PEELED, 2 RAYS COIN_BLENDING, 3 TRACER, 4 TRACER with
+// movingResolution 0.5, motion), with
 // the pass times of the last frame. Times are wall
 // clock, GPU finished.
 #include "BenchScenes.h"
@@ -179,8 +180,9 @@ void BvhBuild(benchmark::State& state) {
 }
 
 // Args: triangles, shadows (0 plain Coin; 1 RAYS, the group's default transparency PEELED;
-// 2 RAYS, transparency COIN_BLENDING, blended as plain Coin blends), motion (0 static, 1 light
-// moving, 2 camera moving), at 800 x 600. Plain Coin's light and camera move as RAYS's do, so
+// 2 RAYS, transparency COIN_BLENDING, blended as plain Coin blends; 3 renderer TRACER; 4 the
+// same with movingResolution 0.5: every frame after the first of a motion traced at 400 x
+// 300), motion (0 static, 1 light moving, 2 camera moving), at 800 x 600. Plain Coin's light and camera move as RAYS's do, so
 // each ratio compares the same frames.
 void RaysAgainstCoin(benchmark::State& state) {
   const int shadows = int(state.range(1));
@@ -197,8 +199,9 @@ void RaysAgainstCoin(benchmark::State& state) {
     group->transparency = SoTransparentShadowGroup::COIN_BLENDING;
     s.renderer->render(s.root);  // the blending program variants
   }
-  if (shadows == 3) {
+  if (shadows >= 3) {
     group->renderer = SoTransparentShadowGroup::TRACER;
+    if (shadows == 4) group->movingResolution = 0.5f;
     s.renderer->render(s.root);  // the subgraph read for the tracer, the first trace
   }
   search.setType(SoCamera::getClassTypeId());
@@ -230,9 +233,10 @@ void RaysAgainstCoin(benchmark::State& state) {
     state.counters["tracer_ms"] = stats.tracerMs;
     state.counters["tracer_scene_ms"] = stats.tracerSceneMs;
     state.counters["tracer_lights_ms"] = stats.tracerLightsMs;
+    state.counters["tracer_width"] = stats.tracerWidth;
   }
-  static const char* const kinds[4] = {"plain Coin", "RAYS PEELED", "RAYS COIN_BLENDING",
-                                       "renderer TRACER"};
+  static const char* const kinds[5] = {"plain Coin", "RAYS PEELED", "RAYS COIN_BLENDING",
+                                       "renderer TRACER", "TRACER movingResolution 0.5"};
   static const char* const motions[3] = {" static", " light moving", " camera moving"};
   state.SetLabel(std::string(kinds[shadows]) + motions[motion]);
 }
@@ -258,7 +262,7 @@ BENCHMARK(OpacitySlices)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
 BENCHMARK(RaysAgainstCoin)
-    ->ArgsProduct({{1000, 100000}, {0, 1, 2, 3}, {0, 1, 2}})
+    ->ArgsProduct({{1000, 100000}, {0, 1, 2, 3, 4}, {0, 1, 2}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(5);

@@ -41,9 +41,8 @@ void TracedPicturePass::readDepth(const std::array<int, 4>& viewport,
                out.data());
 }
 
-std::string TracedPicturePass::upload(const std::array<int, 4>& viewport, const float* rgba,
+std::string TracedPicturePass::upload(int width, int height, const float* rgba,
                                       const float* depth) {
-  const int width = viewport[2], height = viewport[3];
   if (width != width_ || height != height_) {
     width_ = height_ = 0;
     clearGlErrors();
@@ -55,6 +54,9 @@ std::string TracedPicturePass::upload(const std::array<int, 4>& viewport, const 
       depth_ = GlTexture();
       return error;
     }
+    // Stretched over a larger viewport, the colour is interpolated and stops at the edges.
+    glTextureParameteri(colour_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(colour_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     width_ = width;
     height_ = height;
   }
@@ -83,7 +85,11 @@ void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   program_.setInt("uColour", kColourUnit);
   program_.setInt("uDepth", kDepthUnit);
   glUniform2i(program_.location("uOrigin"), viewport[0], viewport[1]);
-  program_.setInt("uHeight", viewport[3]);
+  glUniform2i(program_.location("uSize"), viewport[2], viewport[3]);
+  // At the viewport's size each fragment takes its own pixel, unfiltered.
+  const GLint filter = width_ == viewport[2] && height_ == viewport[3] ? GL_NEAREST : GL_LINEAR;
+  glTextureParameteri(colour_.get(), GL_TEXTURE_MIN_FILTER, filter);
+  glTextureParameteri(colour_.get(), GL_TEXTURE_MAG_FILTER, filter);
   glBindTextureUnit(GLuint(kColourUnit), colour_.get());
   glBindTextureUnit(GLuint(kDepthUnit), depth_.get());
   glBindVertexArray(emptyVertexArray_.get());

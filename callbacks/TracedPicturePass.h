@@ -23,12 +23,14 @@ class TracedPicturePass {
   // The draw framebuffer's window depths over `viewport` (x, y, width, height), rows bottom
   // to top.
   void readDepth(const std::array<int, 4>& viewport, std::vector<float>& out) const;
-  // Uploads a picture of viewport size (`rgba` premultiplied colour and transmittance,
-  // `depth` window depths, rows top to bottom). Empty when uploaded; else what GL said when
-  // allocating the textures.
-  std::string upload(const std::array<int, 4>& viewport, const float* rgba, const float* depth);
+  // Uploads a picture of `width` x `height` pixels (`rgba` premultiplied colour and
+  // transmittance, `depth` window depths, rows top to bottom). Empty when uploaded; else what
+  // GL said when allocating the textures.
+  std::string upload(int width, int height, const float* rgba, const float* depth);
   // Draws the picture uploaded last over `viewport`, whatever state Coin left, and puts the
-  // state back.
+  // state back. A picture smaller than the viewport (a frame traced at a lower resolution
+  // while the scene moves) is stretched over it: its colour interpolated, its depth the
+  // nearest pixel's.
   void draw(const std::array<int, 4>& viewport) const;
 
  private:

@@ -107,6 +107,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["bounce_bytes"] = shadows.bounceBytes;
   stats["tracer_scenes"] = shadows.tracerScenes;
   stats["tracer_frames"] = shadows.tracerFrames;
+  stats["tracer_size"] = {shadows.tracerWidth, shadows.tracerHeight};
   stats["passes"]["tracer_scene_ms"] = shadows.tracerSceneMs;
   stats["passes"]["tracer_lights_ms"] = shadows.tracerLightsMs;
   stats["passes"]["tracer_ms"] = shadows.tracerMs;

@@ -108,6 +108,16 @@ DeepShadowSettings resolveSettings(SoTransparentShadowGroup& group, int maxTextu
   return resolveFields(group, maxTextureSize);
 }
 
+float resolveMovingResolution(SoTransparentShadowGroup& group) {
+  const float value = group.movingResolution.getValue();
+  if (value >= kMinMovingResolution && value <= 1.0f) return value;
+  const float clamped = std::isfinite(value) ? std::clamp(value, kMinMovingResolution, 1.0f) : 1.0f;
+  std::ostringstream text;
+  text << "is " << value << ", outside " << kMinMovingResolution << "..1; using " << clamped;
+  warnOnce(group, "movingResolution", text.str());
+  return clamped;
+}
+
 DeepShadowSettings castingSettings(SoLight& light, SoTransparentShadowGroup& group,
                                    int maxTextureSize) {
   if (light.isOfType(SoDeepShadowLight::getClassTypeId()))
@@ -132,9 +142,9 @@ BounceSettings resolveBounce(SoTransparentShadowGroup& group) {
   s.mapSize = kMinBounceMapSize;
   while (s.mapSize * 2 <= size) s.mapSize *= 2;
   if (s.on && s.mapSize != size)
-    warnOnce(group, "bounceMapSize",
-             "is " + std::to_string(size) + ", not a power of two; using " +
-                 std::to_string(s.mapSize));
+    warnOnce(
+        group, "bounceMapSize",
+        "is " + std::to_string(size) + ", not a power of two; using " + std::to_string(s.mapSize));
   return s;
 }
 

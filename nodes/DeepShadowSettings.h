@@ -33,20 +33,28 @@ struct BounceSettings {
 // Reads and clamps them, each field out of range reported once, as resolveSettings does.
 IVSHADOW_INTERNAL BounceSettings resolveBounce(SoTransparentShadowGroup& group);
 
+// The fraction of the viewport's width and height a traced group traces at while it moves
+// (SoTransparentShadowGroup::movingResolution), and how long it waits for stillness before
+// tracing the full picture.
+inline constexpr float kMinMovingResolution = 0.125f;
+inline constexpr double kRefineDelaySeconds = 0.25;
+// Reads and clamps it to kMinMovingResolution .. 1, a value outside reported once.
+IVSHADOW_INTERNAL float resolveMovingResolution(SoTransparentShadowGroup& group);
+
 // The fields of a SoDeepShadowLight after clamping to what the map builder accepts.
 struct DeepShadowSettings {
   int resolution = 512;
   int maxLayers = 4;
   int slices = kDefaultOpacitySlices;  // an opacity map's (method OPACITY_MAP)
-  float nearRadius = -1.0f;  // <= 0: fitted to the casters
-  float farRadius = -1.0f;   // <= 0: fitted to the casters
+  float nearRadius = -1.0f;            // <= 0: fitted to the casters
+  float farRadius = -1.0f;             // <= 0: fitted to the casters
   float bias = 1.0f;
   int shadowColor = 0;  // SoDeepShadowLight::ShadowColor
   int colorModel = 0;   // SoDeepShadowLight::ColorModel
   bool halfPrecision = false;
   // 0: the nearest texel; w: the mean over a w x w texel square (PCF, lighting.glsl)
   int filterWidth = 0;
-  int method = 0;        // SoDeepShadowLight::Method as set (AUTO not yet resolved)
+  int method = 0;  // SoDeepShadowLight::Method as set (AUTO not yet resolved)
 };
 
 // Reads and clamps the light's fields; each field that is out of range is reported once per

@@ -54,6 +54,10 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.tracerMs += stats.tracerMs;
     total.tracerScenes += stats.tracerScenes;
     total.tracerFrames += stats.tracerFrames;
+    total.tracerWidth = std::max(total.tracerWidth, stats.tracerWidth);
+    total.tracerHeight = std::max(total.tracerHeight, stats.tracerHeight);
+    total.tracerReduced += stats.tracerReduced;
+    total.tracerRefines += stats.tracerRefines;
   });
   return total;
 }

@@ -3,6 +3,7 @@
 #include "callbacks/TracedPicturePass.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/DeepShadowSettings.h"
 #include "nodes/GroupContents.h"
 #include "scene/CoinRef.h"
 #include "scene/EnvironmentValues.h"
@@ -24,7 +25,9 @@
 #include <Inventor/lists/SoNodeList.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 namespace ivshadow {
@@ -67,8 +70,34 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-GroupTracer::GroupTracer(SoSeparator* owner) : owner_(owner) {}
+GroupTracer::GroupTracer(SoSeparator* owner)
+    : owner_(owner), refineSensor_(&GroupTracer::refine, this) {}
 GroupTracer::~GroupTracer() = default;
+
+void GroupTracer::refine(void* self, SoSensor*) {
+  auto* tracer = static_cast<GroupTracer*>(self);
+  // The notification reaches whoever redraws the scene (a viewer's scene manager); the next
+  // frame finds nothing changed and traces the full picture.
+  tracer->touching_ = true;
+  tracer->owner_->touch();
+  tracer->touching_ = false;
+}
+
+const float* GroupTracer::reducedLimit(Context& context, const std::array<int, 4>& viewport,
+                                       int width, int height) {
+  context.depthReduced.resize(std::size_t(width) * std::size_t(height));
+  for (int y = 0; y < height; ++y) {
+    const int fullY =
+        std::min(viewport[3] - 1, int((float(y) + 0.5f) * float(viewport[3]) / float(height)));
+    for (int x = 0; x < width; ++x) {
+      const int fullX =
+          std::min(viewport[2] - 1, int((float(x) + 0.5f) * float(viewport[2]) / float(width)));
+      context.depthReduced[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
+          context.depthNow[std::size_t(fullY) * std::size_t(viewport[2]) + std::size_t(fullX)];
+    }
+  }
+  return context.depthReduced.data();
+}
 
 void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& contents,
                               DeepShadowStatistics& statistics) {
@@ -159,16 +188,24 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const bool kept = context->scene == sceneVersion_ && context->viewing == viewing &&
                     context->projection == projection && context->viewport == viewport &&
                     context->depthNow == context->depthTraced;
-  if (!kept) {
+  // A reduced picture is refined by the first frame that finds nothing changed.
+  const bool refining = kept && context->reduced;
+  if (!kept || refining) {
     const auto start = std::chrono::steady_clock::now();
+    auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
+    // A frame that traces right after one that traced is part of a motion.
+    const float fraction = resolveMovingResolution(group);
+    const float scale = !kept && context->tracedLastFrame ? fraction : 1.0f;
     TraceOptions options;
-    options.width = viewport[2];
-    options.height = viewport[3];
-    const auto& group = *static_cast<const SoTransparentShadowGroup*>(owner_);
+    options.width = std::max(1, int(std::ceil(float(viewport[2]) * scale)));
+    options.height = std::max(1, int(std::ceil(float(viewport[3]) * scale)));
+    const bool reduced = options.width < viewport[2] || options.height < viewport[3];
     options.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
-    scene_->trace(viewing, projection, context->depthNow.data(), options, pixels_);
-    const std::string error =
-        context->pass->upload(viewport, pixels_.rgba.data(), pixels_.depth.data());
+    const float* limit = reduced ? reducedLimit(*context, viewport, options.width, options.height)
+                                 : context->depthNow.data();
+    scene_->trace(viewing, projection, limit, options, pixels_);
+    const std::string error = context->pass->upload(options.width, options.height,
+                                                    pixels_.rgba.data(), pixels_.depth.data());
     if (!error.empty()) {
       if (firstWarning(owner_, "traced picture upload: " + error))
         SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
@@ -183,10 +220,21 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     context->projection = projection;
     context->viewport = viewport;
     context->depthTraced.swap(context->depthNow);
+    context->reduced = reduced;
+    if (reduced) {
+      refineSensor_.unschedule();
+      refineSensor_.setTimeFromNow(SbTime(kRefineDelaySeconds));
+      refineSensor_.schedule();
+    }
     statistics.tracerMs = millisecondsSince(start);
     statistics.raysTraced = pixels_.shadowRays;
+    statistics.tracerWidth = options.width;
+    statistics.tracerHeight = options.height;
+    statistics.tracerReduced = reduced ? 1 : 0;
     ++statistics.tracerFrames;
+    if (refining) ++statistics.tracerRefines;
   }
+  context->tracedLastFrame = !kept || refining;
   context->pass->draw(viewport);
   // GL is restored; Coin must not trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);

@@ -4,6 +4,7 @@
 #include "nodes/SceneTracer.h"
 
 #include <Inventor/SbMatrix.h>
+#include <Inventor/sensors/SoAlarmSensor.h>
 
 #include <array>
 #include <cstdint>
@@ -25,7 +26,10 @@ struct DeepShadowStatistics;
 // (TracedPicturePass). The subgraph is read again when it changes (its shapes or the
 // inherited state), only its lights when they or the camera moved; the picture is traced again when
 // the subgraph, the camera, the viewport or the depth drawn before it changed, else the one kept is
-// drawn.
+// drawn. While the scene moves (a frame traces right after one that traced) the picture is
+// traced at the group's movingResolution and refined, in full, by the first frame that
+// finds nothing changed; the group schedules that frame itself (kRefineDelaySeconds after
+// the last reduced one) by touching its owner.
 class GroupTracer {
  public:
   explicit GroupTracer(SoSeparator* owner);
@@ -38,6 +42,9 @@ class GroupTracer {
   // GL does).
   bool render(SoGLRenderAction* action, const GroupContents& contents,
               DeepShadowStatistics& statistics);
+  // Whether the owner is being touched to ask for a refined frame: a notification that
+  // changes nothing the group holds.
+  bool touchingOwner() const { return touching_; }
 
  private:
   struct Context {
@@ -47,9 +54,18 @@ class GroupTracer {
     SbMatrix viewing;
     SbMatrix projection;
     std::array<int, 4> viewport{};
-    std::vector<float> depthTraced;  // the depth GL had drawn before the group
-    std::vector<float> depthNow;     // read this frame
+    std::vector<float> depthTraced;   // the depth GL had drawn before the group
+    std::vector<float> depthNow;      // read this frame
+    std::vector<float> depthReduced;  // depthNow at a reduced picture's pixels
+    bool reduced = false;             // the picture kept was traced at movingResolution
+    bool tracedLastFrame = false;     // the previous frame traced (the scene is moving)
   };
+
+  // The depth limit of a picture of `width` x `height` pixels over the viewport whose depth
+  // `context` read: each pixel's centre's depth.
+  static const float* reducedLimit(Context& context, const std::array<int, 4>& viewport, int width,
+                                   int height);
+  static void refine(void* self, SoSensor*);
 
   // Reads the subgraph again when it changed since the last read, or only its lights when
   // only they (or the camera) changed.
@@ -68,6 +84,8 @@ class GroupTracer {
   std::vector<float> lightsAbove_, shadingAbove_, lightsNow_, shadingNow_;
   PerContext<Context> contexts_;
   TracedPixels pixels_;
+  SoAlarmSensor refineSensor_;
+  bool touching_ = false;
 };
 
 }  // namespace ivshadow

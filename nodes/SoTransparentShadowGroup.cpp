@@ -52,6 +52,7 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_ADD_FIELD(bounce, (FALSE));
   SO_NODE_ADD_FIELD(bounceLights, (ivshadow::kDefaultBounceLights));
   SO_NODE_ADD_FIELD(bounceMapSize, (ivshadow::kDefaultBounceMapSize));
+  SO_NODE_ADD_FIELD(movingResolution, (1.0f));
 }
 
 SoTransparentShadowGroup::~SoTransparentShadowGroup() {

@@ -97,6 +97,8 @@ TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner,
 TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
 
 void TransparentShadowGroupImpl::changed(SoNotList* list) {
+  // The tracer asking for a refined frame changes nothing the group holds.
+  if (tracer_.touchingOwner()) return;
   contents_.changed(list);
 }
 

@@ -26,6 +26,7 @@ LiveFigures LiveFigures::collect(SoNode* root, double frameMs, double gpuFrameMs
   }
   figures.rebuiltThisFrame = figures.shadows.rebuilds != previous.shadows.rebuilds;
   figures.tracedThisFrame = figures.shadows.rayFrames != previous.shadows.rayFrames;
+  figures.pictureTracedThisFrame = figures.shadows.tracerFrames != previous.shadows.tracerFrames;
   return figures;
 }
 
@@ -59,8 +60,26 @@ QString LiveFigures::text() const {
                  .arg(shadows.bvhBuildMs, 0, 'f', 1)
                  .arg(mebibytes(shadows.bvhBytes));
   }
+  if (shadows.tracerScenes > 0) {
+    // Which picture the frame shows: one traced now, at the viewport's size or reduced while
+    // the scene moves (movingResolution), or the one kept.
+    const QString which =
+        !pictureTracedThisFrame
+            ? QString("kept")
+            : QString("%1 x %2, %3")
+                  .arg(shadows.tracerWidth)
+                  .arg(shadows.tracerHeight)
+                  .arg(shadows.tracerReduced > 0 ? "reduced while moving, refined when still"
+                                                 : "full");
+    lines << QString("tracer     %1 ms (%2), %3 rays, %4 refined")
+                 .arg(shadows.tracerMs, 0, 'f', 1)
+                 .arg(which)
+                 .arg(shadows.raysTraced)
+                 .arg(shadows.tracerRefines);
+  }
   // The nodes time their own passes; what is left of the frame is the shaded scene.
-  const double rays = tracedThisFrame ? shadows.raysMs : 0.0;
+  const double rays =
+      (tracedThisFrame ? shadows.raysMs : 0.0) + (pictureTracedThisFrame ? shadows.tracerMs : 0.0);
   lines << QString("shading    %1 ms, GPU %2 ms (the groups' children)")
                .arg(std::max(0.0, frameMs - build - peeling.peelMs - rays), 0, 'f', 1)
                .arg(shadows.gpuShadingMs, 0, 'f', 1);
@@ -102,6 +121,7 @@ std::string LiveFigures::json() const {
                    {"peel_ms", peeling.peelMs},
                    {"peel_gpu_ms", peeling.gpuPeelMs},
                    {"rays_ms", shadows.raysMs},
+                   {"tracer_ms", shadows.tracerMs},
                    {"rays_capture_gpu_ms", shadows.gpuCaptureMs},
                    {"shading_gpu_ms", shadows.gpuShadingMs}};
   out["rays_traced"] = shadows.raysTraced;
@@ -121,6 +141,10 @@ std::string LiveFigures::json() const {
   out["dsm_layers_used"] = lights;
   out["dsm_bytes"] = bytes;
   out["peel_passes"] = peeling.passes;
+  out["tracer_frames"] = shadows.tracerFrames;
+  out["tracer_size"] = {shadows.tracerWidth, shadows.tracerHeight};
+  out["tracer_reduced"] = shadows.tracerReduced > 0;
+  out["tracer_refines"] = shadows.tracerRefines;
   return out.dump();
 }
 

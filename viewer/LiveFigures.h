@@ -20,11 +20,13 @@ struct LiveFigures {
   double gpuFrameMs = 0.0;
   bool rebuiltThisFrame = false;
   bool tracedThisFrame = false;
+  bool pictureTracedThisFrame = false;  // a group with renderer TRACER traced its picture
   DeepShadowStatistics shadows;
   PeelStatistics peeling;
 
   // `previous` are the figures of the frame before, to tell whether this frame built the
-  // maps or traced the shadow rays (and so whether their times are part of frameMs).
+  // maps, traced the shadow rays or a group's picture (and so whether their times are part
+  // of frameMs).
   static LiveFigures collect(SoNode* root, double frameMs, double gpuFrameMs,
                              const LiveFigures& previous);
 

@@ -98,6 +98,7 @@ const std::vector<FieldSpec>& groupFields() {
         SoTransparentShadowGroup::getClassTypeId(),
         {{kMethod, "isActive", {}},
          {kMethod, "renderer", {}},
+         {kMethod, "movingResolution", {kMinMovingResolution, 1.0, 0.125, 3}},
          {kMethod, "transparency", {}},
          {kMethod, "castingLights", {}}});
     all.push_back({kBounce, "bounce", {}});

@@ -11,7 +11,7 @@ namespace ivshadow {
 
 // What building the deep shadow maps of one SoTransparentShadowGroup cost.
 struct DeepShadowLightStatistics {
-  std::string name;                 // the light's DEF name, or "" when it has none
+  std::string name;  // the light's DEF name, or "" when it has none
   // Peeled layers that held a surface, per cube face; an opacity map's slices.
   std::array<int, 6> layersUsed{};
   // Peel passes run per face (early termination); an opacity map's draws of the casters.
@@ -23,9 +23,9 @@ struct DeepShadowLightStatistics {
   // An orthographic map's width and height across the light, in the group's units: the
   // casters' extent clipped to what the view shows.
   std::array<float, 2> extent{};
-  std::uint64_t bytes = 0;          // GPU memory the map keeps (only layers that are used)
-  std::uint64_t peakBytes = 0;      // GPU memory while it was built (all maxLayers)
-  bool coloured = false;            // three visibility channels rather than one
+  std::uint64_t bytes = 0;      // GPU memory the map keeps (only layers that are used)
+  std::uint64_t peakBytes = 0;  // GPU memory while it was built (all maxLayers)
+  bool coloured = false;        // three visibility channels rather than one
   int resolution = 0;
   float nearRadius = 0.0f;
   float farRadius = 0.0f;
@@ -47,31 +47,35 @@ struct DeepShadowStatistics {
   int casterTriangles = 0;
   // The RAYS and VOLUMES methods (lights that trace shadow rays or draw shadow volumes for the
   // visible surfaces instead of keeping a map).
-  double raysMs = 0.0;           // last trace: capture passes, tracing and upload, wall time
-  double rayCaptureMs = 0.0;     // ... of which the capture traversals and read-backs (0 when
-                                 //     it traced the surfaces captured before: a moved light)
-  double rayTraceMs = 0.0;       // ... the rays on the CPU
-  int rayLayers = 0;             // surface layers captured in the last trace
-  double bvhBuildMs = 0.0;       // last build of the casters' Embree scene
-  std::uint64_t raysTraced = 0;  // last trace
+  double raysMs = 0.0;            // last trace: capture passes, tracing and upload, wall time
+  double rayCaptureMs = 0.0;      // ... of which the capture traversals and read-backs (0 when
+                                  //     it traced the surfaces captured before: a moved light)
+  double rayTraceMs = 0.0;        // ... the rays on the CPU
+  int rayLayers = 0;              // surface layers captured in the last trace
+  double bvhBuildMs = 0.0;        // last build of the casters' Embree scene
+  std::uint64_t raysTraced = 0;   // last trace
   std::uint64_t volumeFaces = 0;  // last trace: shadow volume triangles of VOLUMES lights
-  std::uint64_t bvhBytes = 0;    // what Embree holds for the casters
-  int rayFrames = 0;             // frames that traced (others reused an unchanged trace)
-  int rayCaptures = 0;           // frames that captured the visible surfaces for their trace
-  int bvhBuilds = 0;             // times the casters' Embree scene was built
-  int bvhRefits = 0;             // times it was refitted instead (the same triangles moved)
+  std::uint64_t bvhBytes = 0;     // what Embree holds for the casters
+  int rayFrames = 0;              // frames that traced (others reused an unchanged trace)
+  int rayCaptures = 0;            // frames that captured the visible surfaces for their trace
+  int bvhBuilds = 0;              // times the casters' Embree scene was built
+  int bvhRefits = 0;              // times it was refitted instead (the same triangles moved)
   // One bounce (SoTransparentShadowGroup::bounce), its last placement and map build.
-  int bounceLights = 0;          // virtual point lights placed
-  int bounceSamples = 0;         // ... of samples traced from the lights (the rest met nothing)
-  double bouncePlaceMs = 0.0;    // placing them and the point pool, on the CPU
-  double bounceMapMs = 0.0;      // drawing their imperfect shadow maps, on the GPU
-  std::uint64_t bounceBytes = 0; // the maps' atlas, the lights and the point pool in GL
+  int bounceLights = 0;           // virtual point lights placed
+  int bounceSamples = 0;          // ... of samples traced from the lights (the rest met nothing)
+  double bouncePlaceMs = 0.0;     // placing them and the point pool, on the CPU
+  double bounceMapMs = 0.0;       // drawing their imperfect shadow maps, on the GPU
+  std::uint64_t bounceBytes = 0;  // the maps' atlas, the lights and the point pool in GL
   // A group whose renderer is TRACER (its subgraph traced whole on the CPU).
-  double tracerSceneMs = 0.0;    // last read of the subgraph and build of its Embree scenes
-  double tracerLightsMs = 0.0;   // last read of its lights alone (a light or the camera moved)
-  double tracerMs = 0.0;         // last trace of the picture and its upload, wall time
-  int tracerScenes = 0;          // times the subgraph was read
-  int tracerFrames = 0;          // frames that traced (others drew the picture kept)
+  double tracerSceneMs = 0.0;   // last read of the subgraph and build of its Embree scenes
+  double tracerLightsMs = 0.0;  // last read of its lights alone (a light or the camera moved)
+  double tracerMs = 0.0;        // last trace of the picture and its upload, wall time
+  int tracerScenes = 0;         // times the subgraph was read
+  int tracerFrames = 0;         // frames that traced (others drew the picture kept)
+  int tracerWidth = 0;          // the last traced picture's size: the viewport's, or less
+  int tracerHeight = 0;         //   while the scene moves (movingResolution)
+  int tracerReduced = 0;        // groups whose last picture is reduced (refined when still)
+  int tracerRefines = 0;        // frames that traced a reduced picture again in full
 };
 
 }  // namespace ivshadow

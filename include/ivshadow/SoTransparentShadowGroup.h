@@ -77,6 +77,15 @@ struct PeelStatistics;
   drawn (one warning names them). With `bounce TRUE`, `bounceLights` is the number of bounce
   rays per shaded point (rounded up to a square). The fields of the maps (resolution, layers, filters) do not apply.
 
+  `movingResolution` trades a traced group's picture for speed while the scene moves, as the
+  viewports of path tracers do: a frame that must trace again right after a frame that traced
+  (a light, the camera or a caster moving from frame to frame) is traced at that fraction of
+  the viewport's width and height and stretched over it. The first frame that finds nothing
+  changed traces the full picture; the group asks for that frame itself, through Coin's
+  sensors, a quarter of a second after the last reduced one, so a viewer refines once the
+  motion stops. At 1, the default, every frame is traced in full: what batch rendering of
+  successive frames needs.
+
   FILE FORMAT/DEFAULTS:
   \code
     TransparentShadowGroup {
@@ -108,6 +117,8 @@ struct PeelStatistics;
                              #   power of two
         renderer RASTER      # RASTER: GL draws the children; TRACER: their triangles are
                              #   traced on the CPU (exact shadows and glass in one pass)
+        movingResolution 1   # TRACER: the fraction of the viewport's width and height
+                             #   traced while the scene moves, 0.125 .. 1 (1: always full)
     }
   \endcode
 */
@@ -150,6 +161,7 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   SoSFBool bounce;
   SoSFInt32 bounceLights;
   SoSFInt32 bounceMapSize;
+  SoSFFloat movingResolution;
 
   //! What the last render in any context did: per light, layers used per face, map bytes,
   //! build time, and how many times the maps were rebuilt since the group was created.

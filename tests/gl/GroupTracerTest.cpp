@@ -9,6 +9,7 @@
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 
+#include <Inventor/SoDB.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCamera.h>
@@ -16,13 +17,17 @@
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTranslation.h>
+#include <Inventor/sensors/SoNodeSensor.h>
+#include <Inventor/sensors/SoSensorManager.h>
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace ivshadow::test {
@@ -239,6 +244,137 @@ TEST(TracedGroup, LinesItCannotTraceAreNamedOnceAndTheRestIsDrawn) {
       },
       kTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
+  root->unref();
+}
+
+// The analytic picture where it is flat: pixels whose every neighbour within `radius` has the
+// same expected colour (within one step). A picture traced at a lower resolution and
+// stretched is exact there, whatever its filter; nearer an edge it blends both sides.
+ExpectedImage flatParts(const ExpectedImage& exact, int radius) {
+  return [exact, radius](int px, int py) {
+    const Expectation centre = exact(px, py);
+    if (!centre.checked) return Expectation{};
+    for (int dy = -radius; dy <= radius; ++dy)
+      for (int dx = -radius; dx <= radius; ++dx) {
+        const int x = px + dx, y = py + dy;
+        if (x < 0 || y < 0 || x >= ShadowScene::kSize || y >= ShadowScene::kSize)
+          return Expectation{};
+        const Expectation near = exact(x, y);
+        if (!near.checked) return Expectation{};
+        for (int c = 0; c < 3; ++c)
+          if (std::fabs(near.rgb[std::size_t(c)] - centre.rgb[std::size_t(c)]) > 1.0)
+            return Expectation{};
+      }
+    return centre;
+  };
+}
+
+// Pixels further than one step from their analytic value.
+int pixelsOff(const Image& image, const ExpectedImage& exact) {
+  int off = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const Expectation e = exact(x, y);
+      if (!e.checked) continue;
+      for (int c = 0; c < 3; ++c)
+        if (std::fabs(double(image.pixel(x, y)[c]) - e.rgb[std::size_t(c)]) > kTolerance) {
+          ++off;
+          break;
+        }
+    }
+  return off;
+}
+
+TEST(TracedGroup, AMotionIsTracedAtMovingResolutionAndStillnessRefinesIt) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.groupFields += " movingResolution 0.25";
+  scene.filters = {kRedGlass, kGreenGlass};
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer && r.lamp);
+  const ShadowPicture exact{&scene, ColourModel::Saturate};
+  const SbVec3f place = r.lamp->location.getValue();
+  constexpr int kReduced = ShadowScene::kSize / 4;  // 240 x 0.25
+
+  // The first frame has nothing before it to move from: traced in full.
+  DeepShadowStatistics stats = r.frame();
+  EXPECT_EQ(stats.tracerWidth, ShadowScene::kSize);
+  EXPECT_EQ(stats.tracerHeight, ShadowScene::kSize);
+
+  // The light moves on two frames running: the second is traced at a quarter of the size.
+  r.lamp->location = SbVec3f(0.35f, -0.2f, 1.3f);
+  stats = r.frame();
+  EXPECT_EQ(stats.tracerWidth, kReduced);
+  EXPECT_EQ(stats.tracerHeight, kReduced);
+  r.lamp->location = place;
+  stats = r.frame();
+  EXPECT_EQ(stats.tracerWidth, kReduced);
+  EXPECT_EQ(stats.tracerRefines, 0);
+  const Image moving = r.renderer->read();
+  // The stretched picture is the exact one where the picture is flat over a reduced pixel and
+  // its neighbours (4 pixels each, so 6 either side covers the filter's reach) ...
+  const std::string flat = compareWithExpectation(moving, flatParts(exact, 6), kTolerance);
+  EXPECT_TRUE(flat.empty()) << "the moving frame: " << flat;
+  // ... and coarser at the shadows' edges: a full trace would be exact there too.
+  EXPECT_GT(pixelsOff(moving, exact), 100) << "the moving frame is not coarser";
+
+  // Nothing moves for a quarter of a second: the group asks for a frame through Coin's timer
+  // queue, without reading its subgraph again.
+  SoNodeSensor redraw;
+  redraw.attach(r.root);
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  SoDB::getSensorManager()->processTimerQueue();
+  EXPECT_TRUE(redraw.isScheduled()) << "the group did not ask for the refined frame";
+  redraw.detach();
+  stats = r.frame();
+  EXPECT_EQ(stats.tracerRefines, 1);
+  EXPECT_EQ(stats.tracerWidth, ShadowScene::kSize);
+  EXPECT_EQ(stats.tracerScenes, 1) << "asking for the refined frame re-read the subgraph";
+  const std::string refined = compareWithExpectation(r.renderer->read(), exact, kTolerance);
+  EXPECT_TRUE(refined.empty()) << "the refined frame: " << refined;
+  const int traced = stats.tracerFrames;
+  EXPECT_EQ(r.frame().tracerFrames, traced) << "a still frame after the refined one traces";
+}
+
+TEST(TracedGroup, AReducedFrameStillEndsAtWhatGlDrewBefore) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.groupFields += " movingResolution 0.25";
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.aboveGroup = blueSquare(0.75);  // nearer the camera than the floor and the glass
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer && r.lamp);
+  const SbVec3f place = r.lamp->location.getValue();
+  r.frame();
+  r.lamp->location = SbVec3f(0.35f, -0.2f, 1.3f);
+  r.frame();
+  r.lamp->location = place;
+  ASSERT_EQ(r.frame().tracerWidth, ShadowScene::kSize / 4);
+  const std::string failure = compareWithExpectation(
+      r.renderer->read(), flatParts(squareOrFloor(scene, true), 6), kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST(TracedGroup, AMovingResolutionOutOfRangeIsNamedAndClamped) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.groupFields += " movingResolution 0";
+  scene.filters = {kRedGlass};
+  SoSeparator* root = readIv(scene.text());  // initialises Coin, which sets its handlers
+  CoinMessageCapture capture;
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  auto* lamp = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
+  ASSERT_NE(lamp, nullptr);
+  renderer->render(root);
+  lamp->location = lamp->location.getValue() + SbVec3f(0.1f, 0.0f, 0.0f);
+  renderer->render(root);
+  int named = 0;
+  for (const CoinMessageCapture::Message& message : capture.messages())
+    if (message.text.find("movingResolution") != std::string::npos &&
+        message.text.find("using 0.125") != std::string::npos)
+      ++named;
+  EXPECT_EQ(named, 1);
+  // 240 x 0.125 = 30 pixels.
+  EXPECT_EQ(collectDeepShadowStatistics(root).tracerWidth, 30);
   root->unref();
 }
 
