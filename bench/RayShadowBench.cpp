@@ -182,8 +182,8 @@ void BvhBuild(benchmark::State& state) {
 // Args: triangles, shadows (0 plain Coin; 1 RAYS, the group's default transparency PEELED;
 // 2 RAYS, transparency COIN_BLENDING, blended as plain Coin blends; 3 renderer TRACER; 4 the
 // same with movingResolution 0.5: every frame after the first of a motion traced at 400 x
-// 300), motion (0 static, 1 light moving, 2 camera moving), at 800 x 600. Plain Coin's light and camera move as RAYS's do, so
-// each ratio compares the same frames.
+// 300), motion (0 static, 1 light moving, 2 camera moving), at 800 x 600. Plain Coin's light and
+// camera move as RAYS's do, so each ratio compares the same frames.
 void RaysAgainstCoin(benchmark::State& state) {
   const int shadows = int(state.range(1));
   Scene s(state, int(state.range(0)), 800, 600, SoDeepShadowLight::RAYS,
@@ -193,8 +193,8 @@ void RaysAgainstCoin(benchmark::State& state) {
   SoSearchAction search;
   search.setType(SoTransparentShadowGroup::getClassTypeId());
   search.apply(s.root);
-  auto* group = shadows != 0 ? static_cast<SoTransparentShadowGroup*>(search.getPath()->getTail())
-                              : nullptr;
+  auto* group =
+      shadows != 0 ? static_cast<SoTransparentShadowGroup*>(search.getPath()->getTail()) : nullptr;
   if (shadows == 2) {
     group->transparency = SoTransparentShadowGroup::COIN_BLENDING;
     s.renderer->render(s.root);  // the blending program variants

@@ -57,6 +57,7 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
     total.tracerWidth = std::max(total.tracerWidth, stats.tracerWidth);
     total.tracerHeight = std::max(total.tracerHeight, stats.tracerHeight);
     total.tracerReduced += stats.tracerReduced;
+    total.tracerCameraRays += stats.tracerCameraRays;
     total.tracerRefines += stats.tracerRefines;
   });
   return total;

@@ -131,6 +131,7 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
     return;
   }
   scene_ = SceneTracer::fromPath(toGroup.get(), size[0], size[1]);
+  ++shapesVersion_;
   castersVersion_ = contents.castersVersion();
   mapsVersion_ = contents.mapsVersion();
   viewVersion_ = contents.viewVersion();
@@ -185,9 +186,11 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const SbMatrix& viewing = SoViewingMatrixElement::get(state);
   const SbMatrix& projection = SoProjectionMatrixElement::get(state);
   context->pass->readDepth(viewport, context->depthNow);
-  const bool kept = context->scene == sceneVersion_ && context->viewing == viewing &&
-                    context->projection == projection && context->viewport == viewport &&
-                    context->depthNow == context->depthTraced;
+  // The same camera rays through the same shapes: they meet the surfaces kept.
+  const bool sameView = context->shapes == shapesVersion_ && context->viewing == viewing &&
+                        context->projection == projection && context->viewport == viewport &&
+                        context->depthNow == context->depthTraced;
+  const bool kept = sameView && context->scene == sceneVersion_;
   // A reduced picture is refined by the first frame that finds nothing changed.
   const bool refining = kept && context->reduced;
   if (!kept || refining) {
@@ -203,6 +206,8 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     options.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
     const float* limit = reduced ? reducedLimit(*context, viewport, options.width, options.height)
                                  : context->depthNow.data();
+    options.surfaces = &context->surfaces;
+    options.reuseSurfaces = sameView;
     scene_->trace(viewing, projection, limit, options, pixels_);
     const std::string error = context->pass->upload(options.width, options.height,
                                                     pixels_.rgba.data(), pixels_.depth.data());
@@ -213,9 +218,11 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
                                   "with GL",
                                   describeNode(owner_).c_str(), error.c_str());
       context->scene = 0;
+      context->surfaces.rows.clear();
       return false;
     }
     context->scene = sceneVersion_;
+    context->shapes = shapesVersion_;
     context->viewing = viewing;
     context->projection = projection;
     context->viewport = viewport;
@@ -231,6 +238,7 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     statistics.tracerWidth = options.width;
     statistics.tracerHeight = options.height;
     statistics.tracerReduced = reduced ? 1 : 0;
+    statistics.tracerCameraRays = pixels_.cameraRays;
     ++statistics.tracerFrames;
     if (refining) ++statistics.tracerRefines;
   }

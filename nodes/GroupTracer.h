@@ -51,6 +51,7 @@ class GroupTracer {
     std::unique_ptr<TracedPicturePass> pass;
     // What the picture uploaded last was traced for.
     std::uint64_t scene = 0;
+    std::uint64_t shapes = 0;  // the read of the shapes it was traced with
     SbMatrix viewing;
     SbMatrix projection;
     std::array<int, 4> viewport{};
@@ -59,6 +60,9 @@ class GroupTracer {
     std::vector<float> depthReduced;  // depthNow at a reduced picture's pixels
     bool reduced = false;             // the picture kept was traced at movingResolution
     bool tracedLastFrame = false;     // the previous frame traced (the scene is moving)
+    // The surfaces the picture's camera rays met: composited again when only the lights
+    // changed.
+    SurfacesMet surfaces;
   };
 
   // The depth limit of a picture of `width` x `height` pixels over the viewport whose depth
@@ -74,7 +78,8 @@ class GroupTracer {
 
   SoSeparator* owner_;
   std::unique_ptr<SceneTracer> scene_;
-  std::uint64_t sceneVersion_ = 0;  // counts the reads
+  std::uint64_t sceneVersion_ = 0;   // counts the reads
+  std::uint64_t shapesVersion_ = 0;  // counts the reads of the shapes (not of lights alone)
   std::uint64_t castersVersion_ = ~std::uint64_t(0);
   std::uint64_t mapsVersion_ = ~std::uint64_t(0);
   std::uint64_t viewVersion_ = ~std::uint64_t(0);

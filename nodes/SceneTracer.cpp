@@ -377,12 +377,7 @@ void point(void* user, SoCallbackAction* action, const SoPrimitiveVertex*) {
   notTriangles(action, *static_cast<Extraction*>(user));
 }
 
-struct Hit {
-  float t;
-  unsigned int primitive;
-  float u;
-  float v;
-};
+using Hit = SurfacesMet::Hit;
 
 // Every surface a camera ray meets, collected by Embree's filter function.
 struct CameraRayContext : RTCIntersectContext {
@@ -440,37 +435,54 @@ class Tracer {
     viewDirection_ = toGlm(back);
   }
 
-  // `limit`: the window depth where the ray ends (1: the far plane).
-  PixelResult pixel(int x, int y, float limit, std::vector<Hit>& hits, RayCounts& rays) const {
-    const float nx = (float(x) + 0.5f) / float(options_.width) * 2.0f - 1.0f;
-    const float ny = 1.0f - (float(y) + 0.5f) / float(options_.height) * 2.0f;
+  // A pixel's ray: from the near plane (t = 0) to the far plane (t = 1).
+  struct CameraRay {
+    float nx, ny;  // the pixel's centre in normalised device coordinates
+    glm::vec3 origin;
+    glm::vec3 direction;
+  };
+  CameraRay cameraRay(int x, int y) const {
+    CameraRay ray;
+    ray.nx = (float(x) + 0.5f) / float(options_.width) * 2.0f - 1.0f;
+    ray.ny = 1.0f - (float(y) + 0.5f) / float(options_.height) * 2.0f;
     SbVec3f nearPoint, farPoint;
-    clipToWorld_.multVecMatrix(SbVec3f(nx, ny, -1.0f), nearPoint);
-    clipToWorld_.multVecMatrix(SbVec3f(nx, ny, 1.0f), farPoint);
-    const glm::vec3 origin = toGlm(nearPoint);
-    const glm::vec3 direction = toGlm(farPoint) - origin;
+    clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, -1.0f), nearPoint);
+    clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, 1.0f), farPoint);
+    ray.origin = toGlm(nearPoint);
+    ray.direction = toGlm(farPoint) - ray.origin;
+    return ray;
+  }
+
+  // The surfaces along `ray` into `hits` (surfacesAlong), ending at `limit`, the window depth
+  // where the ray ends (1: the far plane). Returns the window depth of the nearest opaque
+  // one, or `limit` where there is none.
+  float visible(const CameraRay& ray, float limit, std::vector<Hit>& hits) const {
     float tfar = 1.0f;  // the far plane clips as in GL
     if (limit < 1.0f) {
       // The limit's point on this ray: its parameter, as the ray is linear in the world.
       SbVec3f end;
-      clipToWorld_.multVecMatrix(SbVec3f(nx, ny, 2.0f * limit - 1.0f), end);
-      tfar = glm::dot(toGlm(end) - origin, direction) / glm::dot(direction, direction);
+      clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, 2.0f * limit - 1.0f), end);
+      tfar =
+          glm::dot(toGlm(end) - ray.origin, ray.direction) / glm::dot(ray.direction, ray.direction);
     }
+    if (!surfacesAlong(ray.origin, ray.direction, 0.0f, tfar, hits)) return limit;
+    SbVec3f clip;
+    const glm::vec3 p = ray.origin + hits.back().t * ray.direction;
+    worldToClip_.multVecMatrix(SbVec3f(p.x, p.y, p.z), clip);
+    return glm::clamp(0.5f * clip[2] + 0.5f, 0.0f, 1.0f);
+  }
 
+  // The `count` surfaces `hits` met along `ray`, shaded and composited front to back.
+  PixelResult composite(const CameraRay& ray, const Hit* hits, std::size_t count, float depth,
+                        RayCounts& rays) const {
     PixelResult result;
-    result.depth = limit;
-    if (surfacesAlong(origin, direction, 0.0f, tfar, hits)) {
-      SbVec3f clip;
-      const glm::vec3 p = origin + hits.back().t * direction;
-      worldToClip_.multVecMatrix(SbVec3f(p.x, p.y, p.z), clip);
-      result.depth = glm::clamp(0.5f * clip[2] + 0.5f, 0.0f, 1.0f);
-    }
-    for (std::size_t i = 0; i < hits.size(); ++i) {
+    result.depth = depth;
+    for (std::size_t i = 0; i < count; ++i) {
       const Hit& hit = hits[i];
       const Triangle& tri = data_.triangles[hit.primitive];
       if (metBefore(hits, i)) continue;
-      const glm::vec3 position = origin + hit.t * direction;
-      const glm::vec4 shaded = shade(tri, hit, position, direction, rays);
+      const glm::vec3 position = ray.origin + hit.t * ray.direction;
+      const glm::vec4 shaded = shade(tri, hit, position, ray.direction, rays);
       const float alpha = isOpaque(shaded.a) ? 1.0f : glm::clamp(shaded.a, 0.0f, 1.0f);
       result.colour += result.transmitted * alpha * glm::vec3(shaded);
       result.transmitted *= 1.0f - alpha;
@@ -516,7 +528,7 @@ class Tracer {
   }
 
   // Whether hits[i] is a surface met before (a shared edge, a spatial split): composited once.
-  bool metBefore(const std::vector<Hit>& hits, std::size_t i) const {
+  bool metBefore(const Hit* hits, std::size_t i) const {
     const Triangle& tri = data_.triangles[hits[i].primitive];
     for (std::size_t j = 0; j < i; ++j)
       if (data_.triangles[hits[j].primitive].shape == tri.shape &&
@@ -723,7 +735,7 @@ class Tracer {
           const ShadowColourModel model = modelOf(group, light);
           glm::vec3 through(1.0f);
           for (std::size_t k = 0; k + 1 < hits.size(); ++k) {
-            if (metBefore(hits, k)) continue;
+            if (metBefore(hits.data(), k)) continue;
             const Triangle& glass = data_.triangles[hits[k].primitive];
             const TextureImage* glassImage = imageOf(data_, glass);
             const SurfaceSample g =
@@ -917,6 +929,7 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
   out.height = options.height;
   out.rgba.assign(pixels * 4, 0.0f);
   out.depth.assign(pixels, 1.0f);
+  out.cameraRays = 0;
   out.shadowRays = 0;
   out.bounceRays = 0;
   for (std::size_t i = 0; i < pixels; ++i) out.rgba[i * 4 + 3] = 1.0f;
@@ -924,6 +937,11 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
   const int workers = workerCount(options.threads);
   std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers));
   std::vector<RayCounts> rays(static_cast<std::size_t>(workers));
+  SurfacesMet* kept = options.surfaces;
+  const bool reuse = kept != nullptr && options.reuseSurfaces && options.height > 0 &&
+                     kept->rows.size() == std::size_t(options.height) &&
+                     kept->rows.front().ends.size() == std::size_t(options.width);
+  if (kept != nullptr && !reuse) kept->rows.resize(std::size_t(options.height));
   parallelRows(
       options.height, workers,
       [&](int y, int worker) {
@@ -933,10 +951,30 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
             depthLimit != nullptr
                 ? depthLimit + std::size_t(options.height - 1 - y) * std::size_t(options.width)
                 : nullptr;
+        std::vector<Hit>& found = hits[std::size_t(worker)];
+        SurfacesMet::Row* keptRow = kept != nullptr ? &kept->rows[std::size_t(y)] : nullptr;
+        if (keptRow != nullptr && !reuse) {
+          keptRow->hits.clear();
+          keptRow->ends.resize(std::size_t(options.width));
+          keptRow->depth.resize(std::size_t(options.width));
+        }
         for (int x = 0; x < options.width; ++x) {
-          const float limit = limits != nullptr ? limits[x] : 1.0f;
-          const PixelResult p =
-              tracer.pixel(x, y, limit, hits[std::size_t(worker)], rays[std::size_t(worker)]);
+          const Tracer::CameraRay ray = tracer.cameraRay(x, y);
+          PixelResult p;
+          if (reuse) {
+            const std::uint32_t begin = x > 0 ? keptRow->ends[std::size_t(x) - 1] : 0u;
+            p = tracer.composite(ray, keptRow->hits.data() + begin,
+                                 keptRow->ends[std::size_t(x)] - begin,
+                                 keptRow->depth[std::size_t(x)], rays[std::size_t(worker)]);
+          } else {
+            const float depth = tracer.visible(ray, limits != nullptr ? limits[x] : 1.0f, found);
+            p = tracer.composite(ray, found.data(), found.size(), depth, rays[std::size_t(worker)]);
+            if (keptRow != nullptr) {
+              keptRow->hits.insert(keptRow->hits.end(), found.begin(), found.end());
+              keptRow->ends[std::size_t(x)] = std::uint32_t(keptRow->hits.size());
+              keptRow->depth[std::size_t(x)] = depth;
+            }
+          }
           float* rgba = &out.rgba[(row + std::size_t(x)) * 4];
           rgba[0] = p.colour.r;
           rgba[1] = p.colour.g;
@@ -947,7 +985,12 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
         if (options.rowsDone) ++*options.rowsDone;
       },
       options.cancel);
-  if (options.cancel && options.cancel->load()) return false;
+  // A cancelled trace leaves rows it did not reach: nothing kept may be reused.
+  if (options.cancel && options.cancel->load()) {
+    if (kept != nullptr) kept->rows.clear();
+    return false;
+  }
+  if (!reuse) out.cameraRays = pixels;
   for (const RayCounts& count : rays) {
     out.shadowRays += count.shadow;
     out.bounceRays += count.bounce;

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -16,6 +17,25 @@ class SoNode;
 class SoPath;
 
 namespace ivshadow {
+
+// The surfaces each pixel's ray met in a trace: every surface up to the nearest opaque one,
+// in exact depth order, and the window depth found. A later trace of the same view (the same
+// camera, size, depth limit and triangles; only the lights moved) composites them again
+// without tracing the camera rays (TraceOptions::surfaces).
+struct SurfacesMet {
+  struct Hit {
+    float t;  // along the pixel's ray from the near plane (0) to the far plane (1)
+    std::uint32_t primitive;
+    float u;
+    float v;
+  };
+  struct Row {
+    std::vector<Hit> hits;
+    std::vector<std::uint32_t> ends;  // where each pixel's hits end in `hits`
+    std::vector<float> depth;         // each pixel's window depth
+  };
+  std::vector<Row> rows;
+};
 
 // How a trace runs: its size, its threads, how it stops early and how much bounce it
 // samples.
@@ -30,6 +50,10 @@ struct TraceOptions {
   // Cosine-weighted rays per shaded point for the bounce of a group whose bounce field is
   // TRUE (rounded up to a square, stratified; 0: no bounce).
   int bounceSamples = 256;
+  // When set, the surfaces the camera rays meet are kept there; with reuseSurfaces, those
+  // kept (by a trace of the same view) are composited instead of tracing the camera rays.
+  SurfacesMet* surfaces = nullptr;
+  bool reuseSurfaces = false;
 };
 
 // What a trace gives for each pixel, rows top to bottom: the surfaces met, composited front
@@ -41,6 +65,7 @@ struct TracedPixels {
   int height = 0;
   std::vector<float> rgba;
   std::vector<float> depth;
+  std::size_t cameraRays = 0;  // 0 when the surfaces kept were composited again
   std::size_t shadowRays = 0;
   std::size_t bounceRays = 0;
 };

@@ -74,8 +74,10 @@ struct DeepShadowStatistics {
   int tracerFrames = 0;         // frames that traced (others drew the picture kept)
   int tracerWidth = 0;          // the last traced picture's size: the viewport's, or less
   int tracerHeight = 0;         //   while the scene moves (movingResolution)
-  int tracerReduced = 0;        // groups whose last picture is reduced (refined when still)
-  int tracerRefines = 0;        // frames that traced a reduced picture again in full
+  std::uint64_t tracerCameraRays = 0;  // last trace (0: it composited the surfaces it kept,
+                                       //   as when only a light moved)
+  int tracerReduced = 0;               // groups whose last picture is reduced (refined when still)
+  int tracerRefines = 0;               // frames that traced a reduced picture again in full
 };
 
 }  // namespace ivshadow

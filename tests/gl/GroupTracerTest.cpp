@@ -148,12 +148,16 @@ TEST(TracedGroup, AStillFrameDrawsThePictureKeptAndAMoveTracesAgain) {
   stats = r.frame();
   EXPECT_EQ(stats.tracerFrames, 1) << "a still frame traces nothing";
 
-  // A moved light: the lights alone are read again, and the picture is traced again.
+  EXPECT_EQ(stats.tracerCameraRays, std::uint64_t(ShadowScene::kSize * ShadowScene::kSize));
+
+  // A moved light: the lights alone are read again, and the picture is traced again from the
+  // surfaces the camera rays met before.
   r.lamp->location = place;
   r.expectAnalytic(scene, "after the light moved");
   stats = collectDeepShadowStatistics(r.root);
   EXPECT_EQ(stats.tracerScenes, 1);
   EXPECT_EQ(stats.tracerFrames, 2);
+  EXPECT_EQ(stats.tracerCameraRays, 0u) << "the camera rays were traced again";
 
   // A moved camera, and back.
   auto* camera = static_cast<SoCamera*>(SoNode::getByName("Camera"));
@@ -167,6 +171,7 @@ TEST(TracedGroup, AStillFrameDrawsThePictureKeptAndAMoveTracesAgain) {
   camera->position = eye + SbVec3f(0.3f, 0.1f, 0.0f);
   stats = r.frame();
   EXPECT_EQ(stats.tracerFrames, 3);
+  EXPECT_EQ(stats.tracerCameraRays, std::uint64_t(ShadowScene::kSize * ShadowScene::kSize));
   camera->position = eye;
   r.expectAnalytic(scene, "after the camera moved and came back");
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerScenes, 1) << "the shapes were kept";
@@ -179,6 +184,24 @@ TEST(TracedGroup, AStillFrameDrawsThePictureKeptAndAMoveTracesAgain) {
   lift->translation = SbVec3f(0.0f, 0.0f, 0.0f);
   r.expectAnalytic(scene, "after the floor moved and came back");
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerScenes, 3);
+}
+
+// After a light moved the picture is composited from the surfaces kept, with their depth:
+// GL drawing behind the floor after the group stays hidden.
+TEST(TracedGroup, ThePictureOfAMovedLightKeepsItsDepth) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.belowGroup = blueSquare(-0.5);
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer && r.lamp);
+  const SbVec3f place = r.lamp->location.getValue();
+  r.lamp->location = SbVec3f(0.35f, -0.2f, 1.3f);
+  r.frame();
+  r.lamp->location = place;
+  ASSERT_EQ(r.frame().tracerCameraRays, 0u);
+  const std::string failure =
+      compareWithExpectation(r.renderer->read(), squareOrFloor(scene, false), kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
 }
 
 // The group is not notified of changes above it: a transform, a light or a material there
