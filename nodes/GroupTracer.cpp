@@ -1,5 +1,6 @@
 #include "nodes/GroupTracer.h"
 
+#include "callbacks/NestedRenderScope.h"
 #include "callbacks/TracedPicturePass.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
@@ -23,6 +24,7 @@
 #include <Inventor/elements/SoViewportRegionElement.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/lists/SoNodeList.h>
+#include <Inventor/lists/SoPathList.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
@@ -142,8 +144,8 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
   for (const std::string& shape : scene_->untracedShapes())
     if (firstWarning(owner_, "not traced: " + shape))
       SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                "%s (renderer TRACER) does not draw %s, which is drawn with "
-                                "lines, points or screen-aligned pixels",
+                                "%s (renderer TRACER) draws %s through GL, without shadows: "
+                                "lines, points and screen-aligned pixels are not traced",
                                 describeNode(owner_).c_str(), shape.c_str());
 }
 
@@ -246,7 +248,26 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   context->pass->draw(viewport);
   // GL is restored; Coin must not trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
+  if (!scene_->untracedPaths().empty()) drawUntraced(action);
   return true;
+}
+
+void GroupTracer::drawUntraced(SoGLRenderAction* action) {
+  SoState* state = action->getState();
+  SoPathList paths;
+  for (const SoPath* path : scene_->untracedPaths()) paths.append(const_cast<SoPath*>(path));
+  // The paths run from the action's root: the camera, the lights and the transforms on the
+  // way are traversed again, and the owner renders the part of them below it as a separator.
+  SoGLRenderAction nested(SoViewportRegionElement::get(state));
+  nested.setCacheContext(action->getCacheContext());
+  nested.setTransparencyType(action->getTransparencyType());
+  {
+    const NestedRenderScope scope;
+    drawingUntraced_ = true;
+    nested.apply(paths, FALSE);
+    drawingUntraced_ = false;
+  }
+  SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 }
 
 }  // namespace ivshadow

@@ -29,7 +29,9 @@ struct DeepShadowStatistics;
 // drawn. While the scene moves (a frame traces right after one that traced) the picture is
 // traced at the group's movingResolution and refined, in full, by the first frame that
 // finds nothing changed; the group schedules that frame itself (kRefineDelaySeconds after
-// the last reduced one) by touching its owner.
+// the last reduced one) by touching its owner. Shapes drawn with lines, points or
+// screen-aligned pixels, which have no triangles to trace, are drawn through GL after the
+// picture (a second render action over their paths), depth-tested against it.
 class GroupTracer {
  public:
   explicit GroupTracer(SoSeparator* owner);
@@ -45,6 +47,9 @@ class GroupTracer {
   // Whether the owner is being touched to ask for a refined frame: a notification that
   // changes nothing the group holds.
   bool touchingOwner() const { return touching_; }
+  // Whether the shapes the tracer does not draw are being drawn through GL (a second render
+  // action over their paths, through the owner): the owner then renders as a separator.
+  bool drawingUntraced() const { return drawingUntraced_; }
 
  private:
   struct Context {
@@ -70,6 +75,9 @@ class GroupTracer {
   static const float* reducedLimit(Context& context, const std::array<int, 4>& viewport, int width,
                                    int height);
   static void refine(void* self, SoSensor*);
+  // Draws the shapes drawn with lines, points or screen-aligned pixels through GL, after the
+  // picture, depth-tested against it.
+  void drawUntraced(SoGLRenderAction* action);
 
   // Reads the subgraph again when it changed since the last read, or only its lights when
   // only they (or the camera) changed.
@@ -91,6 +99,7 @@ class GroupTracer {
   TracedPixels pixels_;
   SoAlarmSensor refineSensor_;
   bool touching_ = false;
+  bool drawingUntraced_ = false;
 };
 
 }  // namespace ivshadow

@@ -136,7 +136,7 @@ struct Extraction {
   std::vector<int> groupStack;
   std::map<const SoNode*, std::string> skipped;  // shapes without triangles
   std::vector<std::string> untracedShapes;       // their names, in traversal order
-  std::vector<CoinRef<SoPath>> untracedPaths;    // and the paths to them
+  std::vector<CoinRef<SoPath>> untracedPaths;    // and the paths to every instance
   SbMatrix viewing = SbMatrix::identity();
   SbMatrix projection = SbMatrix::identity();
   bool haveCamera = false;
@@ -259,11 +259,12 @@ SoCallbackAction::Response light(void* user, SoCallbackAction* action, const SoN
 }
 
 void notTriangles(SoCallbackAction* action, Extraction& data) {
+  // Every path, for GL to draw each instance; each shape named once.
+  data.untracedPaths.emplace_back(action->getCurPath()->copy());
   const SoNode* node = action->getCurPathTail();
   if (data.skipped.count(node) != 0) return;
   data.skipped.emplace(node, describeNode(node));
   data.untracedShapes.push_back(describeNode(node));
-  data.untracedPaths.emplace_back(action->getCurPath()->copy());
 }
 
 SoCallbackAction::Response pruneShape(void*, SoCallbackAction*, const SoNode*) {

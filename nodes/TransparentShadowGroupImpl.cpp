@@ -354,6 +354,8 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
 }
 
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
+  // The tracer draws the shapes it does not trace through the owner's paths: as a separator.
+  if (tracer_.drawingUntraced()) return false;
   SoState* state = action->getState();
   // Inside a peeling (an enclosing peeling group's or a SoPeelingSeparator's) every pass has
   // its variant of the enclosing shading bound; this group's own programs would write colours

@@ -92,6 +92,11 @@ void LightDragger::dragged(void* self, SoDragger*) {
   that->updating_ = false;
 }
 
+void LightDragger::dragTo(const SbVec3f& location) {
+  // The dragger's value-changed callback (dragged) writes the light's location.
+  if (dragger_) dragger_->translation.setValue(location / size_);
+}
+
 void LightDragger::locationChanged(void* self, SoSensor*) {
   static_cast<LightDragger*>(self)->followLight();
 }

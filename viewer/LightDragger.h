@@ -4,6 +4,7 @@
 
 #include <Inventor/sensors/SoFieldSensor.h>
 
+class SbVec3f;
 class SoDeepShadowLight;
 class SoDragger;
 class SoPointLightDragger;
@@ -30,6 +31,11 @@ class LightDragger {
   // after the scene; nullptr for either removes it.
   void attach(SoSeparator* root, SoDeepShadowLight* light);
   void detach();
+  // The light the dragger is on, or nullptr; its size, in the light's coordinates.
+  SoDeepShadowLight* light() const { return light_.get(); }
+  float size() const { return size_; }
+  // Moves the dragger so that it puts the light at `location`, as dragging it there does.
+  void dragTo(const SbVec3f& location);
 
   // Takes the dragger out of the scene while an instance lives (e.g. while the scene is
   // written to a file) and puts it back afterwards.

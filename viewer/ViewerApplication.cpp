@@ -9,6 +9,7 @@
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 #include "viewer/MapInspector.h"
+#include "viewer/ScriptedDrag.h"
 #include "viewer/ShadowPanel.h"
 #include "viewer/ViewerWindow.h"
 
@@ -22,8 +23,11 @@
 #include <QStringList>
 #include <QTimer>
 
+#include <nlohmann/json.hpp>
+
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 namespace ivshadow {
@@ -68,10 +72,12 @@ std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) 
       (options.addLight || !options.assignments.empty() || !options.saveScene.empty())) {
     throw InputError("ivshadow: error: --add-light, --set and --save-scene need a scene file");
   }
-  if ((!options.figures.empty() || !options.windowShot.empty() || !options.inspectOut.empty()) &&
+  if ((!options.figures.empty() || !options.windowShot.empty() || !options.inspectOut.empty() ||
+       options.dragLight > 0) &&
       options.screenshot.empty()) {
     throw InputError(
-        "ivshadow: error: --figures, --window-shot and --inspect-out need --screenshot");
+        "ivshadow: error: --figures, --window-shot, --inspect-out and --drag-light need "
+        "--screenshot");
   }
   if (!options.inspectOut.empty() && options.inspect.empty()) {
     throw InputError("ivshadow: error: --inspect-out needs --inspect");
@@ -130,7 +136,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   window.createViewer();
   const bool scripted = options.scripted();
   window.setInteractive(!scripted);
-  if (options.lightDragger) window.setLightDraggerShown(true);
+  if (options.lightDragger || options.dragLight > 0) window.setLightDraggerShown(true);
   if (options.noLightDragger) window.setLightDraggerShown(false);
 
   if (!options.scene.empty()) {
@@ -185,8 +191,26 @@ int runViewer(const ViewerOptions& options, const char* programName) {
     // The screenshot is a frame drawn after the first one: should the first still go to a
     // drawable of a stale size (docs/KNOWN_ISSUES.md), the next is right.
     auto* waitForFirstFrame = new QTimer(&window);
+    // --drag-light: the drag runs after the first frame, the screenshot after the drag.
+    std::unique_ptr<ScriptedDrag> drag;
+    bool dragged = options.dragLight == 0;
     QObject::connect(waitForFirstFrame, &QTimer::timeout, &window, [&, waitForFirstFrame] {
       if (window.framesDrawn() < 1) return;
+      if (!dragged) {
+        if (!drag) {
+          drag = std::make_unique<ScriptedDrag>(window, options.dragLight,
+                                                [&, waitForFirstFrame](const std::string& error) {
+                                                  dragged = true;
+                                                  if (error.empty()) return;
+                                                  waitForFirstFrame->stop();
+                                                  std::cerr << "ivshadow: error: " << error << '\n';
+                                                  status = 2;
+                                                  QTimer::singleShot(0, qApp, [] { qApp->quit(); });
+                                                });
+          drag->start();
+        }
+        return;
+      }
       // The inspector reads the map during a frame after the one that built it.
       if (inspecting && !window.inspector().upToDate()) return;
       if (inspecting && window.inspector().picture().isNull()) {
@@ -232,7 +256,9 @@ int runViewer(const ViewerOptions& options, const char* programName) {
     if (status == 0) status = saveScene();
     if (status == 0 && !options.figures.empty()) {
       try {
-        writeTextFileAtomically(options.figures, window.figures().json() + "\n");
+        nlohmann::json figures = nlohmann::json::parse(window.figures().json());
+        if (drag) figures["drag"] = nlohmann::json::parse(drag->json());
+        writeTextFileAtomically(options.figures, figures.dump() + "\n");
         std::cout << "wrote " << options.figures << '\n';
       } catch (const std::exception& error) {
         std::cerr << error.what() << '\n';

@@ -18,6 +18,7 @@ struct ViewerOptions {
   bool noLightDragger = false;  // interactive runs: start with the light dragger off
   std::string inspect;          // LIGHT:FACE:LAYER[:visibility], shown in the map inspector
   std::string inspectOut;       // non-empty: with --inspect, the inspector's picture (PNG)
+  int dragLight = 0;            // with --screenshot: drag the light this many steps first
 
   // Scripted runs do their work and quit; errors go to stderr rather than dialogs.
   bool scripted() const { return !screenshot.empty() || !saveScene.empty(); }

@@ -39,6 +39,10 @@ void addViewerOptions(CLI::App& app, ViewerOptions& options) {
                "With --screenshot: show the light dragger, which scripted runs leave out");
   app.add_flag("--no-light-dragger", options.noLightDragger,
                "Start without the light dragger (View > Light Dragger shows it)");
+  app.add_option("--drag-light", options.dragLight,
+                 "With --screenshot: first drag the light dragger N steps, one per frame, "
+                 "wait for the picture to settle, and add the drag's frame rate to --figures")
+      ->check(CLI::Range(1, 100000));
   app.add_option("--inspect", options.inspect,
                  "LIGHT:FACE:LAYER[:visibility], e.g. Lamp:-z:1: open the map inspector on that "
                  "layer (depth unless :visibility); with --screenshot, print what it shows");

@@ -356,6 +356,7 @@ void ViewerWindow::frameDrawn(double wallMs, double gpuMs) {
   frameLabel_->setText(QString("frame %1 ms").arg(wallMs, 0, 'f', 1));
   panel_->setFigures(figures_.text());
   inspector_->frameDrawn(figures_.shadows.rebuilds);
+  if (frameDrawnCallback_) frameDrawnCallback_(wallMs);
 }
 
 void ViewerWindow::nodeSelected(SoNode* node) {

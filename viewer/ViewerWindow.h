@@ -73,6 +73,12 @@ class ViewerWindow : public QMainWindow {
   // Shows or hides the dragger on the selected deep shadow light (View ▸ Light Dragger).
   void setLightDraggerShown(bool shown);
 
+  // Called after every frame drawn, with its wall time, once the figures are collected.
+  void onFrameDrawn(std::function<void(double wallMs)> callback) {
+    frameDrawnCallback_ = std::move(callback);
+  }
+  LightDragger& lightDragger() { return dragger_; }
+
   ShadowPanel& panel() { return *panel_; }
   MapInspector& inspector() { return *inspector_; }
   const LiveFigures& figures() const { return figures_; }
@@ -111,6 +117,7 @@ class ViewerWindow : public QMainWindow {
   QString path_;
   CoinRef<SoSeparator> scene_;
   bool interactive_ = true;
+  std::function<void(double)> frameDrawnCallback_;
 };
 
 }  // namespace ivshadow

@@ -73,8 +73,9 @@ struct PeelStatistics;
   what GL draws after the group depth-tests against it. The picture is kept while the
   subgraph, the state above the group (transforms, lights, material, light model,
   environment), the camera, the viewport and the depth drawn before it stay the same: a still
-  frame only draws it again. Shapes drawn with lines, points or screen-aligned pixels are not
-  drawn (one warning names them). With `bounce TRUE`, `bounceLights` is the number of bounce
+  frame only draws it again. Shapes drawn with lines, points or screen-aligned pixels have no
+  triangles to trace: GL draws them after the picture, depth-tested against it, lit as Coin
+  lights them and without shadows (one warning names them). With `bounce TRUE`, `bounceLights` is the number of bounce
   rays per shaded point (rounded up to a square). The fields of the maps (resolution, layers, filters) do not apply.
 
   `movingResolution` trades a traced group's picture for speed while the scene moves, as the
