@@ -48,6 +48,8 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_ADD_FIELD(renderer, (RASTER));
   SO_NODE_DEFINE_ENUM_VALUE(Renderer, RASTER);
   SO_NODE_DEFINE_ENUM_VALUE(Renderer, TRACER);
+  // Files say AUTO; the C++ name is AUTO_RENDERER, since SoSeparator's CacheEnabled has AUTO.
+  fieldData->addEnumValue("Renderer", "AUTO", AUTO_RENDERER);
   SO_NODE_SET_SF_ENUM_TYPE(renderer, Renderer);
   SO_NODE_ADD_FIELD(bounce, (FALSE));
   SO_NODE_ADD_FIELD(bounceLights, (ivshadow::kDefaultBounceLights));

@@ -353,6 +353,25 @@ void TransparentShadowGroupImpl::shadeChildren(SoGLRenderAction* action, bool in
   renderChildren_(action, inPath);
 }
 
+bool TransparentShadowGroupImpl::traced(SoGLRenderAction* action) {
+  const int renderer = static_cast<SoTransparentShadowGroup*>(owner_)->renderer.getValue();
+  if (renderer != SoTransparentShadowGroup::AUTO_RENDERER)
+    return renderer == SoTransparentShadowGroup::TRACER;
+  const GlCapabilities* gl = capabilities_.get(
+      SoGLCacheContextElement::get(action->getState()),
+      [] { return std::make_unique<GlCapabilities>(GlCapabilities::queryCurrent()); });
+  // A CPU rasteriser shades every fragment on the cores the tracer would use; tracing the
+  // group whole is the faster of the two there (docs/PERFORMANCE.md).
+  const bool software = gl->isSoftwareRenderer();
+  if (!rendererLogged_) {
+    rendererLogged_ = true;
+    SoDebugError::postInfo("SoTransparentShadowGroup", "%s: renderer AUTO uses %s on %s",
+                           describeNode(owner_).c_str(), software ? "TRACER" : "RASTER",
+                           gl->renderer.c_str());
+  }
+  return software;
+}
+
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
   // The tracer draws the shapes it does not trace through the owner's paths: as a separator.
   if (tracer_.drawingUntraced()) return false;
@@ -366,8 +385,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     return false;
   }
   // Traced, the group needs none of the GL path's programs or maps.
-  if (static_cast<SoTransparentShadowGroup*>(owner_)->renderer.getValue() ==
-      SoTransparentShadowGroup::TRACER) {
+  if (traced(action)) {
     contents_.update(action);
     if (tracer_.render(action, contents_, statistics_)) return true;
   }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "callbacks/GlCapabilities.h"
 #include "callbacks/GlPassTimer.h"
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/DeepShadowStatistics.h"
@@ -103,6 +104,9 @@ class TransparentShadowGroupImpl {
   bool updateBounce(SoGLRenderAction* action, Context& context);
   // Draws the children in the shading pass: peeled, or as Coin blends them.
   void shadeChildren(SoGLRenderAction* action, bool inPath, bool peel, Context& context);
+  // Whether the group is traced in the action's context: renderer TRACER, or AUTO on a
+  // software rasteriser (said once).
+  bool traced(SoGLRenderAction* action);
   SoSeparator* owner_;
   ChildrenRenderer renderChildren_;
   GroupContents contents_;
@@ -112,9 +116,11 @@ class TransparentShadowGroupImpl {
   PeelStatistics peelStatistics_;
   RayCasters rayCasters_;
   GroupBounce bounce_;
-  GroupTracer tracer_;  // renderer TRACER
-  std::uint64_t bouncePlaced_ = 0;  // the mapsVersion the bounce's lights were placed for
-  std::set<const SoLight*> methodLogged_;  // lights whose AUTO choice was said
+  GroupTracer tracer_;                       // renderer TRACER
+  PerContext<GlCapabilities> capabilities_;  // what renderer AUTO chooses by
+  bool rendererLogged_ = false;              // renderer AUTO's choice was said
+  std::uint64_t bouncePlaced_ = 0;           // the mapsVersion the bounce's lights were placed for
+  std::set<const SoLight*> methodLogged_;    // lights whose AUTO choice was said
 };
 
 }  // namespace ivshadow

@@ -78,6 +78,10 @@ struct PeelStatistics;
   lights them and without shadows (one warning names them). With `bounce TRUE`, `bounceLights` is the number of bounce
   rays per shaded point (rounded up to a square). The fields of the maps (resolution, layers, filters) do not apply.
 
+  `renderer AUTO` chooses per GL context: TRACER where GL is a software rasteriser (Mesa's
+  llvmpipe, softpipe), whose shading costs more than the trace, RASTER on a GPU; it says which
+  once. RASTER stays the default, the path made for a GPU.
+
   `movingResolution` trades a traced group's picture for speed while the scene moves, as the
   viewports of path tracers do: a frame that must trace again right after a frame that traced
   (a light, the camera or a caster moving from frame to frame) is traced at that fraction of
@@ -117,7 +121,8 @@ struct PeelStatistics;
         bounceMapSize 128    # bounce: each one's imperfect shadow map, 16 .. 256 texels, a
                              #   power of two
         renderer RASTER      # RASTER: GL draws the children; TRACER: their triangles are
-                             #   traced on the CPU (exact shadows and glass in one pass)
+                             #   traced on the CPU (exact shadows and glass in one pass);
+                             #   AUTO: TRACER on a software rasteriser, else RASTER
         movingResolution 1   # TRACER: the fraction of the viewport's width and height
                              #   traced while the scene moves, 0.125 .. 1 (1: always full)
     }
@@ -138,7 +143,10 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
 
   enum Renderer {
     RASTER,  //!< GL draws the children, shaded with the group's shadows
-    TRACER   //!< Embree traces the children's triangles on the CPU; GL draws the picture
+    TRACER,  //!< Embree traces the children's triangles on the CPU; GL draws the picture
+    // TRACER on a software rasteriser (Mesa's llvmpipe), RASTER on a GPU (file name: AUTO;
+    // SoSeparator's CacheEnabled has AUTO).
+    AUTO_RENDERER
   };
   enum CastingLights {
     ALL_LIGHTS,         //!< every light turned on in the subgraph casts

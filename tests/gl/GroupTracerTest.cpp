@@ -3,6 +3,7 @@
 // against the traced picture, and what is traced or read again when something moves. Every
 // picture is checked against an expectation computed without the tracer (ShadowScene's
 // analytic picture, or a colour set in the scene).
+#include "callbacks/GlCapabilities.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
@@ -282,6 +283,33 @@ TEST(TracedGroup, LinesAreDrawnThroughGlAgainstThePicturesDepth) {
       kTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
   EXPECT_EQ(collectDeepShadowStatistics(root).tracerFrames, 1) << "the still frame traced";
+  root->unref();
+}
+
+// renderer AUTO traces on a software rasteriser (these machines: llvmpipe) and rasterises on
+// a GPU, and says which once.
+TEST(TracedGroup, AutoTracesOnASoftwareRasteriserAndSaysSo) {
+  ShadowScene scene = ShadowScene{};
+  scene.groupFields = "renderer AUTO";
+  scene.filters = {kRedGlass};
+  SoSeparator* root = readIv(scene.text());  // initialises Coin, which sets its handlers
+  CoinMessageCapture capture;
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  renderer->render(root);
+  renderer->render(root);
+  const bool software = GlCapabilities::queryCurrent().isSoftwareRenderer();
+  int said = 0;
+  for (const CoinMessageCapture::Message& message : capture.messages())
+    if (message.text.find(software ? "renderer AUTO uses TRACER" : "renderer AUTO uses RASTER") !=
+        std::string::npos)
+      ++said;
+  EXPECT_EQ(said, 1);
+  EXPECT_EQ(collectDeepShadowStatistics(root).tracerFrames, software ? 1 : 0);
+  const std::string failure = compareWithExpectation(
+      renderer->read(), ShadowPicture{&scene, ColourModel::Saturate}, kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
   root->unref();
 }
 
