@@ -107,17 +107,19 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
   const SbMatrix& viewing = SoViewingMatrixElement::get(state);
   const SbMatrix& projection = SoProjectionMatrixElement::get(state);
   stateAbove(state, lightsNow_, shadingNow_);
+  const SbVec2s size = SoViewportRegionElement::get(state).getViewportSizePixels();
   // The triangles are kept in the world: a transform above the group moves them, as does a
-  // change of the material or environment above it, which the group is not notified of.
+  // change of the material or environment above it, which the group is not notified of. A
+  // camera inside the group was read with the viewport's aspect.
   const bool shapesKept =
       scene_ && castersVersion_ == contents.castersVersion() &&
+      (contents.cameraPath() == nullptr || readSize_ == size) &&
       viewVersion_ == contents.viewVersion() && shadingNow_ == shadingAbove_ &&
       ((sceneViewing_ == viewing && sceneProjection_ == projection) || !scene_->viewDependent());
   if (shapesKept && mapsVersion_ == contents.mapsVersion() && sceneViewing_ == viewing &&
       lightsNow_ == lightsAbove_)
     return;
   const auto start = std::chrono::steady_clock::now();
-  const SbVec2s size = SoViewportRegionElement::get(state).getViewportSizePixels();
   // A copy: the action's own path changes as it traverses; this one is applied to.
   const CoinRef<SoPath> toGroup(action->getCurPath()->copy());
   // A moved light, or a moved camera (lights before it are fixed in eye space), changes only
@@ -133,6 +135,7 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
     return;
   }
   scene_ = SceneTracer::fromPath(toGroup.get(), size[0], size[1]);
+  readSize_ = size;
   ++shapesVersion_;
   castersVersion_ = contents.castersVersion();
   mapsVersion_ = contents.mapsVersion();
@@ -185,8 +188,12 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const SbVec2s origin = region.getViewportOriginPixels();
   const SbVec2s size = region.getViewportSizePixels();
   const std::array<int, 4> viewport{origin[0], origin[1], size[0], size[1]};
-  const SbMatrix& viewing = SoViewingMatrixElement::get(state);
-  const SbMatrix& projection = SoProjectionMatrixElement::get(state);
+  // A camera inside the group views its children, as GL would draw them (the one read with
+  // the shapes); else the camera in force where the group is traversed.
+  const bool cameraInside = contents.cameraPath() != nullptr && scene_->haveCamera();
+  const SbMatrix& viewing = cameraInside ? scene_->viewing() : SoViewingMatrixElement::get(state);
+  const SbMatrix& projection =
+      cameraInside ? scene_->projection() : SoProjectionMatrixElement::get(state);
   context->pass->readDepth(viewport, context->depthNow);
   // The same camera rays through the same shapes: they meet the surfaces kept.
   const bool sameView = context->shapes == shapesVersion_ && context->viewing == viewing &&

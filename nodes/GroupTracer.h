@@ -4,6 +4,7 @@
 #include "nodes/SceneTracer.h"
 
 #include <Inventor/SbMatrix.h>
+#include <Inventor/SbVec2s.h>
 #include <Inventor/sensors/SoAlarmSensor.h>
 
 #include <array>
@@ -93,6 +94,7 @@ class GroupTracer {
   std::uint64_t viewVersion_ = ~std::uint64_t(0);
   SbMatrix sceneViewing_;  // lights fixed in eye space were placed with it
   SbMatrix sceneProjection_;
+  SbVec2s readSize_{0, 0};  // the viewport's size when the subgraph was read
   // The state above the group the subgraph was read in (stateAbove), and this frame's.
   std::vector<float> lightsAbove_, shadingAbove_, lightsNow_, shadingNow_;
   PerContext<Context> contexts_;

@@ -25,6 +25,7 @@
 #include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoLightElement.h>
 #include <Inventor/lists/SoNodeList.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoPointLight.h>
@@ -210,6 +211,14 @@ SoCallbackAction::Response groupLeave(void* user, SoCallbackAction*, const SoNod
 SoCallbackAction::Response shadowStyle(void*, SoCallbackAction* action, const SoNode* node) {
   const auto* style = static_cast<const SoShadowStyle*>(node);
   SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node), style->style.getValue());
+  return SoCallbackAction::CONTINUE;
+}
+
+SoCallbackAction::Response cameraInGroup(void* user, SoCallbackAction* action, const SoNode*) {
+  auto& data = *static_cast<Extraction*>(user);
+  // Reading the lights alone (used only then), the camera the shapes of a group are viewed
+  // with is the last one met in it, as a full read takes it from the triangles.
+  if (!data.groupStack.empty()) data.viewing = action->getViewingMatrix();
   return SoCallbackAction::CONTINUE;
 }
 
@@ -778,6 +787,8 @@ namespace {
 // the lights that cast in each group, decided as the group decides it
 // (GroupContents::findLights).
 void placeLights(Extraction& data) {
+  // GL keeps a light where the model-view matrix put it when it was traversed, in eye space:
+  // a camera met after it (a headlight's, or one inside a group) views it from there.
   const SbMatrix eyeToWorld = data.viewing.inverse();
   for (Light& light : data.lights) {
     SbVec3f v;
@@ -869,6 +880,7 @@ bool SceneTracer::updateLights(const SoPath* path) {
     SoCallbackAction action{SbViewportRegion(short(data_->width), short(data_->height))};
     action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
     action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
+    action.addPostCallback(SoCamera::getClassTypeId(), cameraInGroup, &data);
     action.addPreCallback(SoLight::getClassTypeId(), light, &data);
     action.addPreCallback(SoShape::getClassTypeId(), pruneShape, nullptr);
     action.apply(const_cast<SoPath*>(path));

@@ -16,6 +16,7 @@
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoLight.h>
 #include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTranslation.h>
 #include <Inventor/sensors/SoNodeSensor.h>
@@ -203,6 +204,92 @@ TEST(TracedGroup, ThePictureOfAMovedLightKeepsItsDepth) {
   const std::string failure =
       compareWithExpectation(r.renderer->read(), squareOrFloor(scene, false), kTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
+}
+
+// A moved camera re-reads only the lights: the picture is the one a fresh read of the scene
+// with the camera there gives (the lights stay where they are in the world).
+TEST(TracedGroup, AMovedCameraSeesWhatAFreshReadSees) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  const SbVec3f moved(0.3f, 0.1f, 5.0f);
+  Rendering moving(scene);
+  ASSERT_TRUE(moving.renderer);
+  moving.frame();
+  static_cast<SoCamera*>(moving.root->getChild(0))->position = moved;
+  ASSERT_EQ(moving.frame().tracerScenes, 1) << "the shapes were read again";
+  const Image afterMove = moving.renderer->read();
+  Rendering fresh(scene);
+  static_cast<SoCamera*>(fresh.root->getChild(0))->position = moved;
+  fresh.frame();
+  const Image expected = fresh.renderer->read();
+  // Both are the same code's picture of the same view: equal but for float rounding.
+  const std::string failure = compareWithExpectation(
+      afterMove,
+      [&expected](int x, int y) {
+        const std::uint8_t* p = expected.pixel(x, y);
+        return Expectation{true, {double(p[0]), double(p[1]), double(p[2])}};
+      },
+      kTolerance);
+  EXPECT_TRUE(failure.empty()) << failure;
+}
+
+// A camera inside the group views its children, as GL draws them with it: the picture is
+// the analytic one of that camera, whatever the camera above does; moving the inner camera
+// traces again.
+TEST(TracedGroup, ACameraInsideTheGroupIsTheOneTraced) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer);
+  auto* outer = static_cast<SoOrthographicCamera*>(r.root->getChild(0));
+  auto* group = static_cast<SoSeparator*>(SoNode::getByName("Group"));
+  ASSERT_TRUE(outer->isOfType(SoOrthographicCamera::getClassTypeId()) && group != nullptr);
+  auto* inner = static_cast<SoOrthographicCamera*>(outer->copy());
+  group->insertChild(inner, 0);
+  // The outer camera looks elsewhere: were it the one traced, the floor would be shifted.
+  outer->position = SbVec3f(0.4f, 0.3f, 5.0f);
+  r.expectAnalytic(scene, "the inner camera as the scene's");
+  // The outer camera moves on: only the lights are read again, and the inner camera's
+  // picture stays.
+  outer->position = SbVec3f(-0.3f, 0.2f, 5.0f);
+  r.expectAnalytic(scene, "after the outer camera moved");
+  inner->position = SbVec3f(0.2f, 0.0f, 5.0f);
+  r.frame();
+  inner->position = SbVec3f(0.0f, 0.0f, 5.0f);
+  r.expectAnalytic(scene, "after the inner camera moved and came back");
+}
+
+// A light above a group that has a camera of its own stays where GL put it, in the outer
+// camera's eye space, which the inner camera views (GL does not move a light it was given):
+// the traced picture is the GL path's (RAYS, exact shadows; the outside light only lights).
+TEST(TracedGroup, ALightAboveAGroupWithItsOwnCameraStaysInPlace) {
+  std::vector<Image> pictures;
+  for (const char* renderer : {"renderer TRACER", "renderer RASTER"}) {
+    ShadowScene scene{};
+    scene.method = "RAYS";
+    scene.groupFields = renderer;
+    scene.filters = {kRedGlass};
+    scene.aboveGroup = "PointLight { location 0.6 0.4 0.8 intensity 0.6 }";
+    Rendering r(scene);
+    ASSERT_TRUE(r.renderer);
+    auto* outer = static_cast<SoCamera*>(r.root->getChild(0));
+    auto* group = static_cast<SoSeparator*>(SoNode::getByName("Group"));
+    group->insertChild(outer->copy(), 0);
+    outer->position = SbVec3f(0.4f, 0.3f, 5.0f);
+    r.frame();
+    pictures.push_back(r.renderer->read());
+  }
+  // The GL path lights per pixel in floats too, and rounds differently; its RAYS shadow edges
+  // fall a pixel either way: 3 steps over 99 % of the pixels.
+  int off = 0;
+  for (int y = 0; y < ShadowScene::kSize; ++y)
+    for (int x = 0; x < ShadowScene::kSize; ++x)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(int(pictures[0].pixel(x, y)[c]) - int(pictures[1].pixel(x, y)[c])) > 3) {
+          ++off;
+          break;
+        }
+  EXPECT_LT(off, ShadowScene::kSize * ShadowScene::kSize / 100) << "pixels apart by over 3 steps";
 }
 
 // The group is not notified of changes above it: a transform, a light or a material there
