@@ -1,5 +1,6 @@
 // Order-independent transparency cost and error against depth complexity: the plugin's
-// SoPeelingSeparator (DUAL, FRONT_TO_BACK, FRAGMENT_LISTS) against Coin's SORTED_LAYERS_BLEND with
+// SoPeelingSeparator (DUAL, FRONT_TO_BACK, FRAGMENT_LISTS) and a group with renderer TRACER
+// (still, and with the camera moving) against Coin's SORTED_LAYERS_BLEND with
 // as many passes as there are layers, and plain BLEND. Run: build/bin/ivshadow_bench
 // --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
 // largest channel error (0..255) against the exact CPU compositing of tests/gl/PeelReference.
@@ -10,6 +11,7 @@
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <benchmark/benchmark.h>
@@ -22,7 +24,9 @@ namespace {
 constexpr int kSize = 400;
 constexpr double kViewHeight = 2.4;
 
-enum Method { kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists };
+// kTraced: a SoTransparentShadowGroup with renderer TRACER (the stack traced on the CPU);
+// kTracedMoving: the same with the camera moving every frame, so that every frame traces.
+enum Method { kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists, kTraced, kTracedMoving };
 
 // `depth` coloured glass sheets stacked over an opaque floor, each tilted so that it cuts
 // its neighbours: every pixel of the centre sees `depth` transparent layers, in an order that
@@ -35,7 +39,9 @@ std::string stackText(int depth, Method method) {
      << (method == kDual            ? "PeelingSeparator { method DUAL\n"
          : method == kFrontToBack   ? "PeelingSeparator { method FRONT_TO_BACK\n"
          : method == kFragmentLists ? "PeelingSeparator { method FRAGMENT_LISTS\n"
-                                    : "Separator {\n")
+         : method == kTraced || method == kTracedMoving
+             ? "TransparentShadowGroup { renderer TRACER\n"
+             : "Separator {\n")
      << "BaseColor { rgb 0.5 0.5 0.5 }\n"
      << "Coordinate3 { point [ -1.1 -1.1 -2, 1.1 -1.1 -2, 1.1 1.1 -2, -1.1 1.1 -2 ] }\n"
      << "FaceSet { numVertices 4 }\n";
@@ -81,7 +87,18 @@ void Peel(benchmark::State& state) {
   const std::string text = stackText(depth, method);
   SoSeparator* root = read(text);
   renderer->render(root);
-  for (auto _ : state) state.SetIterationTime(renderer->render(root).wallMs * 1e-3);
+  auto* camera = static_cast<SoCamera*>(root->getChild(0));
+  const SbVec3f eye = camera->position.getValue();
+  int frame = 0;
+  for (auto _ : state) {
+    if (method == kTracedMoving)
+      camera->position.setValue(eye + SbVec3f(0.01f * float(++frame % 2), 0.0f, 0.0f));
+    state.SetIterationTime(renderer->render(root).wallMs * 1e-3);
+  }
+  if (camera->position.getValue() != eye) {
+    camera->position.setValue(eye);
+    renderer->render(root);
+  }
 
   const ivshadow::Image image = renderer->read();
   const ivshadow::test::PeelReference reference(root, kViewHeight, kSize);
@@ -92,17 +109,20 @@ void Peel(benchmark::State& state) {
         for (int c = 0; c < 3; ++c)
           worst = std::max(worst, std::abs(image.pixel(x, y)[c] - (*expected)[std::size_t(c)]));
   state.counters["max_error"] = worst;
-  state.SetLabel(method == kBlend          ? "BLEND"
-                 : method == kSortedLayers ? "SORTED_LAYERS_BLEND"
-                 : method == kDual         ? "PeelingSeparator DUAL"
-                 : method == kFrontToBack  ? "PeelingSeparator FRONT_TO_BACK"
-                                           : "PeelingSeparator FRAGMENT_LISTS");
+  state.SetLabel(method == kBlend           ? "BLEND"
+                 : method == kSortedLayers  ? "SORTED_LAYERS_BLEND"
+                 : method == kDual          ? "PeelingSeparator DUAL"
+                 : method == kFrontToBack   ? "PeelingSeparator FRONT_TO_BACK"
+                 : method == kFragmentLists ? "PeelingSeparator FRAGMENT_LISTS"
+                 : method == kTraced        ? "TRACER still"
+                                            : "TRACER camera moving");
   renderer.reset();
   root->unref();
 }
 
 void depths(benchmark::internal::Benchmark* b) {
-  for (int method : {kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists})
+  for (int method :
+       {kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists, kTraced, kTracedMoving})
     for (int depth : {1, 2, 4, 8, 16}) b->Args({method, depth});
   b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(5);
 }
