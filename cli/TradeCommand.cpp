@@ -55,6 +55,9 @@ struct Setting {
   int layers = 0;  // an opacity map's: its slices
   std::string precision;
   std::string filter;
+  // The group traced whole (SoTransparentShadowGroup renderer TRACER): the lights' fields do
+  // not apply.
+  bool tracer = false;
 };
 
 struct Row {
@@ -110,12 +113,12 @@ int runTrade(const TradeOptions& options) {
       if (n < 1 || n > kMaxOpacitySlices)
         throw InputError("--slices " + std::to_string(n) + ": error: expected 1 .. " +
                          std::to_string(kMaxOpacitySlices));
-    checkList(options.methods, {"map", "rays", "volumes", "opacity"}, "--method");
+    checkList(options.methods, {"map", "rays", "volumes", "opacity", "tracer"}, "--method");
     const auto asked = [&](const char* method) {
       return std::count(options.methods.begin(), options.methods.end(), method) > 0;
     };
     const bool maps = asked("map"), rays = asked("rays"), volumes = asked("volumes"),
-               opacity = asked("opacity");
+               opacity = asked("opacity"), tracer = asked("tracer");
 
     init();
     LoadedScene scene = loadScene(options.scene);
@@ -129,7 +132,8 @@ int runTrade(const TradeOptions& options) {
                        "there is no deep shadow setting to trade");
     // One process holds the reference and the renders, the traced setting's among them, at
     // once.
-    const MemoryCost render = RenderMemory::of(scene.root.get(), false, rays || volumes).cost;
+    const MemoryCost render =
+        RenderMemory::of(scene.root.get(), false, rays || volumes || tracer).cost;
     MemoryBudget::check(size,
                         {kReferenceCost.bytesPerPixel + render.bytesPerPixel,
                          kReferenceCost.fixedBytes + render.fixedBytes},
@@ -146,6 +150,11 @@ int runTrade(const TradeOptions& options) {
 
     std::vector<Setting> settings;
     if (rays) settings.push_back(Setting{"rays (exact)", SoDeepShadowLight::RAYS, 0, 0, "", ""});
+    if (tracer) {
+      Setting traced{"group traced (TRACER)", SoDeepShadowLight::RAYS, 0, 0, "", ""};
+      traced.tracer = true;
+      settings.push_back(traced);
+    }
     if (volumes)
       settings.push_back(
           Setting{"shadow volumes (exact, hard)", SoDeepShadowLight::VOLUMES, 0, 0, "", ""});
@@ -161,11 +170,10 @@ int runTrade(const TradeOptions& options) {
       for (int slices : options.slices)
         for (const std::string& precision : options.precisions)
           for (const std::string& filter : options.filters)
-            settings.push_back(Setting{"opacity " + std::to_string(resolution) + " " +
-                                           std::to_string(slices) + "S " + precision +
-                                           (filter == "none" ? "" : " " + filter),
-                                       SoDeepShadowLight::OPACITY_MAP, resolution, slices,
-                                       precision, filter});
+            settings.push_back(
+                Setting{"opacity " + std::to_string(resolution) + " " + std::to_string(slices) +
+                            "S " + precision + (filter == "none" ? "" : " " + filter),
+                        SoDeepShadowLight::OPACITY_MAP, resolution, slices, precision, filter});
     const int total = int(settings.size()) + 2;
     ProgressBar bar;
     int done = 0;
@@ -202,6 +210,9 @@ int runTrade(const TradeOptions& options) {
     renderer->render(view.root.get());
 
     for (const Setting& setting : settings) {
+      for (SoTransparentShadowGroup* group : groups)
+        group->renderer.setValue(setting.tracer ? SoTransparentShadowGroup::TRACER
+                                                : SoTransparentShadowGroup::RASTER);
       for (SoDeepShadowLight* light : lights) {
         light->method.setValue(setting.method);
         const bool opacityMap = setting.method == SoDeepShadowLight::OPACITY_MAP;
@@ -218,7 +229,8 @@ int runTrade(const TradeOptions& options) {
       Row row;
       row.setting = setting;
       const bool wholeFrame = setting.method != SoDeepShadowLight::MAP;
-      row.kind = setting.method == SoDeepShadowLight::RAYS          ? "rays"
+      row.kind = setting.tracer                                     ? "tracer"
+                 : setting.method == SoDeepShadowLight::RAYS        ? "rays"
                  : setting.method == SoDeepShadowLight::VOLUMES     ? "shadow volumes"
                  : setting.method == SoDeepShadowLight::OPACITY_MAP ? "opacity map"
                                                                     : "deep shadow map";
@@ -239,7 +251,7 @@ int runTrade(const TradeOptions& options) {
       row.buildMs = FrameStatistics::median(builds);
       const DeepShadowStatistics stats = collectDeepShadowStatistics(view.root.get());
       for (const DeepShadowLightStatistics& light : stats.lights) row.bytes += light.bytes;
-      if (setting.method == SoDeepShadowLight::RAYS)
+      if (setting.method == SoDeepShadowLight::RAYS && !setting.tracer)
         row.bytes = stats.bvhBytes;  // the casters' BVH instead of a map
       row.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
       if (wholeFrame) row.buildMs = std::max(0.0, row.buildMs - row.frameMs);
@@ -266,7 +278,7 @@ int runTrade(const TradeOptions& options) {
       points.push_back(TradePoint{row.setting.label, row.buildMs + row.frameMs,
                                   row.metrics.all.rmse, row.kind == "baseline", false,
                                   row.kind == "rays" || row.kind == "shadow volumes" ||
-                                      &row == bestOpacity,
+                                      row.kind == "tracer" || &row == bestOpacity,
                                   row.kind == "opacity map"});
     }
     markParetoFront(points);

@@ -15,7 +15,7 @@ struct TradeOptions {
   std::vector<std::string> filters{"none", "bilinear", "pcf"};
   std::vector<int> slices{4, 16};  // the opacity maps'
   // rays and volumes: one setting each, exact; map and opacity: their sweeps
-  std::vector<std::string> methods{"map", "rays", "volumes", "opacity"};
+  std::vector<std::string> methods{"map", "rays", "volumes", "opacity", "tracer"};
   int frames = 5;
 };
 

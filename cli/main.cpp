@@ -199,7 +199,9 @@ int main(int argc, char** argv) {
   tradeCommand->add_option("--slices", trade.slices, "Opacity map slice counts, comma-separated")
       ->delimiter(',')
       ->capture_default_str();
-  tradeCommand->add_option("--method", trade.methods, "map, rays, volumes and/or opacity")
+  tradeCommand
+      ->add_option("--method", trade.methods,
+                   "map, rays, volumes, opacity and/or tracer (the group traced whole)")
       ->delimiter(',')
       ->capture_default_str();
   tradeCommand->add_option("--frames", trade.frames, "Frames timed per setting (median)")
