@@ -8,7 +8,9 @@ namespace ivshadow {
 // traversal, may leave changed in GL, saved for the scope's lifetime and put back: the whole
 // attribute and client attribute stacks (enables, lights, material, depth, blending,
 // viewport, texture bindings of every unit), the projection, model-view and texture
-// matrices, the program, vertex array, array buffer, framebuffers and active texture unit.
+// matrices (the first texture unit's, where Coin's texture transforms go), the program, vertex
+// array, array buffer, framebuffers and active texture unit. Other buffer bindings (pixel
+// pack and unpack, uniform buffers) are not saved: Coin's fixed-function drawing leaves them.
 // Without it the outer action's elements would believe GL holds what they last sent while
 // it held the nested action's last state.
 class NestedRenderScope {

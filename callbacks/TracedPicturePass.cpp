@@ -54,9 +54,6 @@ std::string TracedPicturePass::upload(int width, int height, const float* rgba,
       depth_ = GlTexture();
       return error;
     }
-    // Stretched over a larger viewport, the colour is interpolated and stops at the edges.
-    glTextureParameteri(colour_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(colour_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     width_ = width;
     height_ = height;
   }
@@ -76,9 +73,12 @@ void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   glBlendEquation(GL_FUNC_ADD);
   // dst = src.rgb + dst * src.a, keeping the framebuffer's alpha.
   glBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
-  // The trace already ended at the depth GL held: every fragment is written, with its depth.
+  // The trace already ended at the depth GL held: at the viewport's size every fragment is
+  // written, with its depth. Stretched, a pixel takes a neighbouring ray's colour and depth,
+  // which may lie behind what GL drew before there: that stays (the depth test).
+  const bool stretched = width_ != viewport[2] || height_ != viewport[3];
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_ALWAYS);
+  glDepthFunc(stretched ? GL_LEQUAL : GL_ALWAYS);
   glDepthMask(GL_TRUE);
   glDepthRange(0.0, 1.0);
   glUseProgram(program_.name());
@@ -86,10 +86,7 @@ void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   program_.setInt("uDepth", kDepthUnit);
   glUniform2i(program_.location("uOrigin"), viewport[0], viewport[1]);
   glUniform2i(program_.location("uSize"), viewport[2], viewport[3]);
-  // At the viewport's size each fragment takes its own pixel, unfiltered.
-  const GLint filter = width_ == viewport[2] && height_ == viewport[3] ? GL_NEAREST : GL_LINEAR;
-  glTextureParameteri(colour_.get(), GL_TEXTURE_MIN_FILTER, filter);
-  glTextureParameteri(colour_.get(), GL_TEXTURE_MAG_FILTER, filter);
+  program_.setInt("uStretched", stretched ? 1 : 0);
   glBindTextureUnit(GLuint(kColourUnit), colour_.get());
   glBindTextureUnit(GLuint(kDepthUnit), depth_.get());
   glBindVertexArray(emptyVertexArray_.get());

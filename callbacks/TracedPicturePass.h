@@ -29,8 +29,8 @@ class TracedPicturePass {
   std::string upload(int width, int height, const float* rgba, const float* depth);
   // Draws the picture uploaded last over `viewport`, whatever state Coin left, and puts the
   // state back. A picture smaller than the viewport (a frame traced at a lower resolution
-  // while the scene moves) is stretched over it: its colour interpolated, its depth the
-  // nearest pixel's.
+  // while the scene moves) is stretched over it: its depth the nearest pixel's, its colour
+  // interpolated among the pixels at that depth (traced_picture.frag).
   void draw(const std::array<int, 4>& viewport) const;
 
  private:

@@ -6,6 +6,7 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/GroupContents.h"
+#include "nodes/TracerActivity.h"
 #include "scene/CoinRef.h"
 #include "scene/EnvironmentValues.h"
 #include "scene/SceneTriangles.h"
@@ -80,9 +81,8 @@ void GroupTracer::refine(void* self, SoSensor*) {
   auto* tracer = static_cast<GroupTracer*>(self);
   // The notification reaches whoever redraws the scene (a viewer's scene manager); the next
   // frame finds nothing changed and traces the full picture.
-  tracer->touching_ = true;
+  const TracerActivity::Scope touching(TracerActivity::RefineTouch);
   tracer->owner_->touch();
-  tracer->touching_ = false;
 }
 
 const float* GroupTracer::reducedLimit(Context& context, const std::array<int, 4>& viewport,
@@ -136,6 +136,7 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
   }
   scene_ = SceneTracer::fromPath(toGroup.get(), size[0], size[1]);
   readSize_ = size;
+  readPathLength_ = toGroup->getLength();
   ++shapesVersion_;
   castersVersion_ = contents.castersVersion();
   mapsVersion_ = contents.mapsVersion();
@@ -202,10 +203,11 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const bool kept = sameView && context->scene == sceneVersion_;
   // A reduced picture is refined by the first frame that finds nothing changed.
   const bool refining = kept && context->reduced;
+  const bool hadPicture = context->scene != 0;
   if (!kept || refining) {
     const auto start = std::chrono::steady_clock::now();
     auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
-    // A frame that traces right after one that traced is part of a motion.
+    // A change right after a frame that traced for a change is part of a motion.
     const float fraction = resolveMovingResolution(group);
     const float scale = !kept && context->tracedLastFrame ? fraction : 1.0f;
     TraceOptions options;
@@ -238,7 +240,7 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     context->depthTraced.swap(context->depthNow);
     context->reduced = reduced;
     if (reduced) {
-      refineSensor_.unschedule();
+      if (refineSensor_.isScheduled()) refineSensor_.unschedule();
       refineSensor_.setTimeFromNow(SbTime(kRefineDelaySeconds));
       refineSensor_.schedule();
     }
@@ -251,7 +253,9 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     ++statistics.tracerFrames;
     if (refining) ++statistics.tracerRefines;
   }
-  context->tracedLastFrame = !kept || refining;
+  // A motion: this frame traced because something changed since a picture was drawn. The
+  // first picture and a refined one are not (the next change is then traced in full).
+  context->tracedLastFrame = !kept && hadPicture;
   context->pass->draw(viewport);
   // GL is restored; Coin must not trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
@@ -261,18 +265,23 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
 
 void GroupTracer::drawUntraced(SoGLRenderAction* action) {
   SoState* state = action->getState();
+  // Each shape's path below the owner, on the path this action took to the owner (another
+  // viewer's root, or a graph changed above the group, has another): the camera, the lights
+  // and the transforms on the way are traversed again, and every group on them renders as a
+  // plain separator.
   SoPathList paths;
-  for (const SoPath* path : scene_->untracedPaths()) paths.append(const_cast<SoPath*>(path));
-  // The paths run from the action's root: the camera, the lights and the transforms on the
-  // way are traversed again, and the owner renders the part of them below it as a separator.
+  for (const SoPath* below : scene_->untracedPaths()) {
+    SoPath* path = action->getCurPath()->copy();
+    for (int i = readPathLength_; i < below->getLength(); ++i) path->append(below->getIndex(i));
+    paths.append(path);
+  }
   SoGLRenderAction nested(SoViewportRegionElement::get(state));
   nested.setCacheContext(action->getCacheContext());
   nested.setTransparencyType(action->getTransparencyType());
   {
     const NestedRenderScope scope;
-    drawingUntraced_ = true;
+    const TracerActivity::Scope drawing(TracerActivity::DrawingUntraced);
     nested.apply(paths, FALSE);
-    drawingUntraced_ = false;
   }
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 }

@@ -45,12 +45,6 @@ class GroupTracer {
   // GL does).
   bool render(SoGLRenderAction* action, const GroupContents& contents,
               DeepShadowStatistics& statistics);
-  // Whether the owner is being touched to ask for a refined frame: a notification that
-  // changes nothing the group holds.
-  bool touchingOwner() const { return touching_; }
-  // Whether the shapes the tracer does not draw are being drawn through GL (a second render
-  // action over their paths, through the owner): the owner then renders as a separator.
-  bool drawingUntraced() const { return drawingUntraced_; }
 
  private:
   struct Context {
@@ -65,7 +59,7 @@ class GroupTracer {
     std::vector<float> depthNow;      // read this frame
     std::vector<float> depthReduced;  // depthNow at a reduced picture's pixels
     bool reduced = false;             // the picture kept was traced at movingResolution
-    bool tracedLastFrame = false;     // the previous frame traced (the scene is moving)
+    bool tracedLastFrame = false;     // the previous frame traced for a change (a motion)
     // The surfaces the picture's camera rays met: composited again when only the lights
     // changed.
     SurfacesMet surfaces;
@@ -100,8 +94,9 @@ class GroupTracer {
   PerContext<Context> contexts_;
   TracedPixels pixels_;
   SoAlarmSensor refineSensor_;
-  bool touching_ = false;
-  bool drawingUntraced_ = false;
+  // The length of the path to the owner the subgraph was read through: the untraced shapes'
+  // paths below it are drawn from the path of the frame's own action.
+  int readPathLength_ = 0;
 };
 
 }  // namespace ivshadow

@@ -1,5 +1,7 @@
 #include "nodes/PeelingSeparatorImpl.h"
 
+#include "nodes/TracerActivity.h"
+
 #include "callbacks/PeelPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/SoPeelingSeparator.h"
@@ -44,7 +46,8 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   // A group capturing surfaces for its RAYS lights wants every layer drawn with its program;
   // a peeling above (a peeling group's, or another separator's) peels these children with
   // the rest, each pixel once.
-  if (ShadowGroupElement::capturing(state) || ShadowGroupElement::peeling(state)) {
+  if (ShadowGroupElement::capturing(state) || ShadowGroupElement::peeling(state) ||
+      TracerActivity::active(TracerActivity::DrawingUntraced)) {
     // The peeling above reports the passes; during a capture the last frame's stand.
     if (ShadowGroupElement::peeling(state)) {
       statistics_.passes = 0;

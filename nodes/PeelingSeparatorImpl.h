@@ -4,6 +4,7 @@
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
 #include "nodes/PerContext.h"
+#include "nodes/TracerActivity.h"
 
 class SoGLRenderAction;
 class SoNotList;
@@ -25,7 +26,10 @@ class PeelingSeparatorImpl {
   PeelingSeparatorImpl& operator=(const PeelingSeparatorImpl&) = delete;
 
   void render(SoGLRenderAction* action, bool inPath);
-  void changed(SoNotList* list) { contents_.changed(list); }
+  void changed(SoNotList* list) {
+    // A traced group asking for its refined frame changes nothing here.
+    if (!TracerActivity::active(TracerActivity::RefineTouch)) contents_.changed(list);
+  }
   const PeelStatistics& statistics() const { return statistics_; }
 
  private:

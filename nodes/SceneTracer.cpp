@@ -138,6 +138,7 @@ struct Extraction {
   std::map<const SoNode*, std::string> skipped;  // shapes without triangles
   std::vector<std::string> untracedShapes;       // their names, in traversal order
   std::vector<CoinRef<SoPath>> untracedPaths;    // and the paths to every instance
+  std::uint32_t untracedShape = ~0u;             // the instance (shape) a path was kept for
   SbMatrix viewing = SbMatrix::identity();
   SbMatrix projection = SbMatrix::identity();
   bool haveCamera = false;
@@ -268,7 +269,10 @@ SoCallbackAction::Response light(void* user, SoCallbackAction* action, const SoN
 }
 
 void notTriangles(SoCallbackAction* action, Extraction& data) {
-  // Every path, for GL to draw each instance; each shape named once.
+  // One path per instance (not per segment or point), for GL to draw each; each shape named
+  // once.
+  if (data.untracedShape == data.shape) return;
+  data.untracedShape = data.shape;
   data.untracedPaths.emplace_back(action->getCurPath()->copy());
   const SoNode* node = action->getCurPathTail();
   if (data.skipped.count(node) != 0) return;

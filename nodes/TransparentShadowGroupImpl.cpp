@@ -1,5 +1,7 @@
 #include "nodes/TransparentShadowGroupImpl.h"
 
+#include "nodes/TracerActivity.h"
+
 #include "callbacks/DeepShadowPass.h"
 #include "callbacks/GlCapabilities.h"
 #include "callbacks/GlStateScope.h"
@@ -97,8 +99,9 @@ TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner,
 TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
 
 void TransparentShadowGroupImpl::changed(SoNotList* list) {
-  // The tracer asking for a refined frame changes nothing the group holds.
-  if (tracer_.touchingOwner()) return;
+  // A traced group asking for its refined frame (this one or one inside) changes nothing the
+  // group holds.
+  if (TracerActivity::active(TracerActivity::RefineTouch)) return;
   contents_.changed(list);
 }
 
@@ -373,8 +376,9 @@ bool TransparentShadowGroupImpl::traced(SoGLRenderAction* action) {
 }
 
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
-  // The tracer draws the shapes it does not trace through the owner's paths: as a separator.
-  if (tracer_.drawingUntraced()) return false;
+  // A traced group draws the shapes it does not trace through paths that may run through this
+  // group, or are its own: as a separator.
+  if (TracerActivity::active(TracerActivity::DrawingUntraced)) return false;
   SoState* state = action->getState();
   // Inside a peeling (an enclosing peeling group's or a SoPeelingSeparator's) every pass has
   // its variant of the enclosing shading bound; this group's own programs would write colours

@@ -2,21 +2,48 @@
 // framebuffer: premultiplied colour with the transmittance left in alpha, blended as
 // dst = src.rgb + dst * src.a, and the window depth of its nearest opaque surface (or the one
 // the framebuffer held, read before the trace) written as the fragment's depth. The picture's
-// rows run top to bottom. It covers the viewport whatever its own size: one traced at a lower
-// resolution while the scene moves is stretched, its colour filtered as the texture is set
-// (premultiplied, so interpolating it is compositing's own mean), its depth the nearest
-// pixel's (depths of different surfaces have no meaningful mean).
+// rows run top to bottom. It covers the viewport whatever its own size. One traced at a lower
+// resolution while the scene moves is stretched: each fragment takes the nearest pixel's
+// depth, and the bilinear mean of those of the four pixels around it that lie at that depth
+// (premultiplied colours, so the mean is compositing's own). Pixels of another surface are
+// left out of the mean, so a surface's colour does not bleed over an edge onto what GL drew
+// before the group there.
 uniform sampler2D uColour;
 uniform sampler2D uDepth;
-uniform ivec2 uOrigin;  // the viewport's corner in window coordinates
-uniform ivec2 uSize;    // the viewport's size
+uniform ivec2 uOrigin;    // the viewport's corner in window coordinates
+uniform ivec2 uSize;      // the viewport's size
+uniform bool uStretched;  // the picture is smaller than the viewport
+
+// Window depths closer than this are one surface (a slope within one stretched pixel);
+// surfaces GL drew apart differ by far more.
+const float kSameSurface = 1.0e-3;
 
 layout(location = 0) out vec4 oColour;
 
 void main() {
   vec2 at = (gl_FragCoord.xy - vec2(uOrigin)) / vec2(uSize);
   at.y = 1.0 - at.y;
-  oColour = texture(uColour, at);
   ivec2 pixels = textureSize(uDepth, 0);
-  gl_FragDepth = texelFetch(uDepth, min(ivec2(at * vec2(pixels)), pixels - 1), 0).r;
+  ivec2 nearest = min(ivec2(at * vec2(pixels)), pixels - 1);
+  float depth = texelFetch(uDepth, nearest, 0).r;
+  gl_FragDepth = depth;
+  if (!uStretched) {
+    oColour = texelFetch(uColour, nearest, 0);
+    return;
+  }
+  vec2 texel = at * vec2(pixels) - 0.5;
+  ivec2 corner = ivec2(floor(texel));
+  vec2 f = texel - vec2(corner);
+  vec4 sum = vec4(0.0);
+  float weights = 0.0;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      ivec2 p = clamp(corner + ivec2(i, j), ivec2(0), pixels - 1);
+      if (abs(texelFetch(uDepth, p, 0).r - depth) > kSameSurface) continue;
+      float w = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
+      sum += w * texelFetch(uColour, p, 0);
+      weights += w;
+    }
+  // The nearest pixel is one of the four and carries the largest weight.
+  oColour = weights > 0.0 ? sum / weights : texelFetch(uColour, nearest, 0);
 }

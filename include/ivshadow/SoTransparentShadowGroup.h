@@ -84,8 +84,9 @@ struct PeelStatistics;
 
   `movingResolution` trades a traced group's picture for speed while the scene moves, as the
   viewports of path tracers do: a frame that must trace again right after a frame that traced
-  (a light, the camera or a caster moving from frame to frame) is traced at that fraction of
-  the viewport's width and height and stretched over it. The first frame that finds nothing
+  for a change (a light, the camera or a caster moving from frame to frame) is traced at that
+  fraction of the viewport's width and height and stretched over it; the first frame of a
+  motion is traced in full, so a single edit is never blurred. The first frame that finds nothing
   changed traces the full picture; the group asks for that frame itself, through Coin's
   sensors, a quarter of a second after the last reduced one, so a viewer refines once the
   motion stops. At 1, the default, every frame is traced in full: what batch rendering of

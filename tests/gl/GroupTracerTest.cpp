@@ -7,6 +7,7 @@
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 
@@ -57,12 +58,13 @@ INSTANTIATE_TEST_SUITE_P(Cases, TracedGroupAnalytic, ::testing::ValuesIn(analyti
                          analyticCaseName);
 
 // A blue square drawn by GL (BASE_COLOR) before or after the group, at height `z` over the
-// floor's left part: x in [-0.95, -0.6], y in [-0.95, 0.95].
-std::string blueSquare(double z) {
-  const std::string h = " " + std::to_string(z);
+// floor's left part: x in [left, right], y in [-0.95, 0.95].
+std::string blueSquare(double z, double left = -0.95, double right = -0.6) {
+  const std::string h = " " + std::to_string(z), l = std::to_string(left) + " ",
+                    r = std::to_string(right) + " ";
   return "Separator { LightModel { model BASE_COLOR } BaseColor { rgb 0 0 1 } "
-         "Coordinate3 { point [ -0.95 -0.95" +
-         h + ", -0.6 -0.95" + h + ", -0.6 0.95" + h + ", -0.95 0.95" + h +
+         "Coordinate3 { point [ " +
+         l + "-0.95" + h + ", " + r + "-0.95" + h + ", " + r + "0.95" + h + ", " + l + "0.95" + h +
          " ] } FaceSet { numVertices 4 } }";
 }
 
@@ -453,14 +455,15 @@ TEST(TracedGroup, AMotionIsTracedAtMovingResolutionAndStillnessRefinesIt) {
   EXPECT_EQ(stats.tracerWidth, ShadowScene::kSize);
   EXPECT_EQ(stats.tracerHeight, ShadowScene::kSize);
 
-  // The light moves on two frames running: the second is traced at a quarter of the size.
+  // The light moves on two frames running: the first is traced in full (a single edit is
+  // never blurred), the second at a quarter of the size.
   r.lamp->location = SbVec3f(0.35f, -0.2f, 1.3f);
   stats = r.frame();
-  EXPECT_EQ(stats.tracerWidth, kReduced);
-  EXPECT_EQ(stats.tracerHeight, kReduced);
+  EXPECT_EQ(stats.tracerWidth, ShadowScene::kSize) << "the first frame of a motion";
   r.lamp->location = place;
   stats = r.frame();
   EXPECT_EQ(stats.tracerWidth, kReduced);
+  EXPECT_EQ(stats.tracerHeight, kReduced);
   EXPECT_EQ(stats.tracerRefines, 0);
   const Image moving = r.renderer->read();
   // The stretched picture is the exact one where the picture is flat over a reduced pixel and
@@ -486,13 +489,47 @@ TEST(TracedGroup, AMotionIsTracedAtMovingResolutionAndStillnessRefinesIt) {
   EXPECT_TRUE(refined.empty()) << "the refined frame: " << refined;
   const int traced = stats.tracerFrames;
   EXPECT_EQ(r.frame().tracerFrames, traced) << "a still frame after the refined one traces";
+  // After the refined frame a new motion starts in full again.
+  r.lamp->location = SbVec3f(0.35f, -0.2f, 1.3f);
+  EXPECT_EQ(r.frame().tracerWidth, ShadowScene::kSize) << "the first frame after the refined one";
+}
+
+// The traced group's request for its refined frame is a notification that changes nothing:
+// a group around it (RASTER, whose map the lamp inside casts) does not build its map again.
+TEST(TracedGroup, AskingForTheRefinedFrameRebuildsNoEnclosingGroup) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.groupFields += " movingResolution 0.25";
+  scene.filters = {kRedGlass};
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer && r.lamp);
+  auto* outer = new SoTransparentShadowGroup;
+  // Not peeling: a peeling group draws the groups inside it as part of its own peeling.
+  outer->transparency = SoTransparentShadowGroup::COIN_BLENDING;
+  while (r.root->getNumChildren() > 0) {
+    outer->addChild(r.root->getChild(0));
+    r.root->removeChild(0);
+  }
+  r.root->addChild(outer);
+  const SbVec3f place = r.lamp->location.getValue();
+  r.frame();
+  r.lamp->location = SbVec3f(0.35f, -0.2f, 1.3f);
+  r.frame();
+  r.lamp->location = place;
+  ASSERT_EQ(r.frame().tracerReduced, 1);
+  const int builds = outer->getStatistics().rebuilds;
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  SoDB::getSensorManager()->processTimerQueue();
+  EXPECT_EQ(r.frame().tracerRefines, 1);
+  EXPECT_EQ(outer->getStatistics().rebuilds, builds) << "the enclosing group built its map again";
 }
 
 TEST(TracedGroup, AReducedFrameStillEndsAtWhatGlDrewBefore) {
   ShadowScene scene = traced(ShadowScene{});
   scene.groupFields += " movingResolution 0.25";
   scene.filters = {kRedGlass, kGreenGlass};
-  scene.aboveGroup = blueSquare(0.75);  // nearer the camera than the floor and the glass
+  // Nearer the camera than the floor and the glass, its sides off the reduced pixels' edges
+  // (1.5 pixels in), so that a reduced pixel straddles them.
+  scene.aboveGroup = blueSquare(0.75, -0.935, -0.585);
   Rendering r(scene);
   ASSERT_TRUE(r.renderer && r.lamp);
   const SbVec3f place = r.lamp->location.getValue();
@@ -501,8 +538,19 @@ TEST(TracedGroup, AReducedFrameStillEndsAtWhatGlDrewBefore) {
   r.frame();
   r.lamp->location = place;
   ASSERT_EQ(r.frame().tracerWidth, ShadowScene::kSize / 4);
+  // The square stays whole to its edges, x in [-0.935, -0.585] and y in [-0.95, 0.95] (every
+  // pixel whose centre lies inside by a tenth of a pixel); away from it and from the
+  // shadows' edges, the floor.
+  const ExpectedImage floor = flatParts(squareOrFloor(scene, true), 6);
   const std::string failure = compareWithExpectation(
-      r.renderer->read(), flatParts(squareOrFloor(scene, true), 6), kTolerance);
+      r.renderer->read(),
+      [&floor](int px, int py) {
+        const double x = -1.2 + (px + 0.5) / 100.0, y = 1.2 - (py + 0.5) / 100.0;
+        if (x > -0.934 && x < -0.586 && std::fabs(y) < 0.949)
+          return Expectation{true, {0.0, 0.0, 255.0}};
+        return floor(px, py);
+      },
+      kTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
@@ -518,8 +566,11 @@ TEST(TracedGroup, AMovingResolutionOutOfRangeIsNamedAndClamped) {
   auto* lamp = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
   ASSERT_NE(lamp, nullptr);
   renderer->render(root);
-  lamp->location = lamp->location.getValue() + SbVec3f(0.1f, 0.0f, 0.0f);
-  renderer->render(root);
+  // Two moves running: the second is a reduced frame.
+  for (int i = 0; i < 2; ++i) {
+    lamp->location = lamp->location.getValue() + SbVec3f(0.1f, 0.0f, 0.0f);
+    renderer->render(root);
+  }
   int named = 0;
   for (const CoinMessageCapture::Message& message : capture.messages())
     if (message.text.find("movingResolution") != std::string::npos &&
