@@ -21,7 +21,8 @@ constexpr std::chrono::milliseconds kPoll(250);
 
 InteractiveViewer::InteractiveViewer(int screen, const std::vector<std::string>& arguments,
                                      const std::string& configDir)
-    : display_(testDisplay() + "." + std::to_string(screen)),
+    : screen_(screen),
+      display_(testDisplay() + "." + std::to_string(screen)),
       out_(outputDir() + "/viewer.out"),
       err_(outputDir() + "/viewer.err") {
   if (testDisplay().empty()) {
@@ -41,8 +42,12 @@ InteractiveViewer::~InteractiveViewer() {
 }
 
 std::string InteractiveViewer::findWindow() const {
-  const ProcessResult search =
-      run({"xdotool", "search", "--onlyvisible", "--name", title_}, {"DISPLAY=" + display_});
+  // Only this screen: xdotool searches every screen of the server by default, and the scripted
+  // viewers of other tests, on screen 0, show the same scene under the same title (the
+  // reopened "window" was once one of theirs, 707 x 471, and closing it quit nothing).
+  const ProcessResult search = run(
+      {"xdotool", "search", "--screen", std::to_string(screen_), "--onlyvisible", "--name", title_},
+      {"DISPLAY=" + display_});
   const std::vector<std::string> found = lines(search.out);
   return found.empty() ? std::string() : found.front();
 }

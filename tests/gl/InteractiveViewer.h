@@ -43,6 +43,7 @@ class InteractiveViewer {
   // The visible window titled title_ ("" when there is none).
   std::string findWindow() const;
 
+  int screen_ = 0;
   std::string display_;
   std::string out_;
   std::string err_;
