@@ -104,14 +104,8 @@ TEST(ViewerWindow, ReopensWithTheGeometryItWasClosedWith) {
     InteractiveViewer first(kScreen1920, {scene(), "--no-light-dragger"}, config);
     ASSERT_TRUE(first.waitForWindow(kTitle));
     first.settledTree();
-    // Under load the viewer may still be laying its first window out when the resize
-    // arrives, and put its own size back: resized again until the window has the size asked
-    // for, as a user would drag the corner again.
-    for (int attempt = 0; attempt < 5; ++attempt) {
-      first.resize(1300, 900);
-      closed = first.settledTree();
-      if (closed.window.width == 1300 && closed.window.height == 900) break;
-    }
+    first.resize(1300, 900);
+    closed = first.settledTree();
     ASSERT_EQ(closed.window.width, 1300);
     ASSERT_EQ(closed.window.height, 900);
     ASSERT_EQ(first.quit(), 0) << first.output();
