@@ -67,6 +67,8 @@ void ScriptedDrag::frameDrawn(double wallMs) {
 void ScriptedDrag::finish(const std::string& error) {
   if (finished_) return;
   finished_ = true;
+  // Before the screenshot's own frame, which would refine a reduced picture itself.
+  refinedFrames_ = window_.figures().shadows.tracerRefines;
   quiet_.stop();
   giveUp_.stop();
   window_.onFrameDrawn(nullptr);
@@ -82,6 +84,7 @@ std::string ScriptedDrag::json() const {
   out["frames_per_second"] = seconds_ > 0.0 ? double(frameMs_.size()) / seconds_ : 0.0;
   out["frame_ms_median"] = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
   out["frames_after"] = framesAfter_;
+  out["refined_frames"] = refinedFrames_;
   out["light_location"] = {location_[0], location_[1], location_[2]};
   return out.dump();
 }

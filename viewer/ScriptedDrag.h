@@ -32,7 +32,7 @@ class ScriptedDrag {
   // Starts with the next step; the window's dragger must be on a light.
   void start();
   // The drag's figures as one JSON object (frames, seconds, frames_per_second,
-  // frame_ms_median, frames_after, light_location).
+  // frame_ms_median, frames_after, refined_frames, light_location).
   std::string json() const;
 
  private:
@@ -45,6 +45,7 @@ class ScriptedDrag {
   std::function<void(const std::string&)> done_;
   int stepsDone_ = 0;
   int framesAfter_ = 0;
+  int refinedFrames_ = 0;  // traced groups' refined frames when the wait ended
   bool finished_ = false;
   SbVec3f start_;
   SbVec3f location_;
