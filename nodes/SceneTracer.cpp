@@ -1,37 +1,19 @@
 #include "nodes/SceneTracer.h"
 
-#include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
+#include "nodes/SceneExtraction.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
 #include "raytrace/ParallelRows.h"
 #include "raytrace/SurfaceOptics.h"
-#include "scene/CoinRef.h"
-#include "scene/EnvironmentValues.h"
 #include "scene/SceneTriangles.h"
-#include "scene/ShapeValidation.h"
 
 #include <Inventor/SbMatrix.h>
-#include <Inventor/SbViewVolume.h>
-#include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPath.h>
-#include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoCallbackAction.h>
-#include <Inventor/annex/FXViz/elements/SoShadowStyleElement.h>
-#include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
-#include <Inventor/elements/SoEnvironmentElement.h>
-#include <Inventor/elements/SoLightElement.h>
-#include <Inventor/lists/SoNodeList.h>
-#include <Inventor/nodes/SoCamera.h>
-#include <Inventor/nodes/SoDirectionalLight.h>
-#include <Inventor/nodes/SoLightModel.h>
-#include <Inventor/nodes/SoPointLight.h>
-#include <Inventor/nodes/SoShape.h>
-#include <Inventor/nodes/SoShapeHints.h>
-#include <Inventor/nodes/SoSpotLight.h>
 
 #include <cstring>
 #include <functional>
@@ -40,356 +22,24 @@
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <set>
-#include <stdexcept>
 
 namespace ivshadow {
 namespace {
 
-glm::vec3 toGlm(const SbVec3f& v) {
-  return glm::vec3(v[0], v[1], v[2]);
-}
-
-enum class LightType { Directional, Point, Spot };
-
-struct Light {
-  LightType type = LightType::Point;
-  glm::vec3 colour{1.0f};     // colour × intensity (Coin's GL diffuse and specular)
-  glm::vec3 eyeVector{0.0f};  // eye space: position, or direction towards the light
-  glm::vec3 eyeSpotDirection{0.0f, 0.0f, -1.0f};
-  glm::vec3 position{0.0f};  // world space (filled once the camera is known)
-  glm::vec3 towardsLight{0.0f};
-  glm::vec3 spotDirection{0.0f};
-  glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // constant, linear, quadratic
-  float spotCosCutoff = -1.0f;
-  float spotExponent = 0.0f;
-  const SoLight* node = nullptr;
-};
-
-struct Group {
-  SbMatrix toWorld;
-  const SoNode* node = nullptr;
-  CoinRef<SoPath> path;  // from the root: its casters are taken in the state in force there
-  std::vector<int> outsideLights;  // lit the group from outside (SoLightElement at entry)
-  std::vector<int> lights;         // every light turned on in the group's subgraph
-  std::vector<int> casting;        // those that cast (nodes/CastingLight.h), as many as GL's
-  std::unique_ptr<CasterScene> casters;
-  bool bounce = false;  // its bounce field
-};
-
-struct Material {
-  glm::vec3 ambient{0.2f};
-  glm::vec3 specular{0.0f};
-  glm::vec3 emission{0.0f};
-  float shininess = 0.0f;  // GL exponent (Coin's 0..1 × 128)
-  glm::vec3 globalAmbient{0.2f};
-  // Coin's GL fog (SoGLEnvironmentElement): 0 none, 1 linear (HAZE), 2 exp (FOG),
-  // 3 exp2 (SMOKE), with the distances and density it derives from the visibility.
-  int fogType = 0;
-  glm::vec3 fogColour{0.0f};
-  float fogStart = 0.0f;
-  float fogEnd = 1.0f;
-  float fogDensity = 0.0f;
-
-  bool operator==(const Material& o) const {
-    return ambient == o.ambient && specular == o.specular && emission == o.emission &&
-           shininess == o.shininess && globalAmbient == o.globalAmbient && fogType == o.fogType &&
-           fogColour == o.fogColour && fogStart == o.fogStart && fogEnd == o.fogEnd &&
-           fogDensity == o.fogDensity;
-  }
-};
-
-struct Triangle {
-  glm::vec3 normal[3];
-  glm::vec4 colour[3];
-  glm::vec2 texCoord[3];
-  glm::vec3 geometricNormal;  // from the winding: counter-clockwise front
-  int material = 0;
-  int texture = -1;
-  int lightSet = -1;  // outside groups
-  int group = -1;     // innermost active SoTransparentShadowGroup
-  bool lit = true;
-  bool twoSided = false;
-  bool clockwise = false;
-  bool shadowed = false;
-  std::uint32_t shape = 0;
-};
-
-struct Extraction {
-  std::vector<glm::vec3> positions;  // three per triangle, world space
-  std::vector<Triangle> triangles;
-  std::vector<Material> materials;
-  std::vector<TextureImage> textures;
-  TextureCache textureCache;
-  std::vector<Light> lights;
-  std::map<const SoNode*, int> lightOfNode;  // the latest record of each light node
-  std::vector<std::vector<int>> lightSets;
-  std::map<std::vector<int>, int> lightSetIndex;
-  std::vector<Group> groups;
-  std::vector<int> groupStack;
-  std::map<const SoNode*, std::string> skipped;  // shapes without triangles
-  std::vector<std::string> untracedShapes;       // their names, in traversal order
-  std::vector<CoinRef<SoPath>> untracedPaths;    // and the paths to every instance
-  std::uint32_t untracedShape = ~0u;             // the instance (shape) a path was kept for
-  SbMatrix viewing = SbMatrix::identity();
-  SbMatrix projection = SbMatrix::identity();
-  bool haveCamera = false;
-  std::uint32_t shape = 0;
-  // Some fog's distance is the view volume's depth (visibility 0): a moved camera changes it.
-  bool fogFollowsView = false;
-  // A pass that reads only the lights again (SceneTracer::updateLights): the groups met are
-  // the ones read before, in the same order.
-  bool lightsOnly = false;
-  std::size_t groupsMet = 0;
-  bool groupsChanged = false;  // ... and they were not
-};
-
-std::vector<int> currentLights(Extraction& data, SoState* state) {
-  std::vector<int> result;
-  const SoNodeList& lights = SoLightElement::getLights(state);
-  for (int i = 0; i < lights.getLength(); ++i) {
-    const auto found = data.lightOfNode.find(lights[i]);
-    if (found != data.lightOfNode.end()) result.push_back(found->second);
-  }
-  return result;
-}
-
-int lightSetOf(Extraction& data, std::vector<int> lights) {
-  std::sort(lights.begin(), lights.end());
-  lights.erase(std::unique(lights.begin(), lights.end()), lights.end());
-  const auto found = data.lightSetIndex.find(lights);
-  if (found != data.lightSetIndex.end()) return found->second;
-  const int index = int(data.lightSets.size());
-  data.lightSets.push_back(lights);
-  data.lightSetIndex.emplace(lights, index);
-  return index;
-}
-
-SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, const SoNode* node) {
-  auto& data = *static_cast<Extraction*>(user);
-  if (!static_cast<const SoTransparentShadowGroup*>(node)->isActive.getValue())
-    return SoCallbackAction::CONTINUE;
-  if (data.lightsOnly) {
-    data.viewing = action->getViewingMatrix();
-    const std::size_t index = data.groupsMet++;
-    if (index >= data.groups.size() || data.groups[index].node != node) {
-      data.groupsChanged = true;
-      return SoCallbackAction::PRUNE;
-    }
-    Group& group = data.groups[index];
-    group.lights.clear();
-    group.casting.clear();
-    group.outsideLights = currentLights(data, action->getState());
-    data.groupStack.push_back(int(index));
-    return SoCallbackAction::CONTINUE;
-  }
-  Group group;
-  group.node = node;
-  group.bounce = static_cast<const SoTransparentShadowGroup*>(node)->bounce.getValue() == TRUE;
-  group.path = CoinRef<SoPath>(action->getCurPath()->copy());
-  group.toWorld = action->getModelMatrix();
-  group.outsideLights = currentLights(data, action->getState());
-  data.groupStack.push_back(int(data.groups.size()));
-  data.groups.push_back(std::move(group));
-  return SoCallbackAction::CONTINUE;
-}
-
-SoCallbackAction::Response groupLeave(void* user, SoCallbackAction*, const SoNode* node) {
-  auto& data = *static_cast<Extraction*>(user);
-  if (!data.groupStack.empty() && data.groups[std::size_t(data.groupStack.back())].node == node)
-    data.groupStack.pop_back();
-  return SoCallbackAction::CONTINUE;
-}
-
-SoCallbackAction::Response shadowStyle(void*, SoCallbackAction* action, const SoNode* node) {
-  const auto* style = static_cast<const SoShadowStyle*>(node);
-  SoShadowStyleElement::set(action->getState(), const_cast<SoNode*>(node), style->style.getValue());
-  return SoCallbackAction::CONTINUE;
-}
-
-SoCallbackAction::Response cameraInGroup(void* user, SoCallbackAction* action, const SoNode*) {
-  auto& data = *static_cast<Extraction*>(user);
-  // Reading the lights alone (used only then), the camera the shapes of a group are viewed
-  // with is the last one met in it, as a full read takes it from the triangles.
-  if (!data.groupStack.empty()) data.viewing = action->getViewingMatrix();
-  return SoCallbackAction::CONTINUE;
-}
-
-SoCallbackAction::Response light(void* user, SoCallbackAction* action, const SoNode* node) {
-  auto& data = *static_cast<Extraction*>(user);
-  const auto* base = static_cast<const SoLight*>(node);
-  if (!base->on.getValue()) return SoCallbackAction::CONTINUE;
-  // GL transforms a light by the modelview matrix in force where it is traversed: lights
-  // before the camera are fixed in eye space (the headlight).
-  const SbMatrix toEye = action->getModelMatrix() * action->getViewingMatrix();
-  Light record;
-  record.colour = toGlm(base->color.getValue()) * base->intensity.getValue();
-  const SbVec3f attenuation = SoEnvironmentElement::getLightAttenuation(action->getState());
-  record.attenuation = glm::vec3(attenuation[2], attenuation[1], attenuation[0]);
-  if (node->isOfType(SoDirectionalLight::getClassTypeId())) {
-    record.type = LightType::Directional;
-    SbVec3f direction;
-    toEye.multDirMatrix(-static_cast<const SoDirectionalLight*>(node)->direction.getValue(),
-                        direction);
-    record.eyeVector = toGlm(direction);
-  } else if (node->isOfType(SoSpotLight::getClassTypeId())) {
-    const auto* spot = static_cast<const SoSpotLight*>(node);
-    record.type = LightType::Spot;
-    SbVec3f position, direction;
-    toEye.multVecMatrix(spot->location.getValue(), position);
-    toEye.multDirMatrix(spot->direction.getValue(), direction);
-    record.eyeVector = toGlm(position);
-    record.eyeSpotDirection = toGlm(direction);
-    // Coin's GL_SPOT_CUTOFF and GL_SPOT_EXPONENT.
-    const float cutoff = std::min(glm::degrees(spot->cutOffAngle.getValue()), 90.0f);
-    record.spotCosCutoff = std::cos(glm::radians(cutoff));
-    record.spotExponent = spot->dropOffRate.getValue() * 128.0f;
-  } else if (node->isOfType(SoPointLight::getClassTypeId())) {
-    record.type = LightType::Point;
-    SbVec3f position;
-    toEye.multVecMatrix(static_cast<const SoPointLight*>(node)->location.getValue(), position);
-    record.eyeVector = toGlm(position);
-  } else {
-    return SoCallbackAction::CONTINUE;
-  }
-  record.node = base;
-  const int index = int(data.lights.size());
-  data.lights.push_back(record);
-  data.lightOfNode[node] = index;
-  for (int group : data.groupStack) data.groups[std::size_t(group)].lights.push_back(index);
-  return SoCallbackAction::CONTINUE;
-}
-
-void notTriangles(SoCallbackAction* action, Extraction& data) {
-  // One path per instance (not per segment or point), for GL to draw each; each shape named
-  // once.
-  if (data.untracedShape == data.shape) return;
-  data.untracedShape = data.shape;
-  data.untracedPaths.emplace_back(action->getCurPath()->copy());
-  const SoNode* node = action->getCurPathTail();
-  if (data.skipped.count(node) != 0) return;
-  data.skipped.emplace(node, describeNode(node));
-  data.untracedShapes.push_back(describeNode(node));
-}
-
-SoCallbackAction::Response pruneShape(void*, SoCallbackAction*, const SoNode*) {
-  return SoCallbackAction::PRUNE;
-}
-
-SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, const SoNode* node) {
-  auto& data = *static_cast<Extraction*>(user);
-  ++data.shape;
-  // What GL draws as pixels, outlines or points is said, not drawn.
-  switch (shapeFill(action, node)) {
-    case ShapeFill::Invisible:
-      return SoCallbackAction::PRUNE;
-    case ShapeFill::Unfilled:
-      notTriangles(action, data);
-      return SoCallbackAction::PRUNE;
-    case ShapeFill::Filled:
-      break;
-  }
-  return SoCallbackAction::CONTINUE;
-}
-
-void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
-              const SoPrimitiveVertex* v2, const SoPrimitiveVertex* v3) {
-  auto& data = *static_cast<Extraction*>(user);
-  SoState* state = action->getState();
-  data.viewing = action->getViewingMatrix();
-  data.projection = action->getProjectionMatrix();
-  data.haveCamera = true;
-  const SbMatrix& model = action->getModelMatrix();
-  const SbMatrix normalMatrix = model.inverse().transpose();
-  const SbMatrix& textureMatrix = action->getTextureMatrix();
-
-  Triangle out;
-  out.shape = data.shape;
-  out.texture = currentTexture(action, data.textures, data.textureCache);
-  out.lit = action->getLightModel() != SoLightModel::BASE_COLOR;
-  // Coin turns two-sided lighting on for shapes of known vertex order that are not solid.
-  out.clockwise = action->getVertexOrdering() == SoShapeHints::CLOCKWISE;
-  out.twoSided = action->getVertexOrdering() != SoShapeHints::UNKNOWN_ORDERING &&
-                 action->getShapeType() != SoShapeHints::SOLID;
-  out.group = data.groupStack.empty() ? -1 : data.groupStack.back();
-  out.shadowed =
-      out.group >= 0 && (SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED) != 0;
-  if (out.group < 0) out.lightSet = lightSetOf(data, currentLights(data, state));
-
-  SbColor ambient, diffuse, specular, emission;
-  float shininess = 0.0f, transparency = 0.0f;
-  action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
-                      v1->getMaterialIndex());
-  Material material;
-  material.ambient = toGlm(ambient);
-  material.specular = toGlm(specular);
-  material.emission = toGlm(emission);
-  material.shininess = shininess * 128.0f;
-  const EnvironmentValues environment = EnvironmentValues::of(state);
-  const float ambientIntensity = environment.ambientIntensity;
-  const float fogVisibility = environment.fogVisibility, fogStart = environment.fogStart;
-  const SbColor& ambientColour = environment.ambientColour;
-  const SbColor& fogColour = environment.fogColour;
-  const int32_t fogType = environment.fogType;
-  material.globalAmbient = toGlm(ambientColour) * ambientIntensity;
-  if (fogType != SoEnvironmentElement::NONE) {
-    if (!(fogVisibility > 0.0f)) data.fogFollowsView = true;
-    const SbViewVolume& volume = action->getViewVolume();
-    const float far =
-        fogVisibility > 0.0f ? fogVisibility : volume.getNearDist() + volume.getDepth();
-    // Coin's density puts 1/256 of the colour through at the visibility distance.
-    const float ln256 = std::log(256.0f);
-    material.fogType = fogType == SoEnvironmentElement::HAZE  ? 1
-                       : fogType == SoEnvironmentElement::FOG ? 2
-                                                              : 3;
-    material.fogColour = toGlm(fogColour);
-    material.fogStart = fogStart;
-    material.fogEnd = far;
-    material.fogDensity = material.fogType == 2 ? ln256 / far : std::sqrt(ln256) / far;
-  }
-  // A shape's triangles come in a row and mostly share one material: keep it once.
-  if (data.materials.empty() || !(data.materials.back() == material))
-    data.materials.push_back(material);
-  out.material = int(data.materials.size()) - 1;
-
-  const SoPrimitiveVertex* vertices[3] = {v1, v2, v3};
-  glm::vec3 world[3];
-  for (int i = 0; i < 3; ++i) {
-    const SoPrimitiveVertex* v = vertices[i];
-    SbVec3f p, n;
-    model.multVecMatrix(v->getPoint(), p);
-    normalMatrix.multDirMatrix(v->getNormal(), n);
-    world[i] = toGlm(p);
-    out.normal[i] = toGlm(n);
-    action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
-                        v->getMaterialIndex());
-    out.colour[i] = glm::vec4(toGlm(diffuse), 1.0f - transparency);
-    SbVec4f tc;
-    textureMatrix.multVecMatrix(v->getTextureCoords(), tc);
-    const float w = tc[3] != 0.0f ? tc[3] : 1.0f;
-    out.texCoord[i] = glm::vec2(tc[0] / w, tc[1] / w);
-    data.positions.push_back(world[i]);
-  }
-  out.geometricNormal = glm::cross(world[1] - world[0], world[2] - world[0]);
-  data.triangles.push_back(out);
-}
-
-void lineSegment(void* user, SoCallbackAction* action, const SoPrimitiveVertex*,
-                 const SoPrimitiveVertex*) {
-  notTriangles(action, *static_cast<Extraction*>(user));
-}
-
-void point(void* user, SoCallbackAction* action, const SoPrimitiveVertex*) {
-  notTriangles(action, *static_cast<Extraction*>(user));
-}
+using detail::Extraction;
+using detail::Group;
+using detail::Light;
+using detail::LightType;
+using detail::Material;
+using detail::toGlm;
+using detail::Triangle;
 
 using Hit = SurfacesMet::Hit;
 
@@ -409,6 +59,10 @@ float opacity(const Extraction& data, const Triangle& tri, float u, float v) {
   return texturedColour(sample.colour, sample.texel, image).a;
 }
 
+}  // namespace
+
+namespace detail {
+
 void cameraFilter(const RTCFilterFunctionNArguments* args) {
   auto& context = *static_cast<CameraRayContext*>(args->context);
   Hit hit;
@@ -423,6 +77,10 @@ void cameraFilter(const RTCFilterFunctionNArguments* args) {
   if (alpha > 0.0f) context.hits->push_back(hit);
   args->valid[0] = 0;
 }
+
+}  // namespace detail
+
+namespace {
 
 struct RayCounts {
   std::size_t shadow = 0;
@@ -775,126 +433,6 @@ class Tracer {
 };
 
 }  // namespace
-
-struct SceneTracer::Data {
-  Extraction extraction;
-  EmbreeDevice device;
-  EmbreeScene scene;
-  std::vector<const SoPath*> untracedPaths;
-  int width = 0;
-  int height = 0;
-};
-
-namespace {
-
-// Lights were recorded in eye space, as GL keeps them; shading happens in world space. Then
-// the lights that cast in each group, decided as the group decides it
-// (GroupContents::findLights).
-void placeLights(Extraction& data) {
-  // GL keeps a light where the model-view matrix put it when it was traversed, in eye space:
-  // a camera met after it (a headlight's, or one inside a group) views it from there.
-  const SbMatrix eyeToWorld = data.viewing.inverse();
-  for (Light& light : data.lights) {
-    SbVec3f v;
-    if (light.type == LightType::Directional) {
-      eyeToWorld.multDirMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
-      light.towardsLight = toGlm(v);
-    } else {
-      eyeToWorld.multVecMatrix(SbVec3f(light.eyeVector.x, light.eyeVector.y, light.eyeVector.z), v);
-      light.position = toGlm(v);
-      eyeToWorld.multDirMatrix(
-          SbVec3f(light.eyeSpotDirection.x, light.eyeSpotDirection.y, light.eyeSpotDirection.z), v);
-      light.spotDirection = toGlm(v);
-    }
-  }
-  for (Group& group : data.groups) {
-    const auto& node = *static_cast<const SoTransparentShadowGroup*>(group.node);
-    group.casting.clear();
-    for (int index : group.lights) {
-      CastingLight where;
-      if (int(group.casting.size()) < kMaxGlLights &&
-          castingLight(*data.lights[std::size_t(index)].node, node, SbMatrix::identity(), where))
-        group.casting.push_back(index);
-    }
-  }
-}
-
-}  // namespace
-
-// Reads the scene through `apply` (applying the callback action to a node or a path), then
-// builds the groups' casters and the camera rays' scene.
-std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
-    int width, int height, const std::function<void(SoCallbackAction&)>& apply) {
-  auto result = std::make_unique<Data>();
-  result->width = width;
-  result->height = height;
-  Extraction& data = result->extraction;
-  {
-    SoCallbackAction action{SbViewportRegion(short(width), short(height))};
-    action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
-    action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
-    action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
-    action.addPreCallback(SoLight::getClassTypeId(), light, &data);
-    action.addPreCallback(SoShape::getClassTypeId(), skipDefectiveShape, nullptr);
-    action.addPreCallback(SoShape::getClassTypeId(), shapeStart, &data);
-    action.addTriangleCallback(SoShape::getClassTypeId(), triangle, &data);
-    action.addLineSegmentCallback(SoShape::getClassTypeId(), lineSegment, &data);
-    action.addPointCallback(SoShape::getClassTypeId(), point, &data);
-    apply(action);
-  }
-  for (const CoinRef<SoPath>& path : data.untracedPaths)
-    result->untracedPaths.push_back(path.get());
-  placeLights(data);
-
-  std::string error;
-  result->device = createEmbreeDevice(error);
-  if (!result->device) throw std::runtime_error(error);
-  for (Group& group : data.groups) {
-    // In the group's coordinates, from the state in force at the group (as the GL path takes
-    // them), then placed in the world.
-    SceneTriangles casters = extractShadowCasters(group.path.get());
-    for (TriangleVertex& vertex : casters.vertices) {
-      SbVec3f p;
-      group.toWorld.multVecMatrix(SbVec3f(vertex.position), p);
-      for (int i = 0; i < 3; ++i) vertex.position[i] = p[i];
-    }
-    group.casters = CasterScene::build(result->device.get(), std::move(casters), error);
-    if (!group.casters) throw std::runtime_error(error);
-  }
-
-  result->scene = buildTriangleScene(
-      result->device.get(), data.triangles.size(),
-      [&data](std::size_t i) { return &data.positions[i].x; }, cameraFilter, error);
-  if (!result->scene) throw std::runtime_error(error);
-  return result;
-}
-
-bool SceneTracer::updateLights(const SoPath* path) {
-  Extraction& data = data_->extraction;
-  // Triangles outside any group index light sets of the lights read before.
-  if (!data.lightSets.empty()) return false;
-  data.lights.clear();
-  data.lightOfNode.clear();
-  data.groupStack.clear();
-  data.lightsOnly = true;
-  data.groupsMet = 0;
-  data.groupsChanged = false;
-  {
-    // The viewport of the read: a level of detail picks the same children.
-    SoCallbackAction action{SbViewportRegion(short(data_->width), short(data_->height))};
-    action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
-    action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
-    action.addPostCallback(SoCamera::getClassTypeId(), cameraInGroup, &data);
-    action.addPreCallback(SoLight::getClassTypeId(), light, &data);
-    action.addPreCallback(SoShape::getClassTypeId(), pruneShape, nullptr);
-    action.apply(const_cast<SoPath*>(path));
-  }
-  data.lightsOnly = false;
-  data.groupStack.clear();
-  if (data.groupsChanged || data.groupsMet != data.groups.size()) return false;
-  placeLights(data);
-  return true;
-}
 
 bool SceneTracer::viewDependent() const {
   return data_->extraction.fogFollowsView;
