@@ -1,8 +1,10 @@
 #include "callbacks/DeepShadowMap.h"
 
 #include "callbacks/CasterBuffers.h"
+#include "callbacks/DeepShadowMapReadback.h"
 #include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlProgram.h"
+#include "callbacks/MapFragmentLists.h"
 #include "callbacks/ShaderConstants.h"
 
 #include <epoxy/gl.h>
@@ -44,12 +46,46 @@ int scratchLayersInAll(const MapRequest& request) {
   return request.frame.faceCount * scratchLayers(request);
 }
 
+bool layerBit(const std::array<std::uint32_t, 2>& bits, int layer) {
+  return ((bits[std::size_t(layer / 32)] >> (layer % 32)) & 1u) != 0u;
+}
+
+// The layers of a face built from fragment lists that the peel would have kept: the lists'
+// resolve stores up to maxLayers surfaces in every texel and says which layers hold some and
+// which let light through; the peel stops after the first layer in which no surface lets light
+// through, and adds the closing layer only when its last layer still did (build() below).
+void countListLayers(const MapRequest& request, const MapListFace& lists, int face,
+                     MapBuildResult& result) {
+  int kept = 0;
+  bool lightLeft = false;
+  int layer = 0;
+  for (; layer < request.layers; ++layer) {
+    if (layerBit(lists.heldLayers, layer)) kept = layer + 1;
+    lightLeft = layerBit(lists.passingLayers, layer);
+    if (!lightLeft) break;
+  }
+  if (lightLeft && layer == request.layers && lists.closingLayer) kept = request.layers + 1;
+  result.layersUsed[std::size_t(face)] = kept;
+}
+
 }  // namespace
 
 void DeepShadowMap::allocateScratch(const MapRequest& request) {
   const int size = request.resolution;
   scratchDepth_ = createTargetArray(GL_R32F, size, scratchLayersInAll(request));
-  scratchVisibility_ = createTargetArray(visibilityFormat(request), size, scratchLayersInAll(request));
+  scratchVisibility_ =
+      createTargetArray(visibilityFormat(request), size, scratchLayersInAll(request));
+}
+
+void DeepShadowMap::clearScratch() {
+  const float noSurface[4] = {kNoSurface, 0.0f, 0.0f, 0.0f};
+  const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glClearTexImage(scratchDepth_.get(), 0, GL_RED, GL_FLOAT, noSurface);
+  glClearTexImage(scratchVisibility_.get(), 0, GL_RGBA, GL_FLOAT, clear);
+}
+
+void DeepShadowMap::allocatePeelTargets(const MapRequest& request) {
+  const int size = request.resolution;
   for (int i = 0; i < 2; ++i) {
     peelDepth_[i] = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(peelDepth_[i].get(), 1, GL_R32F, size, size);
@@ -68,16 +104,34 @@ void DeepShadowMap::allocateScratch(const MapRequest& request) {
   glNamedFramebufferDrawBuffers(framebuffer_.get(), 4, drawBuffers);
 }
 
-void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& result) {
+int DeepShadowMap::allocateKept(const MapRequest& request, MapBuildResult& result) {
   int total = 0;
   for (int face = 0; face < request.frame.faceCount; ++face) {
     result.firstLayer[std::size_t(face)] = total;
     total += result.layersUsed[std::size_t(face)];
   }
   const int size = request.resolution;
-  // An empty map still binds one (never read) layer, so the sampler stays complete.
-  depth_ = createTargetArray(GL_R32F, size, std::max(total, 1));
-  visibility_ = createTargetArray(visibilityFormat(request), size, std::max(total, 1));
+  // An empty map still binds one (never read) layer, so the sampler stays complete. Arrays
+  // of the same shape as the last build's are written again rather than made anew: a light
+  // that moves keeps its layers, and the allocation's page faults are a good part of a
+  // build on a software rasteriser.
+  const int layers = std::max(total, 1);
+  const GLenum format = visibilityFormat(request);
+  if (!depth_ || keptSize_ != size || keptLayers_ != layers || keptFormat_ != format) {
+    depth_ = createTargetArray(GL_R32F, size, layers);
+    visibility_ = createTargetArray(format, size, layers);
+    keptSize_ = size;
+    keptLayers_ = layers;
+    keptFormat_ = format;
+  }
+  bytes_ = std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(layers) *
+           bytesPerLayerTexel(request);
+  return total;
+}
+
+void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& result) {
+  allocateKept(request, result);
+  const int size = request.resolution;
   for (int face = 0; face < request.frame.faceCount; ++face) {
     const int count = result.layersUsed[std::size_t(face)];
     if (count == 0) continue;
@@ -87,11 +141,10 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
     glCopyImageSubData(scratchVisibility_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, from,
                        visibility_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, size, size, count);
   }
-  bytes_ = std::uint64_t(size) * std::uint64_t(size) * std::uint64_t(std::max(total, 1)) *
-           bytesPerLayerTexel(request);
-  peakBytes_ = std::uint64_t(size) * std::uint64_t(size) *
-                   (std::uint64_t(scratchLayersInAll(request)) * bytesPerLayerTexel(request) +
-                    2u * (4u + 16u) + 4u) +
+  // Peeling adds two peel targets and a depth buffer to the scratch layers.
+  const std::uint64_t texels = std::uint64_t(size) * std::uint64_t(size);
+  peakBytes_ = texels * (std::uint64_t(scratchLayersInAll(request)) * bytesPerLayerTexel(request) +
+                         2u * (4u + 16u) + 4u) +
                bytes_;
   releaseScratch();
 }
@@ -105,24 +158,73 @@ std::uint64_t DeepShadowMap::peakBytesFor(const MapRequest& request) {
 }
 
 MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& program,
-                                    const CasterBuffers& casters, unsigned int flagsBuffer) {
+                                    const CasterBuffers& casters, unsigned int flagsBuffer,
+                                    MapFragmentLists* lists) {
   MapBuildResult result;
   // Errors before the build are not the build's: taken off so that an out-of-memory below is
   // seen as this build's. Any error of the allocation counts as running out: what GL
   // refuses at this size (GL_INVALID_VALUE past its limits) may fit at half of it.
   clearGlErrors();
+  if (lists != nullptr) {
+    std::array<MapListFace, 6> faces{};
+    result.listFailure = lists->gather(request, casters, 2, request.listByteLimit, faces);
+    if (result.listFailure.empty()) {
+      result.fragmentLists = true;
+      result.listFragments = lists->fragments();
+      for (int face = 0; face < request.frame.faceCount; ++face) {
+        countListLayers(request, faces[std::size_t(face)], face, result);
+        result.passes[std::size_t(face)] = lists->passes();
+      }
+      clearGlErrors();
+      allocateKept(request, result);
+      if (!glAllocationError(GlAllocation::Texture).empty()) {
+        result = MapBuildResult{};
+        result.outOfMemory = true;
+        releaseAll();
+        return result;
+      }
+      lists->store(request, result.firstLayer, result.layersUsed, depth_.get(), visibility_.get());
+      peakBytes_ = bytes_ + lists->bytes();
+      return checkedForMemory(result);
+    }
+  }
+  clearGlErrors();
   allocateScratch(request);
+  allocatePeelTargets(request);
   if (!glAllocationError(GlAllocation::Texture).empty()) {
+    const std::string why = result.listFailure;
+    result = MapBuildResult{};
     result.outOfMemory = true;
+    result.listFailure = why;
     releaseAll();
     return result;
   }
+  clearScratch();
+  if (!peel(request, program, casters, flagsBuffer, result)) {
+    releaseAll();
+    return result;
+  }
+  keepUsedLayers(request, result);
+  return checkedForMemory(result);
+}
+
+MapBuildResult DeepShadowMap::checkedForMemory(MapBuildResult result) {
+  // Only running out counts here: the passes' draws are not allocations.
+  if (glGetError() == GL_OUT_OF_MEMORY) {
+    result = MapBuildResult{};
+    result.outOfMemory = true;
+    releaseAll();
+  }
+  return result;
+}
+
+bool DeepShadowMap::peel(const MapRequest& request, const GlProgram& program,
+                         const CasterBuffers& casters, unsigned int flagsBuffer,
+                         MapBuildResult& result) {
   const GLuint fbo = framebuffer_.get();
   const float noSurface[4] = {kNoSurface, 0.0f, 0.0f, 0.0f};
   const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   const float nothingPeeled[4] = {-kNoSurface, 0.0f, 0.0f, 0.0f};
-  glClearTexImage(scratchDepth_.get(), 0, GL_RED, GL_FLOAT, noSurface);
-  glClearTexImage(scratchVisibility_.get(), 0, GL_RGBA, GL_FLOAT, clear);
 
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glViewport(0, 0, request.resolution, request.resolution);
@@ -167,10 +269,11 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       if (face == 0 && k == 0) {
         const std::string incomplete = framebufferIncompleteness(fbo);
         if (!incomplete.empty()) {
+          const std::string why = result.listFailure;
           result = MapBuildResult{};
           result.failure = "the map's framebuffer is incomplete (" + incomplete + ")";
-          releaseAll();
-          return result;
+          result.listFailure = why;
+          return false;
         }
       }
       // A texel this pass leaves empty must stop the next pass too.
@@ -221,19 +324,13 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       if (flags[0] != 0u) result.layersUsed[std::size_t(face)] = request.layers + 1;
     }
   }
-  keepUsedLayers(request, result);
-  // Only running out counts here: the passes' draws are not allocations.
-  if (glGetError() == GL_OUT_OF_MEMORY) {
-    result = MapBuildResult{};
-    result.outOfMemory = true;
-    releaseAll();
-  }
-  return result;
+  return true;
 }
 
 void DeepShadowMap::releaseAll() {
   depth_.reset();
   visibility_.reset();
+  keptSize_ = keptLayers_ = 0;
   releaseScratch();
   bytes_ = peakBytes_ = 0;
 }
@@ -252,6 +349,12 @@ void DeepShadowMap::releaseScratch() {
 void DeepShadowMap::bind(int depthUnit, int visibilityUnit) const {
   glBindTextureUnit(GLuint(depthUnit), depth_.get());
   glBindTextureUnit(GLuint(visibilityUnit), visibility_.get());
+}
+
+bool DeepShadowMap::read(int layer, MapLayerReadback& out) const {
+  if (!depth_) return false;
+  std::string whyNot;
+  return readMapLayer(depth_.get(), visibility_.get(), layer, out, whyNot);
 }
 
 }  // namespace ivshadow

@@ -12,6 +12,8 @@ namespace ivshadow {
 
 class CasterBuffers;
 class GlProgram;
+class MapFragmentLists;
+struct MapLayerReadback;
 
 // What one light's map must hold.
 struct MapRequest {
@@ -26,6 +28,11 @@ struct MapRequest {
   int slices = 0;
   float sliceNear = 0.0f;
   float sliceFar = 1.0f;
+  // A deep shadow map built from fragment lists (MapFragmentLists: one draw per face) where
+  // the context can; false: peeled, one draw per layer. Both store the same map.
+  bool fragmentLists = true;
+  // Bytes the lists may take (0: as much as GL gives); a face that needs more is peeled.
+  std::uint64_t listByteLimit = 0;
 };
 
 struct MapBuildResult {
@@ -38,37 +45,61 @@ struct MapBuildResult {
   // one-face map (MapFrame) uses face 0 only.
   // An opacity map: its slices per face, and the draws per face.
   std::array<int, 6> layersUsed{};
+  // Draws of the casters per face: a peel pass per layer, or the fragment lists' one (two
+  // when their storage grew).
   std::array<int, 6> passes{};
   std::array<int, 6> firstLayer{};  // where each face's layers start in the stored arrays
+  bool fragmentLists = false;       // built from fragment lists rather than peeled
+  std::uint64_t listFragments = 0;  // surfaces the lists held, all faces
+  // Why a request for fragment lists was peeled instead ("" when it was not).
+  std::string listFailure;
 };
 
-// One deep shadow map (seeds/000 §5), a cube or one face (MapFrame): for each face and peeled
-// layer, the distance of the surface along the face axis (32-bit) and the visibility after it
-// (1 or 3 channels, 16 or 32 bits). Faces are peeled into scratch arrays of faces x
-// (maxLayers + 1) layers; afterwards only
-// the layers that hold a surface are kept, face after face (layer k of face f is array layer
-// firstLayer[f] + k), and the scratch memory is released: a face without casters costs no
+// One deep shadow map (seeds/000 §5), a cube or one face (MapFrame): for each face and layer,
+// the distance of the surface along the face axis (32-bit) and the visibility after it (1 or
+// 3 channels, 16 or 32 bits). Only the layers that hold a surface are kept, face after face
+// (layer k of face f is array layer firstLayer[f] + k): a face without casters costs no
 // memory, and a scene with one transparent surface keeps two layers, not maxLayers. When a
 // face's maxLayers layers run out while its last one still lets light through, one more
 // layer, the closing one, holds the nearest opaque surface behind them with visibility 0:
 // surfaces beyond maxLayers are ignored, but light never passes an opaque body behind them.
+//
+// Two builds store the same map. From fragment lists (MapFragmentLists): one draw per face,
+// sorted by a compute pass straight into the kept layers. Peeled, where the lists cannot be
+// had or do not fit: one draw per layer into scratch arrays of faces x (maxLayers + 1)
+// layers, stopping a face after the first pass in which no surface lets light through, the
+// used ones then copied and the scratch released.
 class DeepShadowMap {
  public:
-  // Peels every face front to back from the light, stopping a face as soon as a pass found
-  // no surface that lets light through. The program, vertex array and framebuffer state are
-  // left changed: the caller saves and restores GL state around the build.
+  // Builds every face from `lists` where they are given and hold it, else peels it front to
+  // back from the light, stopping a face as soon as a pass found no surface that lets light
+  // through. The program, vertex array, image and framebuffer state are left changed: the
+  // caller saves and restores GL state around the build.
   MapBuildResult build(const MapRequest& request, const GlProgram& program,
-                       const CasterBuffers& casters, unsigned int flagsBuffer);
+                       const CasterBuffers& casters, unsigned int flagsBuffer,
+                       MapFragmentLists* lists);
   // What a build of `request` needs at its peak, at most (all scratch layers kept).
   static std::uint64_t peakBytesFor(const MapRequest& request);
   void bind(int depthUnit, int visibilityUnit) const;
+  // Array layer `layer` of the stored map, read back (DeepShadowMapReadback); false without it.
+  bool read(int layer, MapLayerReadback& out) const;
   // GPU memory the map keeps between builds, and what a build needs at its peak.
   std::uint64_t bytes() const { return bytes_; }
   std::uint64_t peakBytes() const { return peakBytes_; }
 
  private:
   void allocateScratch(const MapRequest& request);
+  void allocatePeelTargets(const MapRequest& request);
+  void clearScratch();
+  // False, with result.failure, when the peel framebuffer is incomplete.
+  bool peel(const MapRequest& request, const GlProgram& program, const CasterBuffers& casters,
+            unsigned int flagsBuffer, MapBuildResult& result);
+  // Lays the used layers out face after face (result.firstLayer) and makes the arrays that
+  // keep them, or keeps the last build's where they have the same shape; their total.
+  int allocateKept(const MapRequest& request, MapBuildResult& result);
+  // The used scratch layers into the kept arrays, the scratch released (peeling).
   void keepUsedLayers(const MapRequest& request, MapBuildResult& result);
+  MapBuildResult checkedForMemory(MapBuildResult result);
   void releaseAll();
   void releaseScratch();  // what only a build needs
 
@@ -82,6 +113,10 @@ class DeepShadowMap {
   GlFramebuffer framebuffer_;
   std::uint64_t bytes_ = 0;
   std::uint64_t peakBytes_ = 0;
+  // The kept arrays' shape: texels per side, layers, visibility format.
+  int keptSize_ = 0;
+  int keptLayers_ = 0;
+  unsigned int keptFormat_ = 0;
 };
 
 }  // namespace ivshadow

@@ -44,6 +44,11 @@ bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out, std::string& 
     whyNot = "no map is bound for light " + std::to_string(slot);
     return false;
   }
+  return readMapLayer(depth, visibility, layer, out, whyNot);
+}
+
+bool readMapLayer(unsigned int depth, unsigned int visibility, int layer, MapLayerReadback& out,
+                  std::string& whyNot) {
   const GLint size = levelParameter(depth, GL_TEXTURE_WIDTH);
   const GLint layers = levelParameter(depth, GL_TEXTURE_DEPTH);
   if (layer < 0 || layer >= layers || size <= 0) {

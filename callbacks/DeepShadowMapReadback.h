@@ -23,5 +23,8 @@ struct MapLayerReadback {
 // and the pixel-store state. Returns false with the reason in `whyNot`.
 IVSHADOW_INTERNAL bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out,
                                          std::string& whyNot);
+// The same from the map's two array textures (GL names): its distances and visibilities.
+bool readMapLayer(unsigned int depth, unsigned int visibility, int layer, MapLayerReadback& out,
+                  std::string& whyNot);
 
 }  // namespace ivshadow

@@ -3,6 +3,7 @@
 #include "GlslSources.h"
 #include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/MapFragmentLists.h"
 
 #include <epoxy/gl.h>
 
@@ -47,6 +48,19 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   if (!flags.empty())
     pass->flagsError_ = "GL could not allocate the map's flag buffer (" + flags + ")";
   return pass;
+}
+
+DeepShadowPass::DeepShadowPass() = default;
+DeepShadowPass::~DeepShadowPass() = default;
+
+MapFragmentLists* DeepShadowPass::fragmentLists() {
+  // Made at the first map build, as the map program is; a context that cannot make them
+  // peels every map, with the reason said once (MapBuildResult::listFailure).
+  if (!lists_ && listsError_.empty()) {
+    lists_ = MapFragmentLists::create(listsError_);
+    if (!lists_ && listsError_.empty()) listsError_ = "the fragment lists could not be made";
+  }
+  return lists_.get();
 }
 
 void DeepShadowPass::uploadCasters(const SceneTriangles& triangles) {
@@ -124,15 +138,25 @@ MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
     return opacityMap->build(request, opacityProgram_, casters_);
   }
   if (!map) map = std::make_unique<DeepShadowMap>();
-  // The build draws into its own framebuffer with its own program and reversed depth, and
-  // samples the previous layer (units 0, 1) and the casters' textures (unit 2).
-  GlStateScope scope(
-      GlStateScope::kFramebuffers | GlStateScope::kViewport | GlStateScope::kProgram |
-          GlStateScope::kVertexArray | GlStateScope::kStorageBuffers | GlStateScope::kDepth |
-          GlStateScope::kColourMask | GlStateScope::kClipControl | GlStateScope::kFragmentTests,
-      {{0, 1, 2}, {GL_TEXTURE_2D}});
+  // The build draws into its own framebuffers with its own programs and reversed depth,
+  // samples the previous layer (units 0, 1) and the casters' textures (unit 2), and the lists
+  // write images.
+  GlStateScope scope(GlStateScope::kFramebuffers | GlStateScope::kViewport |
+                         GlStateScope::kProgram | GlStateScope::kVertexArray |
+                         GlStateScope::kStorageBuffers | GlStateScope::kDepth |
+                         GlStateScope::kColourMask | GlStateScope::kClipControl |
+                         GlStateScope::kFragmentTests | GlStateScope::kImageBindings,
+                     {{0, 1, 2}, {GL_TEXTURE_2D}});
   scope.disableFragmentTests();
-  return map->build(request, program_, casters_, flags_.get());
+  MapFragmentLists* lists = request.fragmentLists ? fragmentLists() : nullptr;
+  MapBuildResult built = map->build(request, program_, casters_, flags_.get(), lists);
+  if (request.fragmentLists && lists == nullptr) built.listFailure = listsError_;
+  return built;
+}
+
+bool DeepShadowPass::readMapLayer(int slot, int layer, MapLayerReadback& out) const {
+  if (slot < 0 || slot >= int(maps_.size()) || !maps_[std::size_t(slot)]) return false;
+  return maps_[std::size_t(slot)]->read(layer, out);
 }
 
 std::uint64_t DeepShadowPass::mapBytes(int slot) const {

@@ -5,6 +5,7 @@
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlProgram.h"
 #include "callbacks/OpacityMap.h"
+#include "ivshadow/Export.h"
 
 #include <memory>
 #include <string>
@@ -13,19 +14,23 @@
 namespace ivshadow {
 
 class GlStateScope;
+class MapFragmentLists;
+struct MapLayerReadback;
 struct SceneTriangles;
 
 // The GL side of one SoTransparentShadowGroup in one GL context: its casters in GPU memory,
 // the map-building programs and per light slot one deep shadow map, or for a light with
-// method OPACITY_MAP (MapRequest::slices) one opacity map. Everything here is made,
-// used and freed with that context current.
-class DeepShadowPass {
+// method OPACITY_MAP (MapRequest::slices) one opacity map. Deep shadow maps are built from
+// fragment lists (MapFragmentLists) where the request asks and the context can, else peeled.
+// Everything here is made, used and freed with that context current.
+class IVSHADOW_INTERNAL DeepShadowPass {
  public:
   static constexpr int kMaxSlots = kMaxGlLights;  // one per GL light
 
   // Checks what the current context offers; null with the reason in `whyNot` when the
   // context cannot run the pass. The map program is linked at the first build.
   static std::unique_ptr<DeepShadowPass> create(std::string& whyNot);
+  ~DeepShadowPass();
 
   int maxTextureSize() const { return maxTextureSize_; }
   int textureUnits() const { return textureUnits_; }
@@ -57,9 +62,13 @@ class DeepShadowPass {
   // Binds the maps of slots [0, count) to their units until the returned scope ends, which
   // restores what was bound there.
   std::unique_ptr<GlStateScope> bindMaps(int count) const;
+  // Array layer `layer` of slot `slot`'s deep shadow map, read back for inspection (tests);
+  // false without such a map or layer.
+  bool readMapLayer(int slot, int layer, MapLayerReadback& out) const;
 
  private:
-  DeepShadowPass() = default;
+  DeepShadowPass();
+  MapFragmentLists* fragmentLists();
   bool linkProgram();
   bool linkOpacityProgram();
 
@@ -74,6 +83,9 @@ class DeepShadowPass {
   CasterBuffers casters_;
   GlProgram opacityProgram_;
   std::string opacityProgramError_;
+  // Made at the first build that asks for fragment lists; null after it failed, with why.
+  std::unique_ptr<MapFragmentLists> lists_;
+  std::string listsError_;
   // Per slot, at most one of the two.
   std::vector<std::unique_ptr<DeepShadowMap>> maps_;
   std::vector<std::unique_ptr<OpacityMap>> opacityMaps_;

@@ -68,7 +68,7 @@ bool FragmentListPass::allocateList(std::uint64_t fragments) {
   clearGlErrors();
   GlBuffer list = createBuffer();
   glNamedBufferData(list.get(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
-  if (!glAllocationError(GlAllocation::Buffer).empty()) return false;
+  if (!glAllocationError(GlAllocation::FragmentList).empty()) return false;
   list_ = std::move(list);
   capacity_ = fragments;
   return true;

@@ -13,6 +13,7 @@ struct ForcedFailures {
   bool texture = false;
   bool buffer = false;
   bool framebuffer = false;
+  bool fragmentList = false;
 };
 
 // IVSHADOW_FAIL_GL, parsed once (a function-local static: safe when two contexts render on
@@ -32,10 +33,12 @@ const ForcedFailures& forced() {
         made.buffer = true;
       else if (word == "framebuffer")
         made.framebuffer = true;
+      else if (word == "list")
+        made.fragmentList = true;
       else if (!word.empty())
         std::fprintf(stderr,
                      "ivshadow: warning: IVSHADOW_FAIL_GL: '%s' is none of texture, buffer, "
-                     "framebuffer; ignored\n",
+                     "framebuffer, list; ignored\n",
                      word.c_str());
     }
     return made;
@@ -52,6 +55,8 @@ bool isForced(GlAllocation kind) {
       return failures.buffer;
     case GlAllocation::Framebuffer:
       return failures.framebuffer;
+    case GlAllocation::FragmentList:
+      return failures.fragmentList;
   }
   return false;
 }

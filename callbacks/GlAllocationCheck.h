@@ -4,8 +4,9 @@
 
 namespace ivshadow {
 
-// The kinds of GL object the passes allocate and check.
-enum class GlAllocation { Texture, Buffer, Framebuffer };
+// The kinds of GL object the passes allocate and check: a fragment list's storage is a
+// buffer, told apart so that tests can fail it alone (the lists then peel instead).
+enum class GlAllocation { Texture, Buffer, Framebuffer, FragmentList };
 
 // Takes GL's pending errors off: an error raised before an allocation is not the
 // allocation's, and would otherwise be taken for its failure.
@@ -13,7 +14,7 @@ void clearGlErrors();
 
 // After allocating objects of `kind` since clearGlErrors(): empty when GL raised no error;
 // else the error by name ("GL_OUT_OF_MEMORY"). Takes GL's errors off.
-// IVSHADOW_FAIL_GL, a comma-separated list of texture, buffer and framebuffer read once per
+// IVSHADOW_FAIL_GL, a comma-separated list of texture, buffer, framebuffer and list read once per
 // process, makes the kinds it names fail here as if GL had run out of memory: the one place
 // tests force the failures the passes must survive (docs/RELIABILITY.md).
 std::string glAllocationError(GlAllocation kind);

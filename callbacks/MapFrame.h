@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/ShaderConstants.h"
+#include "ivshadow/Export.h"
 
 #include <glm/glm.hpp>
 
@@ -35,17 +36,18 @@ struct MapFrame {
 };
 
 // A point light at `light`: six 90-degree faces along kFaceAxis.
-MapFrame cubeFrame(const glm::vec3& light, float near, float far);
+IVSHADOW_INTERNAL MapFrame cubeFrame(const glm::vec3& light, float near, float far);
 
 // A spot light at `light` looking along the unit `axis`: one square face whose half angle is
 // `halfAngle` (the cone's cutOffAngle), covering the whole cone.
-MapFrame perspectiveFrame(const glm::vec3& light, const glm::vec3& axis, float halfAngle,
-                          float near, float far);
+IVSHADOW_INTERNAL MapFrame perspectiveFrame(const glm::vec3& light, const glm::vec3& axis,
+                                            float halfAngle, float near, float far);
 
 // Light travelling along the unit `axis`: one orthographic face over the rectangle
 // [low.x, high.x] x [low.y, high.y] of the plane across the axis (coordinates along
 // orthographicBasis(axis)), from distance low.z to high.z along the axis.
-MapFrame orthographicFrame(const glm::vec3& axis, const glm::vec3& low, const glm::vec3& high);
+IVSHADOW_INTERNAL MapFrame orthographicFrame(const glm::vec3& axis, const glm::vec3& low,
+                                             const glm::vec3& high);
 
 // The right and up vectors of a face looking along the unit `axis`.
 void orthographicBasis(const glm::vec3& axis, glm::vec3& right, glm::vec3& up);

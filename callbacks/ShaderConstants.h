@@ -57,16 +57,26 @@ inline constexpr int kMapFlagsBinding = 0;
 inline constexpr int kPeelProgressBinding = 1;
 inline constexpr int kFragmentListBinding = 2;
 inline constexpr int kStorageBindings = 3;
-// Image units of the fragment lists: each pixel's first fragment and its count (GlStateScope
-// restores units 0 .. kImageUnits - 1).
+// Image units of the fragment lists: each pixel's first fragment and its count, and the
+// layers a deep shadow map's lists are resolved into (MapFragmentLists), its distances and
+// visibilities (GlStateScope restores units 0 .. kImageUnits - 1).
 inline constexpr int kFragmentHeadsUnit = 0;
 inline constexpr int kFragmentCountsUnit = 1;
-inline constexpr int kImageUnits = 2;
+inline constexpr int kMapLayerDepthUnit = 2;
+inline constexpr int kMapLayerVisibilityUnit = 3;
+inline constexpr int kImageUnits = 4;
 // Fragments a pixel's list may hold: the resolve sorts them in registers. A view with more
 // transparent surfaces in one pixel is peeled instead (docs/PEELING.md).
 inline constexpr int kMaxFragmentsPerPixel = 32;
 // Bytes a fragment takes in the list (std430: colour vec4, depth, next, padding to 16).
 inline constexpr int kFragmentBytes = 32;
+// Bytes a fragment of a deep shadow map's lists takes (dsm_list_common.glsl, std430:
+// transmittance and opacity vec4, distance, triangle, next, padding to 16).
+inline constexpr int kMapFragmentBytes = 32;
+// Pixels along each side of a compute workgroup that resolves a map's lists.
+inline constexpr int kMapResolveGroupSize = 8;
+// Words per face the resolve of a map's lists reports in (dsm_list_resolve.comp).
+inline constexpr int kMapFaceFlags = 5;
 
 // Layers of visible surfaces a screen-space shadow (RAYS, VOLUMES) is computed for: the
 // nearest opaque one and up to four transparent ones in front of it. The shadow volumes

@@ -79,7 +79,9 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
                       {"far_radius", light.farRadius},
                       {"projection", light.projection},
                       {"extent", light.extent},
-                      {"method", light.method}});
+                      {"method", light.method},
+                      {"map_build", light.mapBuild},
+                      {"list_fragments", light.listFragments}});
     if (std::find(methods.begin(), methods.end(), light.method) == methods.end())
       methods.push_back(light.method);
   }

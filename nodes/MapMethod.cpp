@@ -255,6 +255,9 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   const int asked = request.resolution;
   while (budget > 0 && request.resolution > 1 && DeepShadowPass::peakBytesFor(request) > budget)
     request.resolution /= 2;
+  // The lists may take what the budget leaves beside the layers; a face that needs more peels.
+  if (budget > 0)
+    request.listByteLimit = budget - std::min(budget, DeepShadowPass::peakBytesFor(request));
   const int fitted = request.resolution;
   MapBuildResult built = pass.build(slot, request);
   const std::string name = lightNode.getName().getString();
@@ -304,12 +307,18 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
           label.c_str(), asked, megabytes(DeepShadowPass::peakBytesFor(wanted)).c_str(),
           budget > 0 ? megabytes(budget).c_str() : "memory", request.resolution);
   }
+  // A map that the fragment lists could not hold was peeled: the same map, one draw per layer.
+  if (!built.listFailure.empty() && !built.outOfMemory && firstWarning(&lightNode, "map lists"))
+    SoDebugError::postWarning(type.c_str(), "%s: %s; its map is built by depth peeling instead",
+                              label.c_str(), built.listFailure.c_str());
   map.settings.resolution = request.resolution;
   map.faceFirst = built.firstLayer;
   map.faceLayers = built.layersUsed;
 
   light.layersUsed = built.layersUsed;
   light.passes = built.passes;
+  light.mapBuild = built.fragmentLists ? "FRAGMENT_LISTS" : "PEELING";
+  light.listFragments = built.listFragments;
   light.bytes = pass.mapBytes(slot);
   light.peakBytes = pass.mapPeakBytes(slot);
   light.resolution = request.resolution;

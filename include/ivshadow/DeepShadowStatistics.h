@@ -14,8 +14,13 @@ struct DeepShadowLightStatistics {
   std::string name;  // the light's DEF name, or "" when it has none
   // Peeled layers that held a surface, per cube face; an opacity map's slices.
   std::array<int, 6> layersUsed{};
-  // Peel passes run per face (early termination); an opacity map's draws of the casters.
+  // Draws of the casters per face: a peeled map's passes (early termination), a map built
+  // from fragment lists 1 (2 when their storage grew), an opacity map's draws.
   std::array<int, 6> passes{};
+  // How a deep shadow map was built: "FRAGMENT_LISTS" (one draw per face) or "PEELING" (one
+  // per layer, where the lists could not hold it); "" for other methods.
+  std::string mapBuild;
+  std::uint64_t listFragments = 0;  // surfaces the lists held, all faces
   // How the map sees its casters: "CUBE" (a point light, a wide spot light), "PERSPECTIVE"
   // (one face over a spot light's cone) or "ORTHOGRAPHIC" (one face across a directional
   // light); a one-face map counts its layers and passes in face 0. "" without a map.

@@ -26,7 +26,7 @@
                              #   VOLUMES (exact hard shadows, shadow volumes in GL) or
                              #   OPACITY_MAP (fixed cost: light absorbed per depth slice)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
-        maxLayers 4          # peeled layers per face, 1 .. 64
+        maxLayers 4          # layers per face, 1 .. 64
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED

@@ -12,9 +12,11 @@
   A point light whose shadows let light through transparent casters, tinted by their colour.
 
   Inside a SoTransparentShadowGroup the light owns a cube deep shadow map: for each of the six
-  faces, up to `maxLayers` surfaces are peeled front to back from the light, and each layer
-  stores its distance and the visibility (1 or 3 channels) after it. Outside such a group it
-  behaves exactly like a SoPointLight.
+  faces, the nearest `maxLayers` surfaces from the light, each layer storing its distance and
+  the visibility (1 or 3 channels) after it. The map is built from per-texel fragment lists
+  (one draw of the casters per face, then a sort); where GL cannot give the lists' storage,
+  by depth peeling (one draw per layer), which stores the same map, with one warning.
+  Outside such a group it behaves exactly like a SoPointLight.
 
   FILE FORMAT/DEFAULTS:
   \code
@@ -27,7 +29,7 @@
                              #   VOLUMES (exact hard shadows, shadow volumes in GL) or
                              #   OPACITY_MAP (fixed cost: light absorbed per depth slice)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
-        maxLayers 4          # peeled layers per face, 1 .. 64
+        maxLayers 4          # layers per face, 1 .. 64
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED

@@ -185,6 +185,27 @@ TEST(GlFault, MapBuffersThatFailLightWithoutAShadow) {
                          "shadow");
 }
 
+// A map whose fragment lists GL cannot hold is peeled: one warning, and the same map, so the
+// same picture to the bit (the two builds store the same layers, tests/gl/
+// MapFragmentListsGLTest.cpp), which shows the shadow.
+TEST(GlFault, MapFragmentListsThatFailArePeeledIntoTheSameShadow) {
+  const std::string fields = "method MAP resolution 256";
+  const Rendered faulty =
+      render("fault_list_MAP", groupScene("DeepShadowLight", fields, "COIN_BLENDING"),
+             {"IVSHADOW_FAIL_GL=list"});
+  expectOneWarning(faulty,
+                   "SoDeepShadowLight \"Lamp\": GL could not allocate the fragment lists "
+                   "(GL_OUT_OF_MEMORY (forced by IVSHADOW_FAIL_GL)); its map is built by depth "
+                   "peeling instead");
+  const Rendered listed =
+      render("listed_MAP", groupScene("DeepShadowLight", fields, "COIN_BLENDING"));
+  const Rendered unshadowed = render("unshadowed", groupScene("PointLight", "", "COIN_BLENDING"));
+  ASSERT_EQ(listed.result.exitCode, 0) << listed.result.err;
+  ASSERT_EQ(unshadowed.result.exitCode, 0) << unshadowed.result.err;
+  ASSERT_GT(maxError(listed.image, unshadowed.image), 40) << "the scene shows no shadow";
+  if (faulty.result.exitCode == 0) EXPECT_EQ(maxError(faulty.image, listed.image), 0);
+}
+
 TEST(GlFault, RayCaptureTargetsThatFailLightWithoutAShadow) {
   expectLitWithoutShadow("texture", "RAYS",
                          "SoDeepShadowLight \"Lamp\": GL could not allocate the ray capture "
@@ -274,7 +295,7 @@ TEST(GlFault, AnUnknownWordOfTheKnobIsReported) {
              {"IVSHADOW_FAIL_GL=textures"});
   ASSERT_EQ(faulty.result.exitCode, 0) << faulty.result.err;
   EXPECT_NE(faulty.result.err.find("IVSHADOW_FAIL_GL: 'textures' is none of texture, buffer, "
-                                   "framebuffer; ignored"),
+                                   "framebuffer, list; ignored"),
             std::string::npos)
       << faulty.result.err;
 }

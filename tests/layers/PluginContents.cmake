@@ -24,8 +24,10 @@ foreach(name SoTransparentShadowGroup::initClass TransparentShadowGroup::initCla
     string(APPEND problems "  not exported: ${name}\n")
   endif()
 endforeach()
-# Internals that only the plugin itself uses stay hidden.
-foreach(name ivshadow::DeepShadowPass:: ivshadow::PeelPass:: ivshadow::ShadingUniforms::
+# Internals that only the plugin itself uses stay hidden (DeepShadowPass is exported for its
+# GL-layer test, tests/gl/MapFragmentListsGLTest.cpp; the map and its lists are not).
+foreach(name ivshadow::DeepShadowMap:: ivshadow::MapFragmentLists:: ivshadow::PeelPass::
+             ivshadow::ShadingUniforms::
              ivshadow::TransparentShadowGroupImpl::render)
   if(exported MATCHES "${name}")
     string(APPEND problems "  exported but internal: ${name}\n")

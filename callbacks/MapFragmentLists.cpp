@@ -1,0 +1,267 @@
+#include "callbacks/MapFragmentLists.h"
+
+#include "GlslSources.h"
+#include "callbacks/CasterBuffers.h"
+#include "callbacks/DeepShadowMap.h"
+#include "callbacks/GlAllocationCheck.h"
+#include "callbacks/ShaderConstants.h"
+
+#include <epoxy/gl.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+
+namespace ivshadow {
+namespace {
+
+// The list buffer's header (dsm_list_common.glsl): used, capacity and two unused words.
+constexpr std::uint64_t kHeaderBytes = 16;
+constexpr GLuint kNoFragment = 0xffffffffu;
+// The flags buffer: kMapFaceFlags words per face that the counting resolve sets, then per face
+// the list's count of fragments after that face's draw, copied there by the GL between draws
+// so that a face without surfaces is found without waiting after each draw.
+constexpr GLintptr kCountsOffset = 6 * kMapFaceFlags * sizeof(GLuint);
+constexpr GLsizeiptr kFlagsBytes = kCountsOffset + 6 * sizeof(GLuint);
+
+// The sort's size: maxLayers rounded up to a power of two, so that a light whose maxLayers
+// changes links a new program only when it crosses one (7 sizes for 1 .. kMaxMapLayers).
+int sortSize(int layers) {
+  int size = 1;
+  while (size < layers) size *= 2;
+  return size;
+}
+
+GLenum visibilityFormat(const MapRequest& request) {
+  return request.coloured ? (request.halfPrecision ? GL_RGBA16F : GL_RGBA32F)
+                          : (request.halfPrecision ? GL_R16F : GL_R32F);
+}
+
+const char* visibilityQualifier(const MapRequest& request) {
+  return request.coloured ? (request.halfPrecision ? "rgba16f" : "rgba32f")
+                          : (request.halfPrecision ? "r16f" : "r32f");
+}
+
+GLuint groups(int size) {
+  return GLuint((size + kMapResolveGroupSize - 1) / kMapResolveGroupSize);
+}
+
+std::string megabytes(std::uint64_t bytes) {
+  return std::to_string(bytes >> 20) + " MiB";
+}
+
+}  // namespace
+
+std::unique_ptr<MapFragmentLists> MapFragmentLists::create(std::string& whyNot) {
+  // Made by a DeepShadowPass, which has checked for OpenGL 4.5 (image atomics, shader
+  // storage, compute and framebuffers without attachments).
+  std::unique_ptr<MapFragmentLists> lists(new MapFragmentLists);
+  std::string why;
+  lists->fill_ = GlProgram::link(
+      composeShader(glsl::kDsmBuildVert),
+      composeShader(std::string(glsl::kDsmListCommonGlsl) + glsl::kDsmListFrag), why);
+  if (!lists->fill_) {
+    whyNot = "the fragment lists' program failed: " + why;
+    return nullptr;
+  }
+  GLint64 maxBytes = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBytes);
+  lists->maxBytes_ = std::uint64_t(std::max<GLint64>(maxBytes, 0));
+  clearGlErrors();
+  lists->flags_ = createBuffer();
+  glNamedBufferData(lists->flags_.get(), kFlagsBytes, nullptr, GL_DYNAMIC_READ);
+  const std::string failure = glAllocationError(GlAllocation::Buffer);
+  if (!failure.empty()) {
+    whyNot = "GL could not allocate the fragment lists' flags (" + failure + ")";
+    return nullptr;
+  }
+  lists->framebuffer_ = createFramebuffer();
+  return lists;
+}
+
+MapFragmentLists::~MapFragmentLists() = default;
+
+std::uint64_t MapFragmentLists::bytes() const {
+  return (capacity_ > 0 ? kHeaderBytes + capacity_ * std::uint64_t(kMapFragmentBytes) : 0u) +
+         std::uint64_t(size_) * std::uint64_t(size_) * std::uint64_t(faces_) * 4u;
+}
+
+const GlProgram* MapFragmentLists::resolveProgram(const MapRequest& request, bool storing,
+                                                  std::string& whyNot) {
+  std::string defines =
+      "#define IVSHADOW_MAP_LIST_LAYERS " + std::to_string(sortSize(request.layers)) + "\n";
+  if (storing)
+    defines += std::string(
+                   "#define IVSHADOW_MAP_LIST_STORE\n#define "
+                   "IVSHADOW_MAP_VISIBILITY_FORMAT ") +
+               visibilityQualifier(request) + "\n";
+  GlProgram& program = resolve_[defines];
+  std::string& error = resolveError_[defines];
+  if (!program && error.empty()) {
+    std::string why;
+    program = GlProgram::linkCompute(
+        composeShader(std::string(glsl::kDsmListCommonGlsl) + glsl::kDsmListResolveComp, defines),
+        why);
+    if (!program) error = "the fragment lists' resolve program failed: " + why;
+  }
+  whyNot = error;
+  return program ? &program : nullptr;
+}
+
+std::string MapFragmentLists::allocateHeads(int size, int faces) {
+  if (size == size_ && faces == faces_) return {};
+  size_ = faces_ = 0;
+  clearGlErrors();
+  heads_ = createTargetArray(GL_R32UI, size, faces);
+  const std::string failure = glAllocationError(GlAllocation::Texture);
+  if (!failure.empty()) return "GL could not allocate the fragment lists' heads (" + failure + ")";
+  // Without attachments the framebuffer's size is its default one.
+  glNamedFramebufferParameteri(framebuffer_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, size);
+  glNamedFramebufferParameteri(framebuffer_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, size);
+  const std::string incomplete = framebufferIncompleteness(framebuffer_.get());
+  if (!incomplete.empty())
+    return "the fragment lists' framebuffer is incomplete (" + incomplete + ")";
+  size_ = size;
+  faces_ = faces;
+  return {};
+}
+
+std::string MapFragmentLists::allocateList(std::uint64_t fragments, std::uint64_t byteLimit) {
+  const std::uint64_t bytes = kHeaderBytes + fragments * std::uint64_t(kMapFragmentBytes);
+  const bool budget = byteLimit > 0 && byteLimit < maxBytes_;
+  const std::uint64_t limit = budget ? byteLimit : maxBytes_;
+  // The header's counters are 32-bit.
+  if (bytes > limit || fragments >= kNoFragment)
+    return "the map needs " + megabytes(bytes) + " of fragment lists, more than the " +
+           megabytes(limit) + (budget ? " the memory budget leaves" : " GL gives");
+  clearGlErrors();
+  GlBuffer list = createBuffer();
+  glNamedBufferData(list.get(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
+  const std::string failure = glAllocationError(GlAllocation::FragmentList);
+  if (!failure.empty()) return "GL could not allocate the fragment lists (" + failure + ")";
+  list_ = std::move(list);
+  capacity_ = fragments;
+  const GLuint header[4] = {0u, GLuint(capacity_), 0u, 0u};
+  glNamedBufferSubData(list_.get(), 0, sizeof(header), header);
+  return {};
+}
+
+void MapFragmentLists::fill(const MapRequest& request, const CasterBuffers& casters,
+                            int textureUnit) {
+  const GLuint zero = 0u;
+  glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &kNoFragment);
+  glClearNamedBufferSubData(list_.get(), GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER,
+                            GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferSubData(flags_.get(), GL_R32UI, 0, kCountsOffset, GL_RED_INTEGER,
+                            GL_UNSIGNED_INT, &zero);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+  glViewport(0, 0, request.resolution, request.resolution);
+  // The peel's clipping (MapFrame: reversed depth in [0, 1]), without its depth test.
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(fill_.name());
+  fill_.setInt("uColourModel", static_cast<int>(request.colourModel));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kFragmentListBinding), list_.get());
+  for (int face = 0; face < request.frame.faceCount; ++face) {
+    const MapFace& view = request.frame.faces[std::size_t(face)];
+    fill_.setMat4("uViewProjection", glm::value_ptr(view.viewProjection));
+    fill_.setVec3("uDepthOrigin", glm::value_ptr(view.depthOrigin));
+    fill_.setVec3("uDepthAxis", glm::value_ptr(view.depthAxis));
+    glBindImageTexture(GLuint(kFragmentHeadsUnit), heads_.get(), 0, GL_FALSE, face, GL_READ_WRITE,
+                       GL_R32UI);
+    casters.draw(fill_, textureUnit);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glCopyNamedBufferSubData(list_.get(), flags_.get(), 0,
+                             kCountsOffset + GLintptr(face) * GLintptr(sizeof(GLuint)),
+                             sizeof(GLuint));
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void MapFragmentLists::resolve(const MapRequest& request, const GlProgram& program, int face) {
+  program.setInt("uFace", face);
+  glDispatchCompute(groups(request.resolution), groups(request.resolution), 1);
+}
+
+std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuffers& casters,
+                                     int textureUnit, std::uint64_t byteLimit,
+                                     std::array<MapListFace, 6>& faces) {
+  faces = {};
+  used_ = 0;
+  passes_ = 0;
+  std::string failure;
+  const GlProgram* counting = resolveProgram(request, false, failure);
+  if (counting == nullptr) return failure;
+  if (resolveProgram(request, true, failure) == nullptr) return failure;
+  failure = allocateHeads(request.resolution, request.frame.faceCount);
+  if (!failure.empty()) return failure;
+  const std::uint64_t texels = std::uint64_t(request.resolution) *
+                               std::uint64_t(request.resolution) *
+                               std::uint64_t(request.frame.faceCount);
+  // One surface for every two texels of the faces to begin with (most of a cube's faces see
+  // few casters; a quarter of that where GL gives no more); a map that needs more grows the
+  // buffer and is drawn again, and the buffer stays for the next build.
+  if (capacity_ == 0) {
+    failure = allocateList(texels / 2u + 1u, byteLimit);
+    if (!failure.empty()) failure = allocateList(texels / 8u + 1u, byteLimit);
+    if (!failure.empty()) return failure;
+  }
+  GLuint counts[6] = {};
+  for (passes_ = 1; passes_ <= 2; ++passes_) {
+    fill(request, casters, textureUnit);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(flags_.get(), kCountsOffset, sizeof(counts), counts);
+    used_ = counts[request.frame.faceCount - 1];
+    if (used_ <= capacity_) break;
+    if (passes_ == 2) return "the fragment lists did not hold the map after growing";
+    // A quarter more than this map needed, so that a light moved a little does not draw its
+    // faces twice again.
+    failure = allocateList(used_ + used_ / 4u, byteLimit);
+    if (!failure.empty()) return failure;
+  }
+  glUseProgram(counting->name());
+  counting->setInt("uLayers", request.layers);
+  counting->setInt("uSize", request.resolution);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kMapFlagsBinding), flags_.get());
+  glBindImageTexture(GLuint(kFragmentHeadsUnit), heads_.get(), 0, GL_TRUE, 0, GL_READ_ONLY,
+                     GL_R32UI);
+  // A face that linked no surface keeps no layer: its lists need no resolve.
+  for (int face = 0; face < request.frame.faceCount; ++face)
+    if (counts[face] > (face > 0 ? counts[face - 1] : 0u)) resolve(request, *counting, face);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint flags[6 * kMapFaceFlags] = {};
+  glGetNamedBufferSubData(flags_.get(), 0, kCountsOffset, flags);
+  for (int face = 0; face < request.frame.faceCount; ++face) {
+    const GLuint* f = flags + face * kMapFaceFlags;
+    MapListFace& out = faces[std::size_t(face)];
+    out.heldLayers = {f[0], f[1]};
+    out.passingLayers = {f[2], f[3]};
+    out.closingLayer = f[4] != 0u;
+  }
+  return {};
+}
+
+void MapFragmentLists::store(const MapRequest& request, const std::array<int, 6>& firstLayer,
+                             const std::array<int, 6>& layers, unsigned int depthArray,
+                             unsigned int visibilityArray) {
+  std::string unused;
+  const GlProgram& storing = *resolveProgram(request, true, unused);
+  glUseProgram(storing.name());
+  storing.setInt("uLayers", request.layers);
+  storing.setInt("uSize", request.resolution);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kFragmentListBinding), list_.get());
+  glBindImageTexture(GLuint(kFragmentHeadsUnit), heads_.get(), 0, GL_TRUE, 0, GL_READ_ONLY,
+                     GL_R32UI);
+  glBindImageTexture(GLuint(kMapLayerDepthUnit), depthArray, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glBindImageTexture(GLuint(kMapLayerVisibilityUnit), visibilityArray, 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                     visibilityFormat(request));
+  for (int face = 0; face < request.frame.faceCount; ++face) {
+    if (layers[std::size_t(face)] == 0) continue;
+    storing.setInt("uFirstLayer", firstLayer[std::size_t(face)]);
+    storing.setInt("uKept", layers[std::size_t(face)]);
+    resolve(request, storing, face);
+  }
+  // The camera pass samples what the resolve wrote.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+}  // namespace ivshadow

@@ -1,0 +1,122 @@
+// Resolves a deep shadow map face's fragment lists (after dsm_list_common.glsl) into the
+// layers the peel passes of dsm_build.frag would have stored: each texel's nearest uLayers
+// surfaces in the order (distance, triangle), each with its distance and the visibility after
+// it, and, where the layers run out, the closing layer: the nearest opaque surface behind
+// them, visibility 0 (callbacks/DeepShadowMap.h).
+//
+// Run twice per face (MapFragmentLists). Without IVSHADOW_MAP_LIST_STORE it only reports the
+// face's flags: which layers hold a surface in some texel, which hold one that lets light
+// through, and whether a closing layer exists, from which the build counts the layers the peel
+// would keep and sizes the map. With it, it writes the uKept layers the map keeps, from array
+// layer uFirstLayer on, in every texel ("no surface" where a texel has fewer), so the map
+// needs neither scratch layers nor a clear. IVSHADOW_MAP_LIST_LAYERS (a power of two, at
+// least uLayers) sizes the sort; IVSHADOW_MAP_VISIBILITY_FORMAT is the visibility array's
+// image format.
+layout(local_size_x = IVSHADOW_MAP_RESOLVE_GROUP_SIZE,
+       local_size_y = IVSHADOW_MAP_RESOLVE_GROUP_SIZE) in;
+
+layout(r32ui, binding = IVSHADOW_FRAGMENT_HEADS_UNIT) uniform readonly uimage2DArray uHeads;
+#ifdef IVSHADOW_MAP_LIST_STORE
+layout(r32f, binding = IVSHADOW_MAP_LAYER_DEPTH_UNIT) uniform writeonly image2DArray uDepth;
+layout(IVSHADOW_MAP_VISIBILITY_FORMAT, binding = IVSHADOW_MAP_LAYER_VISIBILITY_UNIT)
+uniform writeonly image2DArray uVisibility;
+uniform int uFirstLayer;  // the face's first layer in the map
+uniform int uKept;        // layers the map keeps for the face
+#endif
+
+uniform int uLayers;  // maxLayers
+uniform int uSize;    // texels per side
+uniform int uFace;
+
+// Per face, IVSHADOW_MAP_FACE_FLAGS words: bit k of words 0 and 1, layer k holds a surface
+// in some texel (k < 64); of words 2 and 3, one that lets light through; word 4, some texel
+// has a closing layer.
+layout(std430, binding = IVSHADOW_MAP_FLAGS_BINDING) buffer FaceFlags {
+  uint faceFlags[];
+};
+
+const float kNoSurface = 3.40282347e+38;  // as the build clears empty layers
+
+// The peel's order: by distance, and of surfaces at one distance the lower numbered first.
+bool nearer(float depth, uint triangle, float otherDepth, uint otherTriangle) {
+  return depth < otherDepth || (depth == otherDepth && triangle < otherTriangle);
+}
+
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(texel, ivec2(uSize)))) return;
+  float depths[IVSHADOW_MAP_LIST_LAYERS];
+  uint triangles[IVSHADOW_MAP_LIST_LAYERS];
+  uint indices[IVSHADOW_MAP_LIST_LAYERS];
+  int count = 0;
+  // The nearest opaque surface among those left out of the layers: every one left out lies
+  // behind all that are kept.
+  bool closing = false;
+  float closingDepth = 0.0;
+  uint closingTriangle = 0u;
+  // A list holds at most `capacity` fragments: the bound only guards the loop.
+  uint steps = 0u;
+  for (uint i = imageLoad(uHeads, ivec3(texel, uFace)).r; i != kNoFragment && steps < capacity;
+       i = fragments[i].next, ++steps) {
+    float depth = fragments[i].depth;
+    uint triangle = fragments[i].triangle;
+    uint index = i;
+    if (count == uLayers) {
+      // Full: this fragment, or the farthest kept one, is left out.
+      bool keep = nearer(depth, triangle, depths[count - 1], triangles[count - 1]);
+      uint left = keep ? indices[count - 1] : index;
+      float leftDepth = keep ? depths[count - 1] : depth;
+      uint leftTriangle = keep ? triangles[count - 1] : triangle;
+      if (fragments[left].transmittance.a != 0.0 &&
+          (!closing || nearer(leftDepth, leftTriangle, closingDepth, closingTriangle))) {
+        closing = true;
+        closingDepth = leftDepth;
+        closingTriangle = leftTriangle;
+      }
+      if (!keep) continue;
+      --count;
+    }
+    int j = count++;
+    while (j > 0 && nearer(depth, triangle, depths[j - 1], triangles[j - 1])) {
+      depths[j] = depths[j - 1];
+      triangles[j] = triangles[j - 1];
+      indices[j] = indices[j - 1];
+      --j;
+    }
+    depths[j] = depth;
+    triangles[j] = triangle;
+    indices[j] = index;
+  }
+  bool closed = count == uLayers && closing;
+#ifdef IVSHADOW_MAP_LIST_STORE
+  vec3 visibility = vec3(1.0);
+  for (int k = 0; k < uKept; ++k) {
+    float depth = kNoSurface;
+    vec4 stored = vec4(1.0);
+    if (k < count) {
+      visibility *= fragments[indices[k]].transmittance.rgb;
+      depth = depths[k];
+      stored = vec4(visibility, 1.0);
+    } else if (k == uLayers && closed) {
+      depth = closingDepth;
+      stored = vec4(0.0, 0.0, 0.0, 1.0);
+    }
+    imageStore(uDepth, ivec3(texel, uFirstLayer + k), vec4(depth));
+    imageStore(uVisibility, ivec3(texel, uFirstLayer + k), stored);
+  }
+#else
+  // Gathered here and set with one atomic each, not one per layer.
+  uvec2 held = uvec2(0u), passing = uvec2(0u);
+  for (int k = 0; k < count; ++k) {
+    uint bit = 1u << uint(k % 32);
+    held[k / 32] |= bit;
+    if (fragments[indices[k]].transmittance.a == 0.0) passing[k / 32] |= bit;
+  }
+  int flags = uFace * IVSHADOW_MAP_FACE_FLAGS;
+  for (int w = 0; w < 2; ++w) {
+    if (held[w] != 0u) atomicOr(faceFlags[flags + w], held[w]);
+    if (passing[w] != 0u) atomicOr(faceFlags[flags + 2 + w], passing[w]);
+  }
+  if (closed) atomicOr(faceFlags[flags + 4], 1u);
+#endif
+}
