@@ -95,11 +95,16 @@ QString LiveFigures::text() const {
       continue;
     }
     total += light.bytes;
-    lines << QString("%1: %2 x %2 per face, %3%4")
+    // How the map was built: from fragment lists, or peeled where they did not fit.
+    const QString build = light.mapBuild == "FRAGMENT_LISTS" ? ", fragment lists"
+                          : light.mapBuild == "PEELING"      ? ", peeled"
+                                                             : "";
+    lines << QString("%1: %2 x %2 per face, %3%4%5")
                  .arg(name)
                  .arg(light.resolution)
                  .arg(light.coloured ? "colour" : "monochrome")
-                 .arg(opacity ? ", opacity map" : "");
+                 .arg(opacity ? ", opacity map" : "")
+                 .arg(build);
     QStringList faces;
     for (int face = 0; face < 6; ++face) {
       faces << QString("%1 %2").arg(faceNames[face]).arg(light.layersUsed[std::size_t(face)]);
@@ -136,7 +141,8 @@ std::string LiveFigures::json() const {
                       {"bytes", light.bytes},
                       {"colored", light.coloured},
                       {"resolution", light.resolution},
-                      {"method", light.method}});
+                      {"method", light.method},
+                      {"map_build", light.mapBuild}});
   }
   out["dsm_layers_used"] = lights;
   out["dsm_bytes"] = bytes;
