@@ -4,18 +4,22 @@
 #include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
+#include "callbacks/PixelStoreScope.h"
 #include "callbacks/ShaderConstants.h"
 
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace ivshadow {
 namespace {
 
-// The list buffer's header (fragment_list_common.glsl): used, capacity, crowded, unused.
-constexpr std::uint64_t kHeaderBytes = 16;
+// The list buffer's header (fragment_list_common.glsl): fixedLayers, width, pixels, crowded,
+// overflowUsed, overflowCapacity and two unused words.
+constexpr std::uint64_t kHeaderBytes = 32;
 constexpr GLuint kNoFragment = 0xffffffffu;
+enum Header { kFixedLayers, kWidth, kPixels, kCrowded, kOverflowUsed, kOverflowCapacity };
 
 }  // namespace
 
@@ -38,13 +42,22 @@ FragmentListPass::~FragmentListPass() = default;
 
 std::string FragmentListPass::tooLargeReason() const {
   if (!failure_.empty()) return failure_;
-  return "the view needs " + std::to_string((kHeaderBytes + used_ * kFragmentBytes) >> 20) +
+  return "the view needs " + std::to_string(bytesFor(overflowUsed_) >> 20) +
          " MiB of fragments, more than GL gives";
+}
+
+std::uint64_t FragmentListPass::bytesFor(std::uint64_t overflow) const {
+  const std::uint64_t pixels = std::uint64_t(width_) * std::uint64_t(height_);
+  return kHeaderBytes +
+         (std::uint64_t(fixedLayers_) * pixels + overflow) * std::uint64_t(kFragmentBytes);
 }
 
 std::string FragmentListPass::allocateImages(int width, int height) {
   if (width == width_ && height == height_) return {};
   width_ = height_ = 0;
+  // The slots of its own each pixel has depend on the images' size.
+  list_.reset();
+  overflowCapacity_ = 0;
   clearGlErrors();
   heads_ = createTarget2D(GL_R32UI, width, height);
   counts_ = createTarget2D(GL_R32UI, width, height);
@@ -62,29 +75,36 @@ std::string FragmentListPass::allocateImages(int width, int height) {
   return {};
 }
 
-bool FragmentListPass::allocateList(std::uint64_t fragments) {
-  const std::uint64_t bytes = kHeaderBytes + fragments * std::uint64_t(kFragmentBytes);
+bool FragmentListPass::allocateList(std::uint64_t overflow) {
+  const std::uint64_t bytes = bytesFor(overflow);
   if (bytes > maxBytes_) return false;
   clearGlErrors();
   GlBuffer list = createBuffer();
   glNamedBufferData(list.get(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
   if (!glAllocationError(GlAllocation::FragmentList).empty()) return false;
   list_ = std::move(list);
-  capacity_ = fragments;
+  overflowCapacity_ = overflow;
   return true;
 }
 
 bool FragmentListPass::begin(int x, int y, int width, int height) {
-  used_ = 0;
+  stored_ = overflowUsed_ = 0;
   // Window coordinates index the images directly, so they reach the viewport's far corner.
   failure_ = allocateImages(x + width, y + height);
   if (!failure_.empty()) return false;
-  // Two fragments a pixel to begin with (an eighth of that where GL gives no more); finish()
-  // grows the buffer to what a view needs.
-  if (capacity_ == 0 && !allocateList(std::uint64_t(width) * std::uint64_t(height) * 2u) &&
-      !allocateList(std::uint64_t(width) * std::uint64_t(height) / 4u + 1u)) {
-    failure_ = "GL gives no storage for the fragment lists";
-    return false;
+  // kFixedFragmentsPerPixel slots a pixel and an overflow of a quarter fragment a pixel to
+  // begin with (fewer slots where GL gives no more); finish() grows the overflow to what a
+  // view needs.
+  if (!list_) {
+    const std::uint64_t pixels = std::uint64_t(width_) * std::uint64_t(height_);
+    for (int layers = kFixedFragmentsPerPixel; layers >= 1 && !list_; layers /= 2) {
+      fixedLayers_ = layers;
+      allocateList(pixels / 4u + 1u);
+    }
+    if (!list_) {
+      failure_ = "GL gives no storage for the fragment lists";
+      return false;
+    }
   }
   saved_ = std::make_unique<GlStateScope>(
       GlStateScope::kFramebuffers | GlStateScope::kStorageBuffers | GlStateScope::kImageBindings);
@@ -96,7 +116,13 @@ bool FragmentListPass::begin(int x, int y, int width, int height) {
   glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &kNoFragment);
   const GLuint zero = 0u;
   glClearTexImage(counts_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  const GLuint header[4] = {0u, GLuint(std::min<std::uint64_t>(capacity_, kNoFragment - 1u)), 0u,
+  const GLuint header[8] = {GLuint(fixedLayers_),
+                            GLuint(width_),
+                            GLuint(width_ * height_),
+                            0u,
+                            0u,
+                            GLuint(std::min<std::uint64_t>(overflowCapacity_, kNoFragment - 1u)),
+                            0u,
                             0u};
   glNamedBufferSubData(list_.get(), 0, sizeof(header), header);
 
@@ -113,16 +139,34 @@ FragmentListPass::Outcome FragmentListPass::finish() {
   // Coin's immediate-mode shapes reach the rasteriser at the next flush (PeelPass).
   glFlush();
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                  GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  GLuint header[4] = {0u, 0u, 0u, 0u};
+                  GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  GLuint header[8] = {};
   glGetNamedBufferSubData(list_.get(), 0, sizeof(header), header);
   saved_.reset();
-  used_ = header[0];
-  if (header[2] != 0u) return Outcome::Crowded;
-  if (used_ <= capacity_) return Outcome::Stored;
+  overflowUsed_ = header[kOverflowUsed];
+  if (header[kCrowded] != 0u) return Outcome::Crowded;
+  if (overflowUsed_ <= overflowCapacity_) {
+    countStored();
+    return Outcome::Stored;
+  }
   // A quarter more than this view needed, so that a view a little busier does not redo.
-  if (!allocateList(used_ + used_ / 4u)) return Outcome::TooLarge;
+  if (!allocateList(overflowUsed_ + overflowUsed_ / 4u)) return Outcome::TooLarge;
   return Outcome::Grow;
+}
+
+void FragmentListPass::countStored() {
+  // The fragments stored are the pixels' counts, read back after the pass that finish() has
+  // waited for anyway. Summed in the resolve instead, with one atomic a pixel on one word,
+  // they cost more than half the resolve on a software rasteriser.
+  const int x = viewport_[0], y = viewport_[1], width = viewport_[2], height = viewport_[3];
+  std::vector<GLuint> counts(std::size_t(width) * std::size_t(height));
+  {
+    const PixelStoreScope pixelStore;
+    glGetTextureSubImage(counts_.get(), 0, x, y, 0, width, height, 1, GL_RED_INTEGER,
+                         GL_UNSIGNED_INT, GLsizei(counts.size() * sizeof(GLuint)), counts.data());
+  }
+  stored_ = 0;
+  for (GLuint count : counts) stored_ += std::min<GLuint>(count, GLuint(kMaxFragmentsPerPixel));
 }
 
 void FragmentListPass::resolve() {
@@ -141,6 +185,8 @@ void FragmentListPass::resolve() {
   glUseProgram(resolve_.name());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kFragmentListBinding), list_.get());
   glBindImageTexture(GLuint(kFragmentHeadsUnit), heads_.get(), 0, GL_FALSE, 0, GL_READ_ONLY,
+                     GL_R32UI);
+  glBindImageTexture(GLuint(kFragmentCountsUnit), counts_.get(), 0, GL_FALSE, 0, GL_READ_ONLY,
                      GL_R32UI);
   glBindVertexArray(emptyVertexArray_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -14,7 +14,8 @@ class GlStateScope;
 
 // The GL side of order-independent transparency by per-pixel fragment lists in one context
 // (SoPeelingSeparator's FRAGMENT_LISTS, a peeling SoTransparentShadowGroup): the list buffer
-// (ShaderConstants.h: kFragmentBytes a fragment), each pixel's head and count images, a copy
+// (ShaderConstants.h: kFragmentBytes a fragment; kFixedFragmentsPerPixel slots of its own a
+// pixel, then an overflow list), each pixel's head and count images, a copy
 // of the opaque pass's depth in a framebuffer with no colour, and the resolve program. After
 // the opaque pass a frame is
 //   begin(); <Coin draws the children, the list variant bound>; finish();
@@ -43,8 +44,8 @@ class FragmentListPass {
   Outcome finish();
   // Composites each pixel's sorted list over the framebuffer current at begin().
   void resolve();
-  // Fragments the last pass stored (or tried to).
-  std::uint64_t fragments() const { return used_; }
+  // Fragments the last pass stored, after finish() said Stored.
+  std::uint64_t fragments() const { return stored_; }
   // Why the view cannot be listed, after begin() returned false or finish() TooLarge.
   std::string tooLargeReason() const;
 
@@ -52,14 +53,19 @@ class FragmentListPass {
   FragmentListPass() = default;
   // Empty, or what GL could not give (GlAllocationCheck).
   std::string allocateImages(int width, int height);
-  bool allocateList(std::uint64_t fragments);
+  // The slots of fixedLayers_ fragments a pixel and room for `overflow` more.
+  bool allocateList(std::uint64_t overflow);
+  std::uint64_t bytesFor(std::uint64_t overflow) const;
+  void countStored();
 
   GlProgram resolve_;
   GlVertexArray emptyVertexArray_;
   GlBuffer list_;
-  std::uint64_t capacity_ = 0;  // fragments the list buffer holds
-  std::uint64_t maxBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
-  std::uint64_t used_ = 0;
+  int fixedLayers_ = 0;                 // slots of its own per pixel (kFixedFragmentsPerPixel)
+  std::uint64_t overflowCapacity_ = 0;  // overflow fragments the list buffer holds
+  std::uint64_t maxBytes_ = 0;          // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  std::uint64_t overflowUsed_ = 0;      // overflow fragments the last pass tried to store
+  std::uint64_t stored_ = 0;
   std::string failure_;  // what begin() could not allocate
   int width_ = 0;
   int height_ = 0;

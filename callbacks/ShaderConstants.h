@@ -68,8 +68,13 @@ inline constexpr int kImageUnits = 4;
 // Fragments a pixel's list may hold: the resolve sorts them in registers. A view with more
 // transparent surfaces in one pixel is peeled instead (docs/PEELING.md).
 inline constexpr int kMaxFragmentsPerPixel = 32;
-// Bytes a fragment takes in the list (std430: colour vec4, depth, next, padding to 16).
-inline constexpr int kFragmentBytes = 32;
+// Bytes a fragment takes in the lists (std430: colour as four 16-bit unorms, depth, next).
+inline constexpr int kFragmentBytes = 16;
+// Fragments a pixel keeps in slots of its own (fragment k of pixel p at k * pixels + p, no
+// shared counter), before the rest go into a linked overflow list: on a software rasteriser
+// the one counter that every fragment of a linked list increments is half the list pass's
+// time (docs/PERFORMANCE.md). Four cost 64 bytes a pixel (31 MB at 800 x 600).
+inline constexpr int kFixedFragmentsPerPixel = 4;
 // Bytes a fragment of a deep shadow map's lists takes (dsm_list_common.glsl, std430:
 // transmittance and opacity vec4, distance, triangle, next, padding to 16).
 inline constexpr int kMapFragmentBytes = 32;

@@ -98,9 +98,10 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
   }
   state->pop();
   statistics.listPasses = passes;
-  statistics.listFragments = (long long)lists->fragments();
+  statistics.listFragments = 0;
   if (outcome == FragmentListPass::Outcome::Stored) {
     lists->resolve();
+    statistics.listFragments = (long long)lists->fragments();
     statistics.passes = passes;
     return true;
   }

@@ -1,8 +1,8 @@
 // The one geometry pass of order-independent transparency by fragment lists (after
 // lighting.glsl and fragment_list_common.glsl): every transparent fragment in front of the
-// opaque picture is shaded once, with the group's shadows, and linked into its pixel's list.
-// The depth test against the opaque pass's depth (less, no writes) runs first, so hidden and
-// opaque fragments are neither shaded nor stored.
+// opaque picture is shaded once, with the group's shadows, and stored in its pixel's slots or
+// overflow list. The depth test against the opaque pass's depth (less, no writes) runs first,
+// so hidden and opaque fragments are neither shaded nor stored.
 layout(early_fragment_tests) in;
 
 layout(r32ui, binding = IVSHADOW_FRAGMENT_HEADS_UNIT) uniform coherent uimage2D uHeads;
@@ -17,13 +17,20 @@ void main() {
   // Opaque fragments were drawn by the opaque pass; a clear one changes nothing.
   if (isOpaque(alpha) || alpha <= 0.0) discard;
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  if (imageAtomicAdd(uCounts, pixel, 1u) >= uint(IVSHADOW_MAX_FRAGMENTS_PER_PIXEL)) {
+  uint k = imageAtomicAdd(uCounts, pixel, 1u);
+  if (k >= uint(IVSHADOW_MAX_FRAGMENTS_PER_PIXEL)) {
     crowded = 1u;
     discard;
   }
-  uint index = atomicAdd(used, 1u);
-  if (index >= capacity) discard;
-  fragments[index].colour = shade(texel);
+  uint index;
+  if (k < fixedLayers) {
+    index = k * pixels + uint(pixel.y) * width + uint(pixel.x);
+  } else {
+    uint overflow = atomicAdd(overflowUsed, 1u);
+    if (overflow >= overflowCapacity) discard;
+    index = fixedLayers * pixels + overflow;
+    fragments[index].next = imageAtomicExchange(uHeads, pixel, index);
+  }
+  fragments[index].colour = packColour(clamp(shade(texel), 0.0, 1.0));
   fragments[index].depth = gl_FragCoord.z;
-  fragments[index].next = imageAtomicExchange(uHeads, pixel, index);
 }

@@ -13,12 +13,17 @@ void main() {
   beginShading();
   vec4 texel = coin_texunit0_model != kTextureNone ? texture(textureMap0, gl_TexCoord[0].st)
                                                    : vec4(1.0);
-  vec4 colour = shade(texel);
 #ifdef IVSHADOW_OPAQUE_ONLY
-  if (!isOpaque(colour.a)) {
-    transparentFragments = 1u;
+  // The opacity before the lighting, as the peel and list passes test it: a transparent
+  // fragment is dropped unshaded, which on a software rasteriser is most of this pass's cost
+  // (every layer of glass in front of the floor). The flag is read first: a store from every
+  // such fragment to the one word would be as costly.
+  float alpha =
+      applyTextureModel(gl_Color, texel, coin_texunit0_model, gl_TextureEnvColor[0].rgb).a;
+  if (!isOpaque(alpha)) {
+    if (transparentFragments == 0u) transparentFragments = 1u;
     discard;
   }
 #endif
-  gl_FragData[0] = colour;
+  gl_FragData[0] = shade(texel);
 }

@@ -210,8 +210,8 @@ TEST(Peeling, FragmentListsMatchTheReferenceInOnePass) {
   for (const std::string& content : {planesAndSphere(), tippedTorus()}) {
     expectMatchesReference(content, "method FRAGMENT_LISTS");
     const Rendered listed = render(sceneText("method FRAGMENT_LISTS", content));
-    // One pass into the lists, or two when the first found the buffer (two fragments a pixel
-    // to begin with) too small; no peel pass.
+    // One pass into the lists, or two when the first found the overflow (a quarter fragment a
+    // pixel beyond its four own slots, to begin with) too small; no peel pass.
     EXPECT_GE(listed.stats.listPasses, 1);
     EXPECT_LE(listed.stats.listPasses, 2);
     EXPECT_EQ(listed.stats.passes, listed.stats.listPasses);
@@ -219,9 +219,10 @@ TEST(Peeling, FragmentListsMatchTheReferenceInOnePass) {
   }
 }
 
-// Six full-view transparent sheets: 6 fragments a pixel, three times the lists' first
-// buffer. The first frame stores what fits, finds the buffer short, grows it and draws again;
-// the next frame needs one pass. Both pictures are the reference's.
+// Six full-view transparent sheets: 6 fragments a pixel, four in the pixel's own slots and two
+// in the overflow, eight times the overflow's first size. The first frame stores what fits,
+// finds the overflow short, grows it and draws again; the next frame needs one pass. Both
+// pictures are the reference's.
 TEST(Peeling, FragmentListsGrowOnceForABusierView) {
   std::ostringstream sheets;
   for (int i = 0; i < 6; ++i)
