@@ -174,7 +174,9 @@ void MapFragmentLists::fill(const MapRequest& request, const CasterBuffers& cast
                              kCountsOffset + GLintptr(face) * GLintptr(sizeof(GLuint)),
                              sizeof(GLuint));
   }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  // The resolve reads what the draws wrote; the next fill clears the heads they exchanged.
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                  GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 void MapFragmentLists::resolve(const MapRequest& request, const GlProgram& program, int face) {
@@ -200,6 +202,12 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
   // One surface for every two texels of the faces to begin with (most of a cube's faces see
   // few casters; a quarter of that where GL gives no more); a map that needs more grows the
   // buffer and is drawn again, and the buffer stays for the next build.
+  // A buffer kept from a build with more room than this one may take is made again.
+  if (capacity_ > 0 && byteLimit > 0 &&
+      kHeaderBytes + capacity_ * std::uint64_t(kMapFragmentBytes) > byteLimit) {
+    list_.reset();
+    capacity_ = 0;
+  }
   if (capacity_ == 0) {
     failure = allocateList(texels / 2u + 1u, byteLimit);
     if (!failure.empty()) failure = allocateList(texels / 8u + 1u, byteLimit);

@@ -20,9 +20,10 @@ inline constexpr double kFrameFixedBytes = 128.0 * (1 << 20);
 // (measured 80 too).
 inline constexpr double kPeelingBytesPerPixel = 80.0;
 // Its fragment lists besides (callbacks/FragmentListPass.h): two R32UI images and a depth copy,
-// and the first buffer of two fragments a pixel (counted from the layouts, not measured; a
-// view with more transparent layers grows the buffer).
-inline constexpr double kFragmentListBytesPerPixel = 12.0 + 2.0 * kFragmentBytes;
+// a pixel's slots of its own and the first overflow of a quarter fragment a pixel (counted
+// from the layouts, not measured; a view with more transparent layers grows the overflow).
+inline constexpr double kFragmentListBytesPerPixel =
+    12.0 + (kFixedFragmentsPerPixel + 0.25) * kFragmentBytes;
 // Captured surface layers, their read-back and the rays on the CPU: 292 measured with
 // coloured_shadows.iv, 368 with peeled_glasses.iv, which captures more layers; the larger.
 inline constexpr double kRaysBytesPerPixel = 370.0;

@@ -255,9 +255,11 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   const int asked = request.resolution;
   while (budget > 0 && request.resolution > 1 && DeepShadowPass::peakBytesFor(request) > budget)
     request.resolution /= 2;
-  // The lists may take what the budget leaves beside the layers; a face that needs more peels.
+  // The lists may take what the budget leaves beside the layers; a map that needs more peels.
+  // At least one byte: 0 would mean no limit.
   if (budget > 0)
-    request.listByteLimit = budget - std::min(budget, DeepShadowPass::peakBytesFor(request));
+    request.listByteLimit =
+        std::max<std::uint64_t>(budget - std::min(budget, DeepShadowPass::peakBytesFor(request)), 1u);
   const int fitted = request.resolution;
   MapBuildResult built = pass.build(slot, request);
   const std::string name = lightNode.getName().getString();
@@ -308,7 +310,9 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
           budget > 0 ? megabytes(budget).c_str() : "memory", request.resolution);
   }
   // A map that the fragment lists could not hold was peeled: the same map, one draw per layer.
-  if (!built.listFailure.empty() && !built.outOfMemory && firstWarning(&lightNode, "map lists"))
+  // Said once per reason: a context without the lists gives every light the same one.
+  if (!built.listFailure.empty() && !built.outOfMemory &&
+      firstWarning(nullptr, "map lists: " + built.listFailure))
     SoDebugError::postWarning(type.c_str(), "%s: %s; its map is built by depth peeling instead",
                               label.c_str(), built.listFailure.c_str());
   map.settings.resolution = request.resolution;

@@ -43,7 +43,10 @@ void main() {
   // A fully clear surface changes nothing; dropping it keeps it from using up a layer.
   if (colour.a <= 0.0) discard;
 
-  float depth = dot(vPosition - uDepthOrigin, uDepthAxis);
+  // Never below 0, where the written depth would be clamped and surfaces there would tie in
+  // the depth test (an orthographic face's near plane lies on the nearest caster); the lists
+  // (dsm_list.frag) clamp alike, so both order by the same distances.
+  float depth = max(dot(vPosition - uDepthOrigin, uDepthAxis), 0.0);
   ivec2 texel = ivec2(gl_FragCoord.xy);
   // Layers go in order of (distance, triangle number): a surface lying exactly on the
   // previous layer's (a cone's base on a cylinder's top) is the next layer when its triangle

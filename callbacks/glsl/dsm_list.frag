@@ -27,7 +27,8 @@ void main() {
   if (index >= capacity) discard;
   fragments[index].transmittance =
       vec4(transmittance(clamp(colour, 0.0, 1.0), uColourModel), isOpaque(colour.a) ? 1.0 : 0.0);
-  fragments[index].depth = dot(vPosition - uDepthOrigin, uDepthAxis);
+  // Never below 0, as the peel stores it (dsm_build.frag).
+  fragments[index].depth = max(dot(vPosition - uDepthOrigin, uDepthAxis), 0.0);
   fragments[index].triangle = uint(uFirstTriangle + gl_PrimitiveID);
   fragments[index].next = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index);
 }

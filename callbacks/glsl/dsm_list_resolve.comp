@@ -50,8 +50,9 @@ void main() {
   uint indices[IVSHADOW_MAP_LIST_LAYERS];
   int count = 0;
   // The nearest opaque surface among those left out of the layers: every one left out lies
-  // behind all that are kept.
+  // behind all that are kept. And whether one left out lets light through.
   bool closing = false;
+  bool passingLeftOut = false;
   float closingDepth = 0.0;
   uint closingTriangle = 0u;
   // A list holds at most `capacity` fragments: the bound only guards the loop.
@@ -67,8 +68,9 @@ void main() {
       uint left = keep ? indices[count - 1] : index;
       float leftDepth = keep ? depths[count - 1] : depth;
       uint leftTriangle = keep ? triangles[count - 1] : triangle;
-      if (fragments[left].transmittance.a != 0.0 &&
-          (!closing || nearer(leftDepth, leftTriangle, closingDepth, closingTriangle))) {
+      if (fragments[left].transmittance.a == 0.0) {
+        passingLeftOut = true;
+      } else if (!closing || nearer(leftDepth, leftTriangle, closingDepth, closingTriangle)) {
         closing = true;
         closingDepth = leftDepth;
         closingTriangle = leftTriangle;
@@ -105,13 +107,17 @@ void main() {
     imageStore(uVisibility, ivec3(texel, uFirstLayer + k), stored);
   }
 #else
-  // Gathered here and set with one atomic each, not one per layer.
+  // Gathered here and set with one atomic each, not one per layer. The peel's pass k is told
+  // that light is left when any surface behind layer k - 1 lets light through, whatever its
+  // rank (dsm_build.frag raises the flag before the depth test picks the nearest): bit k of
+  // passingLayers is set up to the deepest such surface, to the last layer when one was left
+  // out.
+  int deepestPassing = passingLeftOut ? uLayers - 1 : -1;
+  for (int k = 0; k < count; ++k)
+    if (fragments[indices[k]].transmittance.a == 0.0) deepestPassing = max(deepestPassing, k);
   uvec2 held = uvec2(0u), passing = uvec2(0u);
-  for (int k = 0; k < count; ++k) {
-    uint bit = 1u << uint(k % 32);
-    held[k / 32] |= bit;
-    if (fragments[indices[k]].transmittance.a == 0.0) passing[k / 32] |= bit;
-  }
+  for (int k = 0; k < count; ++k) held[k / 32] |= 1u << uint(k % 32);
+  for (int k = 0; k <= deepestPassing; ++k) passing[k / 32] |= 1u << uint(k % 32);
   int flags = uFace * IVSHADOW_MAP_FACE_FLAGS;
   for (int w = 0; w < 2; ++w) {
     if (held[w] != 0u) atomicOr(faceFlags[flags + w], held[w]);

@@ -220,6 +220,15 @@ TEST_P(MapFragmentListsAgainstPeeling, StoreTheMapThePeelStores) {
     if (variant.layers == 1)
       EXPECT_TRUE(std::any_of(b.layersUsed.begin(), b.layersUsed.end(),
                               [&](int used) { return used == variant.layers + 1; }));
+    // A directional light's face, whose near plane lies on the highest squares (height 1):
+    // their distance is 0, where a depth below it would be clamped.
+    request.frame =
+        orthographicFrame({0.0f, 0.0f, -1.0f}, {-3.0f, -3.0f, -1.0f}, {3.0f, 3.0f, 3.0f});
+    request.fragmentLists = true;
+    const MapBuildResult c = lists->build(0, request);
+    request.fragmentLists = false;
+    const MapBuildResult d = peeled->build(0, request);
+    expectSameMaps(*lists, *peeled, c, d, 1);
   }
 }
 
@@ -232,6 +241,32 @@ INSTANTIATE_TEST_SUITE_P(Layers, MapFragmentListsAgainstPeeling,
                                   (info.param.coloured ? "Coloured" : "Grey") +
                                   (info.param.half ? "Half" : "Float");
                          });
+
+// The peel goes on past a layer while any surface behind it lets light through, whatever its
+// rank, not only while that layer's does: an opaque square in front of glass keeps the glass's
+// layer (visibility 0) and, with two layers, the closing one of the opaque floor behind. The
+// lists must count the same layers.
+TEST_F(MapFragmentListsGLTest, GlassBehindAnOpaqueLayerKeepsThePeelsLayers) {
+  const Square nearOpaque{0, 0, 2, 3.0f, {0.5f, 0.5f, 0.5f, 1.0f}};
+  const Square glass{0, 0, 2, 2.0f, {0.2f, 0.8f, 0.3f, 0.5f}};
+  const Square floor{0, 0, 2, 1.0f, {0.5f, 0.5f, 0.5f, 1.0f}};
+  struct Case {
+    int layers;
+    std::vector<Square> squares;
+    int kept;  // as the peel counts them: 2 passes that stored, or 2 and the closing layer
+  };
+  for (const Case& c : {Case{4, {glass, nearOpaque}, 2}, Case{2, {floor, glass, nearOpaque}, 3}}) {
+    SCOPED_TRACE("maxLayers " + std::to_string(c.layers));
+    auto lists = makePass(), peeled = makePass();
+    ASSERT_TRUE(lists && peeled);
+    lists->uploadCasters(trianglesOf(c.squares));
+    peeled->uploadCasters(trianglesOf(c.squares));
+    const MapBuildResult a = lists->build(0, downwards(32, c.layers, true));
+    const MapBuildResult b = peeled->build(0, downwards(32, c.layers, false));
+    EXPECT_EQ(b.layersUsed[0], c.kept);
+    expectSameMaps(*lists, *peeled, a, b, 1);
+  }
+}
 
 TEST_F(MapFragmentListsGLTest, AMapTheStorageDoesNotHoldIsDrawnAgainLargerOnce) {
   // Ten squares across the face: ten surfaces a texel, twenty times the first storage (one
