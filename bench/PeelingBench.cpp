@@ -5,6 +5,7 @@
 // --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
 // largest channel error (0..255) against the exact CPU compositing of tests/gl/PeelReference.
 #include "headless/OffscreenRenderer.h"
+#include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "tests/gl/PeelReference.h"
 
@@ -95,6 +96,10 @@ void Peel(benchmark::State& state) {
       camera->position.setValue(eye + SbVec3f(0.01f * float(++frame % 2), 0.0f, 0.0f));
     state.SetIterationTime(renderer->render(root).wallMs * 1e-3);
   }
+  // A traced frame's own share: the trace and its upload (the rest is Coin's traversal and
+  // the picture's draw).
+  if (method == kTraced || method == kTracedMoving)
+    state.counters["trace_ms"] = ivshadow::collectDeepShadowStatistics(root).tracerMs;
   if (camera->position.getValue() != eye) {
     camera->position.setValue(eye);
     renderer->render(root);

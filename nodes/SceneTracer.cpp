@@ -55,6 +55,10 @@ const TextureImage* imageOf(const Extraction& data, const Triangle& tri) {
 
 float opacity(const Extraction& data, const Triangle& tri, float u, float v) {
   const TextureImage* image = imageOf(data, tri);
+  // Without a texture the colours' alphas alone, as sampleSurface interpolates them: every
+  // surface a camera ray meets is asked, most of them untextured.
+  if (image == nullptr)
+    return (1.0f - u - v) * tri.colour[0].a + u * tri.colour[1].a + v * tri.colour[2].a;
   const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, image, u, v);
   return texturedColour(sample.colour, sample.texel, image).a;
 }
@@ -200,12 +204,14 @@ class Tracer {
   }
 
   // Whether hits[i] is a surface met before (a shared edge, a spatial split): composited once.
+  // The hits are in depth order, so the ones at its distance are just before it: the search
+  // stops at the first that is not (sameSurface widens with the distance only).
   bool metBefore(const Hit* hits, std::size_t i) const {
     const Triangle& tri = data_.triangles[hits[i].primitive];
-    for (std::size_t j = 0; j < i; ++j)
-      if (data_.triangles[hits[j].primitive].shape == tri.shape &&
-          sameSurface(hits[j].t, hits[i].t))
-        return true;
+    for (std::size_t j = i; j-- > 0;) {
+      if (!sameSurface(hits[j].t, hits[i].t)) break;
+      if (data_.triangles[hits[j].primitive].shape == tri.shape) return true;
+    }
     return false;
   }
 
