@@ -167,7 +167,17 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
   clearGlErrors();
   if (lists != nullptr) {
     std::array<MapListFace, 6> faces{};
-    result.listFailure = lists->gather(request, casters, 2, request.listByteLimit, faces);
+    // The last build's layout, while the arrays still have its shape: the lists' one sort
+    // stores there and says whether it held.
+    const bool guessed = guessValid_ && depth_ && keptSize_ == request.resolution &&
+                         keptFormat_ == visibilityFormat(request) &&
+                         guessMaxLayers_ == request.layers &&
+                         guessFaces_ == request.frame.faceCount;
+    MapListLayout guess = guessLayout_;
+    guess.depthArray = depth_.get();
+    guess.visibilityArray = visibility_.get();
+    result.listFailure = lists->gather(request, casters, 2, request.listByteLimit,
+                                       guessed ? &guess : nullptr, faces);
     if (result.listFailure.empty()) {
       result.fragmentLists = true;
       result.listFragments = lists->fragments();
@@ -175,7 +185,9 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
         countListLayers(request, faces[std::size_t(face)], face, result);
         result.passes[std::size_t(face)] = lists->passes();
       }
+      const bool held = guessed && result.layersUsed == guessLayout_.layers;
       clearGlErrors();
+      // Where the guess held, the arrays keep their shape and are kept.
       allocateKept(request, result);
       if (!glAllocationError(GlAllocation::Texture).empty()) {
         result = MapBuildResult{};
@@ -183,11 +195,24 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
         releaseAll();
         return result;
       }
-      lists->store(request, result.firstLayer, result.layersUsed, depth_.get(), visibility_.get());
+      guessLayout_.firstLayer = result.firstLayer;
+      guessLayout_.layers = result.layersUsed;
+      guessMaxLayers_ = request.layers;
+      guessFaces_ = request.frame.faceCount;
+      guessValid_ = true;
+      result.listSorts = held ? 1 : 2;
+      if (!held) {
+        MapListLayout layout = guessLayout_;
+        layout.depthArray = depth_.get();
+        layout.visibilityArray = visibility_.get();
+        lists->store(request, layout);
+      }
       peakBytes_ = bytes_ + lists->bytes();
       return checkedForMemory(result);
     }
   }
+  // A peeled map leaves no layout for the lists to guess.
+  guessValid_ = false;
   clearGlErrors();
   allocateScratch(request);
   allocatePeelTargets(request);
@@ -331,6 +356,7 @@ void DeepShadowMap::releaseAll() {
   depth_.reset();
   visibility_.reset();
   keptSize_ = keptLayers_ = 0;
+  guessValid_ = false;
   releaseScratch();
   bytes_ = peakBytes_ = 0;
 }

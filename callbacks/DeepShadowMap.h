@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
+#include "callbacks/MapFragmentLists.h"
 #include "callbacks/MapFrame.h"
 #include "scene/ShadowTypes.h"
 
@@ -12,7 +13,6 @@ namespace ivshadow {
 
 class CasterBuffers;
 class GlProgram;
-class MapFragmentLists;
 struct MapLayerReadback;
 
 // What one light's map must hold.
@@ -50,6 +50,8 @@ struct MapBuildResult {
   std::array<int, 6> passes{};
   std::array<int, 6> firstLayer{};  // where each face's layers start in the stored arrays
   bool fragmentLists = false;       // built from fragment lists rather than peeled
+  // The lists' sorts: 1 where the last build's layout held (a light moved a little), else 2.
+  int listSorts = 0;
   std::uint64_t listFragments = 0;  // surfaces the lists held, all faces
   // Why a request for fragment lists was peeled instead ("" when it was not).
   std::string listFailure;
@@ -117,6 +119,11 @@ class DeepShadowMap {
   int keptSize_ = 0;
   int keptLayers_ = 0;
   unsigned int keptFormat_ = 0;
+  // The last build's layout from fragment lists, which the next one stores into first.
+  MapListLayout guessLayout_;
+  int guessMaxLayers_ = 0;
+  int guessFaces_ = 0;
+  bool guessValid_ = false;
 };
 
 }  // namespace ivshadow

@@ -186,6 +186,7 @@ void MapFragmentLists::resolve(const MapRequest& request, const GlProgram& progr
 
 std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuffers& casters,
                                      int textureUnit, std::uint64_t byteLimit,
+                                     const MapListLayout* guess,
                                      std::array<MapListFace, 6>& faces) {
   faces = {};
   used_ = 0;
@@ -193,7 +194,8 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
   std::string failure;
   const GlProgram* counting = resolveProgram(request, false, failure);
   if (counting == nullptr) return failure;
-  if (resolveProgram(request, true, failure) == nullptr) return failure;
+  const GlProgram* storing = resolveProgram(request, true, failure);
+  if (storing == nullptr) return failure;
   failure = allocateHeads(request.resolution, request.frame.faceCount);
   if (!failure.empty()) return failure;
   const std::uint64_t texels = std::uint64_t(request.resolution) *
@@ -226,15 +228,14 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
     failure = allocateList(used_ + used_ / 4u, byteLimit);
     if (!failure.empty()) return failure;
   }
-  glUseProgram(counting->name());
-  counting->setInt("uLayers", request.layers);
-  counting->setInt("uSize", request.resolution);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kMapFlagsBinding), flags_.get());
-  glBindImageTexture(GLuint(kFragmentHeadsUnit), heads_.get(), 0, GL_TRUE, 0, GL_READ_ONLY,
-                     GL_R32UI);
   // A face that linked no surface keeps no layer: its lists need no resolve.
+  std::array<bool, 6> surfaces{};
   for (int face = 0; face < request.frame.faceCount; ++face)
-    if (counts[face] > (face > 0 ? counts[face - 1] : 0u)) resolve(request, *counting, face);
+    surfaces[std::size_t(face)] = counts[face] > (face > 0 ? counts[face - 1] : 0u);
+  if (guess != nullptr)
+    resolveInto(request, *storing, *guess, surfaces);
+  else
+    resolveInto(request, *counting, MapListLayout{}, surfaces);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   GLuint flags[6 * kMapFaceFlags] = {};
   glGetNamedBufferSubData(flags_.get(), 0, kCountsOffset, flags);
@@ -248,28 +249,40 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
   return {};
 }
 
-void MapFragmentLists::store(const MapRequest& request, const std::array<int, 6>& firstLayer,
-                             const std::array<int, 6>& layers, unsigned int depthArray,
-                             unsigned int visibilityArray) {
-  std::string unused;
-  const GlProgram& storing = *resolveProgram(request, true, unused);
-  glUseProgram(storing.name());
-  storing.setInt("uLayers", request.layers);
-  storing.setInt("uSize", request.resolution);
+void MapFragmentLists::resolveInto(const MapRequest& request, const GlProgram& program,
+                                   const MapListLayout& layout, const std::array<bool, 6>& faces) {
+  glUseProgram(program.name());
+  program.setInt("uLayers", request.layers);
+  program.setInt("uSize", request.resolution);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kFragmentListBinding), list_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kMapFlagsBinding), flags_.get());
   glBindImageTexture(GLuint(kFragmentHeadsUnit), heads_.get(), 0, GL_TRUE, 0, GL_READ_ONLY,
                      GL_R32UI);
-  glBindImageTexture(GLuint(kMapLayerDepthUnit), depthArray, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindImageTexture(GLuint(kMapLayerVisibilityUnit), visibilityArray, 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                     visibilityFormat(request));
-  for (int face = 0; face < request.frame.faceCount; ++face) {
-    if (layers[std::size_t(face)] == 0) continue;
-    storing.setInt("uFirstLayer", firstLayer[std::size_t(face)]);
-    storing.setInt("uKept", layers[std::size_t(face)]);
-    resolve(request, storing, face);
+  if (layout.depthArray != 0) {
+    glBindImageTexture(GLuint(kMapLayerDepthUnit), layout.depthArray, 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_R32F);
+    glBindImageTexture(GLuint(kMapLayerVisibilityUnit), layout.visibilityArray, 0, GL_TRUE, 0,
+                       GL_WRITE_ONLY, visibilityFormat(request));
   }
-  // The camera pass samples what the resolve wrote.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  for (int face = 0; face < request.frame.faceCount; ++face) {
+    if (!faces[std::size_t(face)]) continue;
+    if (layout.depthArray != 0) {
+      program.setInt("uFirstLayer", layout.firstLayer[std::size_t(face)]);
+      program.setInt("uKept", layout.layers[std::size_t(face)]);
+    }
+    resolve(request, program, face);
+  }
+  // The camera pass samples what the resolve wrote; the build reads the flags.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void MapFragmentLists::store(const MapRequest& request, const MapListLayout& layout) {
+  std::string unused;
+  std::array<bool, 6> faces{};
+  for (int face = 0; face < request.frame.faceCount; ++face)
+    faces[std::size_t(face)] = layout.layers[std::size_t(face)] > 0;
+  resolveInto(request, *resolveProgram(request, true, unused), layout, faces);
 }
 
 }  // namespace ivshadow

@@ -23,12 +23,22 @@ struct MapListFace {
   bool closingLayer = false;
 };
 
+// Where a map's layers go: face f's `layers[f]` layers from array layer firstLayer[f] on, of
+// the two arrays (GL names: r32f distances; visibilities of the request's format).
+struct MapListLayout {
+  std::array<int, 6> firstLayer{};
+  std::array<int, 6> layers{};
+  unsigned int depthArray = 0;
+  unsigned int visibilityArray = 0;
+};
+
 // A deep shadow map's faces from per-texel fragment lists in one GL context (after Yang et
 // al. 2010, as FragmentListPass for the camera): one draw of the casters per face links every
 // surface into its texel's list, and a compute pass sorts each list into the layers the peel
 // passes would have stored (dsm_list_resolve.comp), so the map is the same without one pass
 // per layer. A build is
 //   gather(); <size the map from what it found>; store();
+// or, where the last build's layout is given and still holds, gather() alone.
 // The list buffer (kMapFragmentBytes a surface, all faces at once) and the heads are kept
 // between builds and grow to what a map needs, up to what GL gives.
 class MapFragmentLists {
@@ -40,16 +50,15 @@ class MapFragmentLists {
   // Links every face's surfaces into the lists and says what each face's lists hold. The
   // draws use `textureUnit` for the casters' textures. GL state is left changed: the caller
   // saves and restores it around the build (GlStateScope, with kImageBindings). `byteLimit`
-  // (0: GL's limits only) bounds the list storage. Empty when every surface was stored; else
-  // why the lists could not hold the map (the caller peels instead).
+  // (0: GL's limits only) bounds the list storage. With `guess`, the layout of the last build,
+  // the same pass also stores the layers there: where what it says matches the guess the map
+  // is done without store(). Empty when every surface was stored; else why the lists could
+  // not hold the map (the caller peels instead).
   std::string gather(const MapRequest& request, const CasterBuffers& casters, int textureUnit,
-                     std::uint64_t byteLimit, std::array<MapListFace, 6>& faces);
-  // After a gather(): writes each face's first `layers[f]` layers into array layers
-  // firstLayer[f] .. of the two arrays (r32f distances; visibilities of the request's format),
-  // every texel of them.
-  void store(const MapRequest& request, const std::array<int, 6>& firstLayer,
-             const std::array<int, 6>& layers, unsigned int depthArray,
-             unsigned int visibilityArray);
+                     std::uint64_t byteLimit, const MapListLayout* guess,
+                     std::array<MapListFace, 6>& faces);
+  // After a gather(): writes each face's layers in `layout`, every texel of them.
+  void store(const MapRequest& request, const MapListLayout& layout);
   // Draws of the casters per face in the last gather: 1, or 2 when the storage grew.
   int passes() const { return passes_; }
   // Surfaces the last gather stored, all faces.
@@ -66,6 +75,10 @@ class MapFragmentLists {
   std::string allocateList(std::uint64_t fragments, std::uint64_t byteLimit);
   void fill(const MapRequest& request, const CasterBuffers& casters, int textureUnit);
   void resolve(const MapRequest& request, const GlProgram& program, int face);
+  // Runs `program` over the lists of the faces marked in `faces`, storing into `layout` where
+  // it has arrays.
+  void resolveInto(const MapRequest& request, const GlProgram& program, const MapListLayout& layout,
+                   const std::array<bool, 6>& faces);
 
   GlProgram fill_;
   // Resolve programs by their defines (the sort's size, storing or not, the visibility

@@ -4,14 +4,15 @@
 // it, and, where the layers run out, the closing layer: the nearest opaque surface behind
 // them, visibility 0 (callbacks/DeepShadowMap.h).
 //
-// Run twice per face (MapFragmentLists). Without IVSHADOW_MAP_LIST_STORE it only reports the
-// face's flags: which layers hold a surface in some texel, which hold one that lets light
-// through, and whether a closing layer exists, from which the build counts the layers the peel
-// would keep and sizes the map. With it, it writes the uKept layers the map keeps, from array
-// layer uFirstLayer on, in every texel ("no surface" where a texel has fewer), so the map
-// needs neither scratch layers nor a clear. IVSHADOW_MAP_LIST_LAYERS (a power of two, at
-// least uLayers) sizes the sort; IVSHADOW_MAP_VISIBILITY_FORMAT is the visibility array's
-// image format.
+// It reports the face's flags: which layers hold a surface in some texel, down to which a
+// surface behind lets light through, and whether a closing layer exists, from which the build
+// counts the layers the peel would keep and sizes the map (MapFragmentLists). With
+// IVSHADOW_MAP_LIST_STORE it also writes the uKept layers the map keeps, from array layer
+// uFirstLayer on, in every texel ("no surface" where a texel has fewer), so the map needs
+// neither scratch layers nor a clear: in the layout of the last build, which a light moved a
+// little keeps (one run), or, when the flags say otherwise, again in the new one.
+// IVSHADOW_MAP_LIST_LAYERS (a power of two, at least uLayers) sizes the sort;
+// IVSHADOW_MAP_VISIBILITY_FORMAT is the visibility array's image format.
 layout(local_size_x = IVSHADOW_MAP_RESOLVE_GROUP_SIZE,
        local_size_y = IVSHADOW_MAP_RESOLVE_GROUP_SIZE) in;
 
@@ -106,7 +107,7 @@ void main() {
     imageStore(uDepth, ivec3(texel, uFirstLayer + k), vec4(depth));
     imageStore(uVisibility, ivec3(texel, uFirstLayer + k), stored);
   }
-#else
+#endif
   // Gathered here and set with one atomic each, not one per layer. The peel's pass k is told
   // that light is left when any surface behind layer k - 1 lets light through, whatever its
   // rank (dsm_build.frag raises the flag before the depth test picks the nearest): bit k of
@@ -124,5 +125,4 @@ void main() {
     if (passing[w] != 0u) atomicOr(faceFlags[flags + 2 + w], passing[w]);
   }
   if (closed) atomicOr(faceFlags[flags + 4], 1u);
-#endif
 }

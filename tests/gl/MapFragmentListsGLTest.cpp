@@ -268,6 +268,43 @@ TEST_F(MapFragmentListsGLTest, GlassBehindAnOpaqueLayerKeepsThePeelsLayers) {
   }
 }
 
+// A map built again stores its layers in the last build's layout with the same sort that
+// counts them, and sorts a second time only where the layers changed: a pane moved across
+// the face keeps the layout (one sort), a pane added changes it (two). Each map is the peel's.
+TEST_F(MapFragmentListsGLTest, AMapBuiltAgainSortsOnceWhileItsLayoutHolds) {
+  std::vector<Square> squares = {{0, 0, 2, 0.5f, {0.5f, 0.5f, 0.5f, 1.0f}},
+                                 {0, 0, 2, 2.0f, {0.1f, 0.9f, 0.1f, 0.25f}},
+                                 {-0.5f, -0.5f, 0.25f, 3.0f, {0.9f, 0.1f, 0.1f, 0.5f}}};
+  auto lists = makePass(), peeled = makePass();
+  ASSERT_TRUE(lists && peeled);
+  const auto buildBoth = [&](int sorts) {
+    lists->uploadCasters(trianglesOf(squares));
+    peeled->uploadCasters(trianglesOf(squares));
+    const MapBuildResult a = lists->build(0, downwards(64, 4, true));
+    const MapBuildResult b = peeled->build(0, downwards(64, 4, false));
+    EXPECT_EQ(a.listSorts, sorts);
+    expectSameMaps(*lists, *peeled, a, b, 1);
+  };
+  {
+    SCOPED_TRACE("first build");
+    buildBoth(2);
+  }
+  {
+    SCOPED_TRACE("the same again");
+    buildBoth(1);
+  }
+  squares[2].x = 0.5f;
+  {
+    SCOPED_TRACE("the pane moved");
+    buildBoth(1);
+  }
+  squares.push_back({0, 0, 2, 3.5f, {0.2f, 0.2f, 0.9f, 0.5f}});
+  {
+    SCOPED_TRACE("a pane added");
+    buildBoth(2);
+  }
+}
+
 TEST_F(MapFragmentListsGLTest, AMapTheStorageDoesNotHoldIsDrawnAgainLargerOnce) {
   // Ten squares across the face: ten surfaces a texel, twenty times the first storage (one
   // surface for every two texels). The first build draws again with a larger buffer; the
