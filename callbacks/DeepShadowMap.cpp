@@ -46,6 +46,12 @@ int scratchLayersInAll(const MapRequest& request) {
   return request.frame.faceCount * scratchLayers(request);
 }
 
+int layerTotal(const std::array<int, 6>& layers) {
+  int total = 0;
+  for (int used : layers) total += used;
+  return total;
+}
+
 bool layerBit(const std::array<std::uint32_t, 2>& bits, int layer) {
   return ((bits[std::size_t(layer / 32)] >> (layer % 32)) & 1u) != 0u;
 }
@@ -172,7 +178,8 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
     const bool guessed = guessValid_ && depth_ && keptSize_ == request.resolution &&
                          keptFormat_ == visibilityFormat(request) &&
                          guessMaxLayers_ == request.layers &&
-                         guessFaces_ == request.frame.faceCount;
+                         guessFaces_ == request.frame.faceCount &&
+                         keptLayers_ == std::max(layerTotal(guessLayout_.layers), 1);
     MapListLayout guess = guessLayout_;
     guess.depthArray = depth_.get();
     guess.visibilityArray = visibility_.get();

@@ -93,13 +93,15 @@ bool FragmentListPass::begin(int x, int y, int width, int height) {
   failure_ = allocateImages(x + width, y + height);
   if (!failure_.empty()) return false;
   // kFixedFragmentsPerPixel slots a pixel and an overflow of a quarter fragment a pixel to
-  // begin with (fewer slots where GL gives no more); finish() grows the overflow to what a
-  // view needs.
+  // begin with (fewer slots, or none, where GL gives no more); finish() grows the overflow to
+  // what a view needs.
   if (!list_) {
     const std::uint64_t pixels = std::uint64_t(width_) * std::uint64_t(height_);
-    for (int layers = kFixedFragmentsPerPixel; layers >= 1 && !list_; layers /= 2) {
+    // Down to none: a pure linked list, as large views fit where GL gives little.
+    for (int layers = kFixedFragmentsPerPixel; layers >= 0 && !list_; layers /= 2) {
       fixedLayers_ = layers;
       allocateList(pixels / 4u + 1u);
+      if (layers == 0) break;
     }
     if (!list_) {
       failure_ = "GL gives no storage for the fragment lists";
@@ -118,7 +120,7 @@ bool FragmentListPass::begin(int x, int y, int width, int height) {
   glClearTexImage(counts_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   const GLuint header[8] = {GLuint(fixedLayers_),
                             GLuint(width_),
-                            GLuint(width_ * height_),
+                            GLuint(std::uint64_t(width_) * std::uint64_t(height_)),
                             0u,
                             0u,
                             GLuint(std::min<std::uint64_t>(overflowCapacity_, kNoFragment - 1u)),

@@ -272,9 +272,10 @@ void MapFragmentLists::resolveInto(const MapRequest& request, const GlProgram& p
     }
     resolve(request, program, face);
   }
-  // The camera pass samples what the resolve wrote; the build reads the flags.
+  // The camera pass samples what the resolve wrote, the build reads the flags, and a second
+  // store (the guessed layout did not hold) writes the same texels again.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
-                  GL_SHADER_STORAGE_BARRIER_BIT);
+                  GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void MapFragmentLists::store(const MapRequest& request, const MapListLayout& layout) {
