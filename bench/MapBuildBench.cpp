@@ -7,6 +7,7 @@
 // clock, the GL finished before and after.
 #include "BenchScenes.h"
 #include "callbacks/DeepShadowPass.h"
+#include "callbacks/GlHandles.h"
 #include "callbacks/GlProgram.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
@@ -47,30 +48,24 @@ class PlainCubePass {
         "void main() { gl_Position = uViewProjection * vec4(aPosition, 1.0); }\n",
         "#version 450\nvoid main() {}\n", error);
     vertices_ = GLsizei(casters.vertices.size());
-    glCreateBuffers(1, &buffer_);
-    glNamedBufferData(buffer_,
+    buffer_ = ivshadow::createBuffer();
+    glNamedBufferData(buffer_.get(),
                       GLsizeiptr(casters.vertices.size() * sizeof(ivshadow::TriangleVertex)),
                       casters.vertices.data(), GL_STATIC_DRAW);
-    glCreateVertexArrays(1, &vertexArray_);
-    glVertexArrayVertexBuffer(vertexArray_, 0, buffer_, 0, sizeof(ivshadow::TriangleVertex));
-    glEnableVertexArrayAttrib(vertexArray_, 0);
-    glVertexArrayAttribFormat(vertexArray_, 0, 3, GL_FLOAT, GL_FALSE,
+    vertexArray_ = ivshadow::createVertexArray();
+    const GLuint vao = vertexArray_.get();
+    glVertexArrayVertexBuffer(vao, 0, buffer_.get(), 0, sizeof(ivshadow::TriangleVertex));
+    glEnableVertexArrayAttrib(vao, 0);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE,
                               offsetof(ivshadow::TriangleVertex, position));
-    glVertexArrayAttribBinding(vertexArray_, 0, 0);
-    glCreateTextures(GL_TEXTURE_2D, 1, &depth_);
-    glTextureStorage2D(depth_, 1, GL_DEPTH_COMPONENT32F, kResolution, kResolution);
-    glCreateFramebuffers(1, &framebuffer_);
-    glNamedFramebufferTexture(framebuffer_, GL_DEPTH_ATTACHMENT, depth_, 0);
-    glNamedFramebufferDrawBuffer(framebuffer_, GL_NONE);
-  }
-  ~PlainCubePass() {
-    glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteTextures(1, &depth_);
-    glDeleteVertexArrays(1, &vertexArray_);
-    glDeleteBuffers(1, &buffer_);
+    glVertexArrayAttribBinding(vao, 0, 0);
+    depth_ = ivshadow::createTarget2D(GL_DEPTH_COMPONENT32F, kResolution, kResolution);
+    framebuffer_ = ivshadow::createFramebuffer();
+    glNamedFramebufferTexture(framebuffer_.get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
+    glNamedFramebufferDrawBuffer(framebuffer_.get(), GL_NONE);
   }
   void draw(const ivshadow::MapFrame& frame) const {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glViewport(0, 0, kResolution, kResolution);
     // The map's reversed depth: near at 1.
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -78,10 +73,10 @@ class PlainCubePass {
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
     glUseProgram(program_.name());
-    glBindVertexArray(vertexArray_);
+    glBindVertexArray(vertexArray_.get());
     for (int face = 0; face < frame.faceCount; ++face) {
       const float farthest = 0.0f;
-      glClearNamedFramebufferfv(framebuffer_, GL_DEPTH, 0, &farthest);
+      glClearNamedFramebufferfv(framebuffer_.get(), GL_DEPTH, 0, &farthest);
       program_.setMat4("uViewProjection",
                        glm::value_ptr(frame.faces[std::size_t(face)].viewProjection));
       glDrawArrays(GL_TRIANGLES, 0, vertices_);
@@ -90,7 +85,10 @@ class PlainCubePass {
 
  private:
   ivshadow::GlProgram program_;
-  GLuint buffer_ = 0, vertexArray_ = 0, depth_ = 0, framebuffer_ = 0;
+  ivshadow::GlBuffer buffer_;
+  ivshadow::GlVertexArray vertexArray_;
+  ivshadow::GlTexture depth_;
+  ivshadow::GlFramebuffer framebuffer_;
   GLsizei vertices_ = 0;
 };
 

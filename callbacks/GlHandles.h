@@ -39,7 +39,7 @@ IVSHADOW_INTERNAL GlVertexArray createVertexArray();
 IVSHADOW_INTERNAL GlFramebuffer createFramebuffer();
 IVSHADOW_INTERNAL GlRenderbuffer createRenderbuffer();
 // A 2D texture of one level and nearest sampling: a render target read by texel.
-GlTexture createTarget2D(unsigned int format, int width, int height);
+IVSHADOW_INTERNAL GlTexture createTarget2D(unsigned int format, int width, int height);
 // A size x size 2D array texture of `layers` layers, one level, nearest sampling clamped to
 // the edge: a map's layers, read by texel.
 GlTexture createTargetArray(unsigned int format, int size, int layers);

@@ -1,9 +1,7 @@
 #include "nodes/SceneTracer.h"
 
-#include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
-#include "nodes/DeepShadowSettings.h"
 #include "nodes/SceneExtraction.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
@@ -28,7 +26,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 namespace ivshadow {
 namespace {
@@ -55,10 +52,6 @@ const TextureImage* imageOf(const Extraction& data, const Triangle& tri) {
 
 float opacity(const Extraction& data, const Triangle& tri, float u, float v) {
   const TextureImage* image = imageOf(data, tri);
-  // Without a texture the colours' alphas alone, as sampleSurface interpolates them: every
-  // surface a camera ray meets is asked, most of them untextured.
-  if (image == nullptr)
-    return (1.0f - u - v) * tri.colour[0].a + u * tri.colour[1].a + v * tri.colour[2].a;
   const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, image, u, v);
   return texturedColour(sample.colour, sample.texel, image).a;
 }
