@@ -6,12 +6,14 @@
 # 160 x 120, and prints per model both exit statuses and the largest channel difference of
 # the two pictures. The knob also makes the group's own transparency peel rather than list
 # (docs/PEELING.md); further arguments go to both renders' --set (e.g.
-# ShadowGroup.transparency=COIN_BLENDING leaves only the map's build to differ). BUILD_DIR as
-# for ./run.
+# ShadowGroup.transparency=COIN_BLENDING leaves only the map's build to differ). Both renders
+# truncate the surfaces past maxLayers (layerOverflow TRUNCATE), as a peeled map does: the
+# lists' default, MERGE, differs from the peel wherever a texel has more. BUILD_DIR as for
+# ./run.
 #   bench/corpus_map_build.sh > map_build.txt
 set -uo pipefail
 cd "$(dirname "$0")/.."
-sets=()
+sets=(--set "ShadowLight.layerOverflow=TRUNCATE")
 for assignment in "$@"; do sets+=(--set "$assignment"); done
 build=${BUILD_DIR:-build}
 tmp=$(mktemp -d)

@@ -189,8 +189,11 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       result.fragmentLists = true;
       result.listFragments = lists->fragments();
       for (int face = 0; face < request.frame.faceCount; ++face) {
-        countListLayers(request, faces[std::size_t(face)], face, result);
+        const MapListFace& found = faces[std::size_t(face)];
+        countListLayers(request, found, face, result);
         result.passes[std::size_t(face)] = lists->passes();
+        result.mergedTexels += found.mergedTexels;
+        result.mergeError = std::max(result.mergeError, found.mergeError);
       }
       const bool held = guessed && result.layersUsed == guessLayout_.layers;
       clearGlErrors();

@@ -33,6 +33,11 @@ struct MapRequest {
   bool fragmentLists = true;
   // Bytes the lists may take (0: as much as GL gives); a face that needs more is peeled.
   std::uint64_t listByteLimit = 0;
+  // Where a texel has more surfaces that let light through than `layers` (in front of its
+  // nearest opaque one), the lists keep them all, merged into `layers` groups with the least
+  // error they find (SoDeepShadowLight::layerOverflow MERGE); false, or a peeled map: the
+  // nearest `layers` (TRUNCATE).
+  bool mergeOverflow = false;
 };
 
 struct MapBuildResult {
@@ -53,6 +58,10 @@ struct MapBuildResult {
   // The lists' sorts: 1 where the last build's layout held (a light moved a little), else 2.
   int listSorts = 0;
   std::uint64_t listFragments = 0;  // surfaces the lists held, all faces
+  // With mergeOverflow: the texels merged, all faces, and the largest error in visibility (0
+  // .. 1, any channel) a merge left at any distance in any of them.
+  std::uint64_t mergedTexels = 0;
+  float mergeError = 0.0f;
   // Why a request for fragment lists was peeled instead ("" when it was not).
   std::string listFailure;
 };

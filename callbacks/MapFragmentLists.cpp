@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstring>
 
 namespace ivshadow {
 namespace {
@@ -89,6 +90,7 @@ const GlProgram* MapFragmentLists::resolveProgram(const MapRequest& request, boo
                                                   std::string& whyNot) {
   std::string defines =
       "#define IVSHADOW_MAP_LIST_LAYERS " + std::to_string(sortSize(request.layers)) + "\n";
+  if (request.mergeOverflow) defines += "#define IVSHADOW_MAP_LIST_MERGE\n";
   if (storing)
     defines += std::string(
                    "#define IVSHADOW_MAP_LIST_STORE\n#define "
@@ -245,6 +247,8 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
     out.heldLayers = {f[0], f[1]};
     out.passingLayers = {f[2], f[3]};
     out.closingLayer = f[4] != 0u;
+    std::memcpy(&out.mergeError, &f[5], sizeof(float));
+    out.mergedTexels = f[6];
   }
   return {};
 }

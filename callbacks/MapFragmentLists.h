@@ -21,6 +21,9 @@ struct MapListFace {
   std::array<std::uint32_t, 2> heldLayers{};
   std::array<std::uint32_t, 2> passingLayers{};
   bool closingLayer = false;
+  // With MapRequest::mergeOverflow: texels merged, and the largest error a merge left.
+  std::uint32_t mergedTexels = 0;
+  float mergeError = 0.0f;
 };
 
 // Where a map's layers go: face f's `layers[f]` layers from array layer firstLayer[f] on, of

@@ -81,7 +81,7 @@ inline constexpr int kMapFragmentBytes = 32;
 // Pixels along each side of a compute workgroup that resolves a map's lists.
 inline constexpr int kMapResolveGroupSize = 8;
 // Words per face the resolve of a map's lists reports in (dsm_list_resolve.comp).
-inline constexpr int kMapFaceFlags = 5;
+inline constexpr int kMapFaceFlags = 7;
 
 // Layers of visible surfaces a screen-space shadow (RAYS, VOLUMES) is computed for: the
 // nearest opaque one and up to four transparent ones in front of it. The shadow volumes

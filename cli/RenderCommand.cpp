@@ -81,7 +81,9 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
                       {"extent", light.extent},
                       {"method", light.method},
                       {"map_build", light.mapBuild},
-                      {"list_fragments", light.listFragments}});
+                      {"list_fragments", light.listFragments},
+                      {"merged_texels", light.mergedTexels},
+                      {"merge_error", light.mergeError}});
     if (std::find(methods.begin(), methods.end(), light.method) == methods.end())
       methods.push_back(light.method);
   }

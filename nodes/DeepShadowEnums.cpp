@@ -16,6 +16,8 @@ void addDeepShadowEnumValues(SoFieldData* fieldData) {
   fieldData->addEnumValue("Precision", "HALF", SoDeepShadowLight::HALF);
   fieldData->addEnumValue("Filter", "NONE", SoDeepShadowLight::NONE);
   fieldData->addEnumValue("Filter", "PCF", SoDeepShadowLight::PCF);
+  fieldData->addEnumValue("LayerOverflow", "MERGE", SoDeepShadowLight::MERGE);
+  fieldData->addEnumValue("LayerOverflow", "TRUNCATE", SoDeepShadowLight::TRUNCATE);
   // Files say AUTO for the method too; the C++ name is AUTO_METHOD, since ShadowColor has AUTO.
   fieldData->addEnumValue("Method", "AUTO", SoDeepShadowLight::AUTO_METHOD);
   fieldData->addEnumValue("Method", "MAP", SoDeepShadowLight::MAP);

@@ -95,6 +95,7 @@ DeepShadowSettings resolveFields(Node& light, int maxTextureSize) {
     s.filterWidth = clampInt(light, "filterSize", light.filterSize.getValue(), 1, 9);
   }
   s.method = light.method.getValue();
+  s.mergeOverflow = light.layerOverflow.getValue() != SoDeepShadowLight::TRUNCATE;
   return s;
 }
 

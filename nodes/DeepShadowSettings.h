@@ -54,7 +54,8 @@ struct DeepShadowSettings {
   bool halfPrecision = false;
   // 0: the nearest texel; w: the mean over a w x w texel square (PCF, lighting.glsl)
   int filterWidth = 0;
-  int method = 0;  // SoDeepShadowLight::Method as set (AUTO not yet resolved)
+  int method = 0;             // SoDeepShadowLight::Method as set (AUTO not yet resolved)
+  bool mergeOverflow = true;  // layerOverflow MERGE
 };
 
 // Reads and clamps the light's fields; each field that is out of range is reported once per

@@ -185,8 +185,8 @@ void fitSlices(MapState& map, const SbBox3f& transparentBounds) {
     float ignored = 0.0f;
     distanceRange(transparentBounds, map.position, ignored, nearest, ignored);
     for (int i = 0; i < 3; ++i)
-      farthest = std::max({farthest, std::fabs(low[i] - map.position[i]),
-                           std::fabs(high[i] - map.position[i])});
+      farthest = std::max(
+          {farthest, std::fabs(low[i] - map.position[i]), std::fabs(high[i] - map.position[i])});
   } else {
     const MapFace& face = map.frame.faces[0];
     for (const SbVec3f& corner : boxCorners(transparentBounds)) {
@@ -247,6 +247,7 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   request.coloured = map.coloured;
   request.halfPrecision = map.settings.halfPrecision;
   request.colourModel = map.model;
+  request.mergeOverflow = map.settings.mergeOverflow;
   if (map.opacity) {
     request.slices = map.settings.slices;
     request.sliceNear = map.sliceNear;
@@ -258,8 +259,8 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   // The lists may take what the budget leaves beside the layers; a map that needs more peels.
   // At least one byte: 0 would mean no limit.
   if (budget > 0)
-    request.listByteLimit =
-        std::max<std::uint64_t>(budget - std::min(budget, DeepShadowPass::peakBytesFor(request)), 1u);
+    request.listByteLimit = std::max<std::uint64_t>(
+        budget - std::min(budget, DeepShadowPass::peakBytesFor(request)), 1u);
   const int fitted = request.resolution;
   MapBuildResult built = pass.build(slot, request);
   const std::string name = lightNode.getName().getString();
@@ -271,7 +272,8 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     // light.
     if (built.noProgram &&
         firstWarning(nullptr, map.opacity ? "opacity map program" : "map program"))
-      SoDebugError::postWarning("SoTransparentShadowGroup", "%s; lights with method %s light "
+      SoDebugError::postWarning("SoTransparentShadowGroup",
+                                "%s; lights with method %s light "
                                 "without a shadow",
                                 pass.programError(request).c_str(),
                                 map.opacity ? "OPACITY_MAP" : "MAP");
@@ -309,12 +311,16 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
           label.c_str(), asked, megabytes(DeepShadowPass::peakBytesFor(wanted)).c_str(),
           budget > 0 ? megabytes(budget).c_str() : "memory", request.resolution);
   }
-  // A map that the fragment lists could not hold was peeled: the same map, one draw per layer.
-  // Said once per reason: a context without the lists gives every light the same one.
+  // A map that the fragment lists could not hold was peeled: the same map, one draw per layer,
+  // but for the surfaces past maxLayers, which the peel cannot merge. Said once per reason: a
+  // context without the lists gives every light the same one.
   if (!built.listFailure.empty() && !built.outOfMemory &&
       firstWarning(nullptr, "map lists: " + built.listFailure))
-    SoDebugError::postWarning(type.c_str(), "%s: %s; its map is built by depth peeling instead",
-                              label.c_str(), built.listFailure.c_str());
+    SoDebugError::postWarning(type.c_str(), "%s: %s; its map is built by depth peeling instead%s",
+                              label.c_str(), built.listFailure.c_str(),
+                              request.mergeOverflow ? ", which keeps only the nearest maxLayers "
+                                                      "surfaces of a texel (layerOverflow TRUNCATE)"
+                                                    : "");
   map.settings.resolution = request.resolution;
   map.faceFirst = built.firstLayer;
   map.faceLayers = built.layersUsed;
@@ -323,6 +329,8 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   light.passes = built.passes;
   light.mapBuild = built.fragmentLists ? "FRAGMENT_LISTS" : "PEELING";
   light.listFragments = built.listFragments;
+  light.mergedTexels = built.mergedTexels;
+  light.mergeError = built.mergeError;
   light.bytes = pass.mapBytes(slot);
   light.peakBytes = pass.mapPeakBytes(slot);
   light.resolution = request.resolution;

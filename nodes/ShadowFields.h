@@ -28,16 +28,18 @@ constexpr int kDefaultMapFilterSize = 1;
     SO_NODE_ADD_FIELD(resolution, (512));                                          \
     SO_NODE_ADD_FIELD(maxLayers, (4));                                             \
     SO_NODE_ADD_FIELD(slices, (ivshadow::kDefaultOpacitySlices));                  \
-    SO_NODE_ADD_FIELD(bias, (ivshadow::kDefaultMapBias));                           \
+    SO_NODE_ADD_FIELD(bias, (ivshadow::kDefaultMapBias));                          \
     SO_NODE_ADD_FIELD(shadowColor, (SoDeepShadowLight::AUTO));                     \
     SO_NODE_ADD_FIELD(colorModel, (SoDeepShadowLight::SATURATE));                  \
     SO_NODE_ADD_FIELD(precision, (SoDeepShadowLight::FLOAT));                      \
     SO_NODE_ADD_FIELD(filter, (ivshadow::kDefaultMapFilter));                      \
     SO_NODE_ADD_FIELD(filterSize, (ivshadow::kDefaultMapFilterSize));              \
+    SO_NODE_ADD_FIELD(layerOverflow, (SoDeepShadowLight::MERGE));                  \
     if (SO_NODE_IS_FIRST_INSTANCE()) ivshadow::addDeepShadowEnumValues(fieldData); \
     SO_NODE_SET_SF_ENUM_TYPE(method, Method);                                      \
     SO_NODE_SET_SF_ENUM_TYPE(shadowColor, ShadowColor);                            \
     SO_NODE_SET_SF_ENUM_TYPE(colorModel, ColorModel);                              \
     SO_NODE_SET_SF_ENUM_TYPE(precision, Precision);                                \
     SO_NODE_SET_SF_ENUM_TYPE(filter, Filter);                                      \
+    SO_NODE_SET_SF_ENUM_TYPE(layerOverflow, LayerOverflow);                        \
   } while (false)

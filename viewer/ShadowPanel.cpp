@@ -69,6 +69,7 @@ const std::vector<FieldSpec>& lightFields() {
       {kMethod, "farRadius", {-1.0, 1e6, 0.1, 3}},
       {kMap, "resolution", {1, 16384, 64, 0}},
       {kMap, "maxLayers", {1, kMaxMapLayers, 1, 0}},
+      {kMap, "layerOverflow", {}},
       {kMap, "slices", {1, kMaxOpacitySlices, 1, 0}},
       {kMap, "precision", {}},
       {kMap, "filter", {}},

@@ -21,6 +21,11 @@ struct DeepShadowLightStatistics {
   // per layer, where the lists could not hold it); "" for other methods.
   std::string mapBuild;
   std::uint64_t listFragments = 0;  // surfaces the lists held, all faces
+  // layerOverflow MERGE: the texels whose surfaces were merged (more than maxLayers), all
+  // faces, and the largest error (0 .. 1, any channel) that left in their visibility at any
+  // distance. A peeled map truncates instead: 0.
+  std::uint64_t mergedTexels = 0;
+  float mergeError = 0.0f;
   // How the map sees its casters: "CUBE" (a point light, a wide spot light), "PERSPECTIVE"
   // (one face over a spot light's cone) or "ORTHOGRAPHIC" (one face across a directional
   // light); a one-face map counts its layers and passes in face 0. "" without a map.

@@ -27,6 +27,9 @@
                              #   OPACITY_MAP (fixed cost: light absorbed per depth slice)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
         maxLayers 4          # layers per face, 1 .. 64
+        layerOverflow MERGE  # a texel with more surfaces than maxLayers: MERGE them into
+                             #   maxLayers groups, least error first (Lokovic-Veach), or
+                             #   TRUNCATE to the nearest maxLayers
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
@@ -45,7 +48,8 @@ class IVSHADOW_API SoDeepShadowDirectionalLight : public SoDirectionalLight {
   static void initClass();
   SoDeepShadowDirectionalLight();
 
-  SoSFEnum method;  //!< SoDeepShadowLight::Method
+  SoSFEnum method;         //!< SoDeepShadowLight::Method
+  SoSFEnum layerOverflow;  //!< SoDeepShadowLight::LayerOverflow
   SoSFInt32 resolution;
   SoSFInt32 maxLayers;
   SoSFInt32 slices;

@@ -30,6 +30,9 @@
                              #   OPACITY_MAP (fixed cost: light absorbed per depth slice)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
         maxLayers 4          # layers per face, 1 .. 64
+        layerOverflow MERGE  # a texel with more surfaces than maxLayers: MERGE them into
+                             #   maxLayers groups, least error first (Lokovic-Veach), or
+                             #   TRUNCATE to the nearest maxLayers
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
@@ -101,6 +104,10 @@ class IVSHADOW_API SoDeepShadowLight : public SoPointLight {
     NONE,  //!< nearest texel
     PCF    //!< average of filterSize x filterSize texels
   };
+  enum LayerOverflow {
+    MERGE,    //!< every surface kept, neighbours merged into maxLayers groups (error bounded)
+    TRUNCATE  //!< the nearest maxLayers surfaces only (light behind them too bright)
+  };
 
   SoSFInt32 resolution;
   SoSFInt32 maxLayers;
@@ -114,6 +121,7 @@ class IVSHADOW_API SoDeepShadowLight : public SoPointLight {
   SoSFEnum filter;
   SoSFInt32 filterSize;
   SoSFEnum method;
+  SoSFEnum layerOverflow;
 
  protected:
   ~SoDeepShadowLight() override;

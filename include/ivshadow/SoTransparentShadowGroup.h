@@ -75,8 +75,9 @@ struct PeelStatistics;
   environment), the camera, the viewport and the depth drawn before it stay the same: a still
   frame only draws it again. Shapes drawn with lines, points or screen-aligned pixels have no
   triangles to trace: GL draws them after the picture, depth-tested against it, lit as Coin
-  lights them and without shadows (one warning names them). With `bounce TRUE`, `bounceLights` is the number of bounce
-  rays per shaded point (rounded up to a square). The fields of the maps (resolution, layers, filters) do not apply.
+  lights them and without shadows (one warning names them). With `bounce TRUE`, `bounceLights` is
+  the number of bounce rays per shaded point (rounded up to a square). The fields of the maps
+  (resolution, layers, filters) do not apply.
 
   `renderer AUTO` chooses per GL context: TRACER where GL is a software rasteriser (Mesa's
   llvmpipe, softpipe), whose shading costs more than the trace, RASTER on a GPU; it says which
@@ -107,6 +108,7 @@ struct PeelStatistics;
                              #   OPACITY_MAP (fixed cost: light absorbed per depth slice)
         resolution 512       # map face size in texels, 1 .. GL_MAX_TEXTURE_SIZE
         maxLayers 4          # peeled layers per face, 1 .. 64
+        layerOverflow MERGE  # the ordinary lights' maps: as SoDeepShadowLight's
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
@@ -168,6 +170,7 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   SoSFEnum precision;
   SoSFEnum filter;
   SoSFInt32 filterSize;
+  SoSFEnum layerOverflow;  //!< SoDeepShadowLight::LayerOverflow
   SoSFBool bounce;
   SoSFInt32 bounceLights;
   SoSFInt32 bounceMapSize;

@@ -44,13 +44,35 @@ TEST(DeepShadow, HalfPrecisionAndPcfKeepTheInterior) {
   expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate});
 }
 
-TEST(DeepShadow, MaxLayersKeepsOnlyTheNearestSurfaces) {
+TEST(DeepShadow, MaxLayersTruncatedKeepsOnlyTheNearestSurfaces) {
   ShadowScene scene;
   scene.filters = {kRedGlass, kGreenGlass};
-  scene.lightFields = "maxLayers 1";
+  scene.lightFields = "maxLayers 1 layerOverflow TRUNCATE";
   ShadowPicture picture{&scene, ColourModel::Saturate};
   picture.maxLayers = 1;  // documented: surfaces beyond the first maxLayers are ignored
   expectPicture(scene, picture);
+}
+
+// The default, layerOverflow MERGE: where the two filters overlap, their two surfaces share
+// the one layer, stored at the nearer one's distance with the light left after both. The
+// floor behind them gets every surface's transmittance, as with layers enough (the picture
+// counts all of them); only a point between the two (the lower filter itself, which the
+// picture does not check) gets the merge's error, which the statistics report.
+TEST(DeepShadow, SurfacesPastMaxLayersAreMergedSoTheFloorBehindThemIsExact) {
+  ShadowScene scene;
+  scene.filters = {kRedGlass, kGreenGlass};
+  scene.lightFields = "maxLayers 1";
+  SoNode* root = nullptr;
+  expectPicture(scene, ShadowPicture{&scene, ColourModel::Saturate}, &root);
+  const DeepShadowStatistics stats = collectDeepShadowStatistics(root);
+  root->unref();
+  ASSERT_EQ(stats.lights.size(), 1u);
+  EXPECT_EQ(stats.lights[0].mapBuild, "FRAGMENT_LISTS");
+  EXPECT_GT(stats.lights[0].mergedTexels, 0u);
+  // The light the lower filter's surface gets wrong: the upper one's transmittance less
+  // both's, at most 1.
+  EXPECT_GT(stats.lights[0].mergeError, 0.0f);
+  EXPECT_LE(stats.lights[0].mergeError, 1.0f);
 }
 
 // More transparent surfaces along the light's rays than the map keeps layers (five glasses,

@@ -100,13 +100,25 @@ TEST(Extremes, SixtyFourStackedFiltersInHalfAndFloat) {
   }
 }
 
-TEST(Extremes, OneLayerKeepsOnlyTheNearestOfSixtyFour) {
-  ShadowScene scene = stackOf64("resolution 128 maxLayers 1");
+TEST(Extremes, OneLayerTruncatedKeepsOnlyTheNearestOfSixtyFour) {
+  ShadowScene scene = stackOf64("resolution 128 maxLayers 1 layerOverflow TRUNCATE");
   ShadowPicture picture{&scene, ColourModel::Monochrome};
   picture.maxLayers = 1;
   const std::string gl =
       compareWithExpectation(renderIv(scene.text(), ShadowScene::kSize), picture, kTolerance);
   EXPECT_TRUE(gl.empty()) << gl;
+}
+
+// Merged (the default), the one layer holds all sixty-four: the floor behind them gets
+// 0.95^64 as with 64 layers, in FLOAT and HALF (one product, one rounding to half).
+TEST(Extremes, OneLayerMergedHoldsAllSixtyFour) {
+  for (const char* precision : {"FLOAT", "HALF"}) {
+    ShadowScene scene = stackOf64(std::string("resolution 128 maxLayers 1 precision ") + precision);
+    ShadowPicture picture{&scene, ColourModel::Monochrome};
+    const std::string gl =
+        compareWithExpectation(renderIv(scene.text(), ShadowScene::kSize), picture, kTolerance);
+    EXPECT_TRUE(gl.empty()) << precision << ": " << gl;
+  }
 }
 
 TEST(Extremes, MoreSurfacesNeverLetMoreLightThrough) {

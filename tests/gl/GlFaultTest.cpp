@@ -196,7 +196,8 @@ TEST(GlFault, MapFragmentListsThatFailArePeeledIntoTheSameShadow) {
   expectOneWarning(faulty,
                    "SoDeepShadowLight \"Lamp\": GL could not allocate the fragment lists "
                    "(GL_OUT_OF_MEMORY (forced by IVSHADOW_FAIL_GL)); its map is built by depth "
-                   "peeling instead");
+                   "peeling instead, which keeps only the nearest maxLayers surfaces of a texel "
+                   "(layerOverflow TRUNCATE)");
   const Rendered listed =
       render("listed_MAP", groupScene("DeepShadowLight", fields, "COIN_BLENDING"));
   const Rendered unshadowed = render("unshadowed", groupScene("PointLight", "", "COIN_BLENDING"));

@@ -7,6 +7,7 @@
 #include "callbacks/MapFrame.h"
 #include "scene/SceneTriangles.h"
 #include "tests/gl/GlContextTest.h"
+#include "tests/gl/MapSquares.h"
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
@@ -23,64 +24,8 @@ namespace {
 
 class MapFragmentListsGLTest : public GlContextTest {
  protected:
-  std::unique_ptr<DeepShadowPass> makePass() {
-    std::string why;
-    std::unique_ptr<DeepShadowPass> pass = DeepShadowPass::create(why);
-    EXPECT_TRUE(pass) << why;
-    return pass;
-  }
+  std::unique_ptr<DeepShadowPass> makePass() { return makeMapPass(); }
 };
-
-struct Square {
-  float x, y, half;  // centre and half size across the light
-  float z;           // height; the light looks down -z
-  float colour[4];   // diffuse colour and opacity
-};
-
-void addTriangle(SceneTriangles& scene, const float (*corners)[3], const float colour[4]) {
-  for (int i = 0; i < 3; ++i) {
-    TriangleVertex v{};
-    std::copy(corners[i], corners[i] + 3, v.position);
-    std::copy(colour, colour + 4, v.colour);
-    scene.vertices.push_back(v);
-  }
-  scene.shapes.push_back(std::uint32_t(scene.shapes.size()));
-}
-
-SceneTriangles trianglesOf(const std::vector<Square>& squares) {
-  SceneTriangles scene;
-  for (const Square& s : squares) {
-    const float a[3][3] = {{s.x - s.half, s.y - s.half, s.z},
-                           {s.x + s.half, s.y - s.half, s.z},
-                           {s.x + s.half, s.y + s.half, s.z}};
-    const float b[3][3] = {{s.x - s.half, s.y - s.half, s.z},
-                           {s.x + s.half, s.y + s.half, s.z},
-                           {s.x - s.half, s.y + s.half, s.z}};
-    addTriangle(scene, a, s.colour);
-    addTriangle(scene, b, s.colour);
-  }
-  scene.batches.push_back({-1, 0, scene.vertices.size()});
-  return scene;
-}
-
-// Light passing a surface of colour c and opacity a, SATURATE (seeds/000 eq. 5.3):
-// (1 - a) clamp(1 - a + c, 0, 1), per channel.
-float saturate(float c, float a) {
-  return (1.0f - a) * std::clamp(1.0f - a + c, 0.0f, 1.0f);
-}
-
-// The orthographic face over |x|, |y| <= 1 looking down from z = 4 to z = 0: a surface at
-// height z is stored at distance 4 - z.
-MapRequest downwards(int resolution, int layers, bool lists) {
-  MapRequest request;
-  request.frame = orthographicFrame({0.0f, 0.0f, -1.0f}, {-1.0f, -1.0f, -4.0f}, {1.0f, 1.0f, 0.0f});
-  request.resolution = resolution;
-  request.layers = layers;
-  request.coloured = true;
-  request.colourModel = ShadowColourModel::Saturate;
-  request.fragmentLists = lists;
-  return request;
-}
 
 TEST_F(MapFragmentListsGLTest, AStackOfSquaresGivesItsLayersInOneDraw) {
   auto pass = makePass();

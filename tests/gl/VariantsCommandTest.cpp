@@ -97,12 +97,13 @@ TEST(VariantsCommand, ARerunKeepsCurrentVariantsAndRendersStaleOnes) {
   const test::ProcessResult changed = test::run(stale);
   EXPECT_EQ(changed.exitCode, 2) << changed.err;
   EXPECT_EQ(changed.out.find("kept"), std::string::npos) << changed.out;
-  EXPECT_EQ(test::run({test::ivshadowExe(), "variants-merge", "--status", dir}).out,
-            dir + ": done 3, failed 1, pending 0 of 4 variants\n  " + variants +
-                ":7: error: variant typo: --set 'Lamp.colour=1 0 0': error: node 'Lamp' "
-                "(DeepShadowLight) has no field 'colour' (its fields: bias, color, colorModel, "
-                "farRadius, filter, filterSize, intensity, location, maxLayers, method, "
-                "nearRadius, on, precision, resolution, shadowColor, slices)\n");
+  EXPECT_EQ(
+      test::run({test::ivshadowExe(), "variants-merge", "--status", dir}).out,
+      dir + ": done 3, failed 1, pending 0 of 4 variants\n  " + variants +
+          ":7: error: variant typo: --set 'Lamp.colour=1 0 0': error: node 'Lamp' "
+          "(DeepShadowLight) has no field 'colour' (its fields: bias, color, colorModel, "
+          "farRadius, filter, filterSize, intensity, layerOverflow, location, maxLayers, method, "
+          "nearRadius, on, precision, resolution, shadowColor, slices)\n");
 }
 
 // --shard and --only name what is wrong with them before anything is rendered.

@@ -97,7 +97,8 @@ TEST(ViewerPanel, LightFieldsSetThroughThePanelRenderAsHeadlessWithTheSameFields
       runPanel("coloured_shadows.iv",
                {"Lamp.method=MAP", "Lamp.resolution=256", "Lamp.maxLayers=2",
                 "Lamp.colorModel=POWER", "Lamp.shadowColor=MONOCHROME", "Lamp.precision=HALF",
-                "Lamp.filter=PCF", "Lamp.filterSize=5", "Lamp.bias=3"});
+                "Lamp.filter=PCF", "Lamp.filterSize=5", "Lamp.bias=3",
+                "Lamp.layerOverflow=TRUNCATE"});
   test::expectMostlyEqual(run.viewer, run.headless, 2, kSameShare, "viewer against headless");
   EXPECT_LT(test::shareWithin(run.viewer, run.headlessUnchanged, 2), kChangedShare)
       << "the settings made no visible difference";
