@@ -29,7 +29,9 @@ namespace {
 
 constexpr int kResolution = 512;
 
-enum class Build { PlainCube = 0, Peeled = 1, FragmentLists = 2 };
+// The lists truncate past maxLayers, as the peel does; MergedLists merge (layerOverflow MERGE,
+// the lights' default), which only texels with more surfaces than layers pay for.
+enum class Build { PlainCube = 0, Peeled = 1, FragmentLists = 2, MergedLists = 3 };
 
 double finishedMs() {
   glFinish();
@@ -116,7 +118,8 @@ void MapBuildMethods(benchmark::State& state) {
   request.coloured = true;
   request.colourModel = ivshadow::ShadowColourModel::Saturate;
   const auto build = Build(state.range(2));
-  request.fragmentLists = build == Build::FragmentLists;
+  request.fragmentLists = build == Build::FragmentLists || build == Build::MergedLists;
+  request.mergeOverflow = build == Build::MergedLists;
 
   std::unique_ptr<ivshadow::DeepShadowPass> pass;
   std::unique_ptr<PlainCubePass> plain;
@@ -155,18 +158,20 @@ void MapBuildMethods(benchmark::State& state) {
     state.counters["peak_MB"] = double(pass->mapPeakBytes(0)) / 1048576.0;
     // The lists' sorts of the last build: 1 where the layout of the one before held.
     if (built.fragmentLists) state.counters["sorts"] = built.listSorts;
+    if (build == Build::MergedLists) state.counters["merged_texels"] = double(built.mergedTexels);
   } else {
     state.counters["draws"] = 6;
   }
-  state.SetLabel(build == Build::PlainCube ? "plain cube pass"
-                 : build == Build::Peeled  ? "peeled"
-                                           : "fragment lists");
+  state.SetLabel(build == Build::PlainCube       ? "plain cube pass"
+                 : build == Build::Peeled        ? "peeled"
+                 : build == Build::FragmentLists ? "fragment lists"
+                                                 : "fragment lists, merged");
   pass.reset();
   plain.reset();
 }
 
 BENCHMARK(MapBuildMethods)
-    ->ArgsProduct({{10000, 100000}, {4, 8}, {0, 1, 2}})
+    ->ArgsProduct({{10000, 100000}, {1, 4, 8}, {0, 1, 2, 3}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(5);

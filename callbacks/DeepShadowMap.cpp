@@ -193,7 +193,6 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
         countListLayers(request, found, face, result);
         result.passes[std::size_t(face)] = lists->passes();
         result.mergedTexels += found.mergedTexels;
-        result.mergeError = std::max(result.mergeError, found.mergeError);
       }
       const bool held = guessed && result.layersUsed == guessLayout_.layers;
       clearGlErrors();
@@ -217,6 +216,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
         layout.visibilityArray = visibility_.get();
         lists->store(request, layout);
       }
+      if (result.mergedTexels > 0) result.mergeError = lists->mergeError();
       peakBytes_ = bytes_ + lists->bytes();
       return checkedForMemory(result);
     }

@@ -23,6 +23,9 @@ constexpr GLuint kNoFragment = 0xffffffffu;
 // so that a face without surfaces is found without waiting after each draw.
 constexpr GLintptr kCountsOffset = 6 * kMapFaceFlags * sizeof(GLuint);
 constexpr GLsizeiptr kFlagsBytes = kCountsOffset + 6 * sizeof(GLuint);
+// The merge queue's header (dsm_list_common.glsl): the merge's indirect dispatch (groups, 1,
+// 1) and the texels queued.
+constexpr std::uint64_t kMergeHeaderBytes = 16;
 
 // The sort's size: maxLayers rounded up to a power of two, so that a light whose maxLayers
 // changes links a new program only when it crosses one (7 sizes for 1 .. kMaxMapLayers).
@@ -83,7 +86,8 @@ MapFragmentLists::~MapFragmentLists() = default;
 
 std::uint64_t MapFragmentLists::bytes() const {
   return (capacity_ > 0 ? kHeaderBytes + capacity_ * std::uint64_t(kMapFragmentBytes) : 0u) +
-         std::uint64_t(size_) * std::uint64_t(size_) * std::uint64_t(faces_) * 4u;
+         std::uint64_t(size_) * std::uint64_t(size_) * std::uint64_t(faces_) * 4u +
+         (mergeQueueTexels_ > 0 ? kMergeHeaderBytes + mergeQueueTexels_ * 4u : 0u);
 }
 
 const GlProgram* MapFragmentLists::resolveProgram(const MapRequest& request, bool storing,
@@ -96,17 +100,45 @@ const GlProgram* MapFragmentLists::resolveProgram(const MapRequest& request, boo
                    "#define IVSHADOW_MAP_LIST_STORE\n#define "
                    "IVSHADOW_MAP_VISIBILITY_FORMAT ") +
                visibilityQualifier(request) + "\n";
-  GlProgram& program = resolve_[defines];
-  std::string& error = resolveError_[defines];
+  return computeProgram(defines, glsl::kDsmListResolveComp, "resolve", whyNot);
+}
+
+const GlProgram* MapFragmentLists::mergeProgram(const MapRequest& request, std::string& whyNot) {
+  const std::string defines =
+      "#define IVSHADOW_MAP_LIST_LAYERS " + std::to_string(sortSize(request.layers)) +
+      "\n#define IVSHADOW_MAP_VISIBILITY_FORMAT " + visibilityQualifier(request) + "\n";
+  return computeProgram(defines, glsl::kDsmListMergeComp, "merge", whyNot);
+}
+
+const GlProgram* MapFragmentLists::computeProgram(const std::string& defines, const char* source,
+                                                  const char* what, std::string& whyNot) {
+  const std::string key = std::string(what) + "\n" + defines;
+  GlProgram& program = compute_[key];
+  std::string& error = computeError_[key];
   if (!program && error.empty()) {
     std::string why;
     program = GlProgram::linkCompute(
-        composeShader(std::string(glsl::kDsmListCommonGlsl) + glsl::kDsmListResolveComp, defines),
-        why);
-    if (!program) error = "the fragment lists' resolve program failed: " + why;
+        composeShader(std::string(glsl::kDsmListCommonGlsl) + source, defines), why);
+    if (!program) error = std::string("the fragment lists' ") + what + " program failed: " + why;
   }
   whyNot = error;
   return program ? &program : nullptr;
+}
+
+std::string MapFragmentLists::allocateMergeQueue(std::uint64_t texels) {
+  if (texels <= mergeQueueTexels_) return {};
+  mergeQueue_.reset();
+  mergeQueueTexels_ = 0;
+  clearGlErrors();
+  GlBuffer queue = createBuffer();
+  glNamedBufferData(queue.get(), GLsizeiptr(kMergeHeaderBytes + texels * 4u), nullptr,
+                    GL_DYNAMIC_COPY);
+  const std::string failure = glAllocationError(GlAllocation::FragmentList);
+  if (!failure.empty())
+    return "GL could not allocate the queue of texels to merge (" + failure + ")";
+  mergeQueue_ = std::move(queue);
+  mergeQueueTexels_ = texels;
+  return {};
 }
 
 std::string MapFragmentLists::allocateHeads(int size, int faces) {
@@ -198,6 +230,7 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
   if (counting == nullptr) return failure;
   const GlProgram* storing = resolveProgram(request, true, failure);
   if (storing == nullptr) return failure;
+  if (request.mergeOverflow && mergeProgram(request, failure) == nullptr) return failure;
   failure = allocateHeads(request.resolution, request.frame.faceCount);
   if (!failure.empty()) return failure;
   const std::uint64_t texels = std::uint64_t(request.resolution) *
@@ -215,6 +248,10 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
   if (capacity_ == 0) {
     failure = allocateList(texels / 2u + 1u, byteLimit);
     if (!failure.empty()) failure = allocateList(texels / 8u + 1u, byteLimit);
+    if (!failure.empty()) return failure;
+  }
+  if (request.mergeOverflow) {
+    failure = allocateMergeQueue(texels);
     if (!failure.empty()) return failure;
   }
   GLuint counts[6] = {};
@@ -247,7 +284,6 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
     out.heldLayers = {f[0], f[1]};
     out.passingLayers = {f[2], f[3]};
     out.closingLayer = f[4] != 0u;
-    std::memcpy(&out.mergeError, &f[5], sizeof(float));
     out.mergedTexels = f[6];
   }
   return {};
@@ -255,6 +291,13 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
 
 void MapFragmentLists::resolveInto(const MapRequest& request, const GlProgram& program,
                                    const MapListLayout& layout, const std::array<bool, 6>& faces) {
+  const bool merging = request.mergeOverflow && layout.depthArray != 0;
+  if (merging) {
+    // No texel queued; the merge's dispatch (groups, 1, 1) of none.
+    const GLuint header[4] = {0u, 1u, 1u, 0u};
+    glNamedBufferSubData(mergeQueue_.get(), 0, sizeof(header), header);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kMapMergeQueueBinding), mergeQueue_.get());
+  }
   glUseProgram(program.name());
   program.setInt("uLayers", request.layers);
   program.setInt("uSize", request.resolution);
@@ -276,10 +319,39 @@ void MapFragmentLists::resolveInto(const MapRequest& request, const GlProgram& p
     }
     resolve(request, program, face);
   }
-  // The camera pass samples what the resolve wrote, the build reads the flags, and a second
-  // store (the guessed layout did not hold) writes the same texels again.
+  // The camera pass samples what the resolve wrote, the build reads the flags, the merge
+  // writes over the texels it queued, and a second store (the guessed layout did not hold)
+  // writes the same texels again.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                  GL_COMMAND_BARRIER_BIT);
+  if (merging) merge(request, layout);
+}
+
+void MapFragmentLists::merge(const MapRequest& request, const MapListLayout& layout) {
+  std::string unused;
+  const GlProgram& program = *mergeProgram(request, unused);
+  glUseProgram(program.name());
+  program.setInt("uLayers", request.layers);
+  glUniform1iv(program.location("uFaceFirst"), 6, layout.firstLayer.data());
+  // As many groups as the resolve counted into the queue's header.
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, mergeQueue_.get());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+float MapFragmentLists::mergeError() const {
+  GLuint flags[6 * kMapFaceFlags] = {};
+  glGetNamedBufferSubData(flags_.get(), 0, kCountsOffset, flags);
+  float largest = 0.0f;
+  for (int face = 0; face < faces_; ++face) {
+    float error = 0.0f;
+    std::memcpy(&error, &flags[face * kMapFaceFlags + 5], sizeof(float));
+    largest = std::max(largest, error);
+  }
+  return largest;
 }
 
 void MapFragmentLists::store(const MapRequest& request, const MapListLayout& layout) {

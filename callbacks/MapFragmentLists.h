@@ -21,9 +21,8 @@ struct MapListFace {
   std::array<std::uint32_t, 2> heldLayers{};
   std::array<std::uint32_t, 2> passingLayers{};
   bool closingLayer = false;
-  // With MapRequest::mergeOverflow: texels merged, and the largest error a merge left.
+  // With MapRequest::mergeOverflow: the texels whose surfaces are merged.
   std::uint32_t mergedTexels = 0;
-  float mergeError = 0.0f;
 };
 
 // Where a map's layers go: face f's `layers[f]` layers from array layer firstLayer[f] on, of
@@ -62,6 +61,9 @@ class MapFragmentLists {
                      std::array<MapListFace, 6>& faces);
   // After a gather(): writes each face's layers in `layout`, every texel of them.
   void store(const MapRequest& request, const MapListLayout& layout);
+  // With MapRequest::mergeOverflow, after the layers were stored: the largest error in
+  // visibility (0 .. 1, any channel) the merge left in a texel, over all faces.
+  float mergeError() const;
   // Draws of the casters per face in the last gather: 1, or 2 when the storage grew.
   int passes() const { return passes_; }
   // Surfaces the last gather stored, all faces.
@@ -74,8 +76,17 @@ class MapFragmentLists {
   // The resolve program for `request`: storing or only counting. Null with why when it does
   // not link.
   const GlProgram* resolveProgram(const MapRequest& request, bool storing, std::string& whyNot);
+  // A compute program of the lists (after dsm_list_common.glsl) with `defines`, linked once.
+  const GlProgram* computeProgram(const std::string& defines, const char* source, const char* what,
+                                  std::string& whyNot);
   std::string allocateHeads(int size, int faces);
   std::string allocateList(std::uint64_t fragments, std::uint64_t byteLimit);
+  // The queue of texels to merge, one word for every texel of the faces.
+  std::string allocateMergeQueue(std::uint64_t texels);
+  // The merge program (dsm_list_merge.comp) for `request`; null with why when it does not link.
+  const GlProgram* mergeProgram(const MapRequest& request, std::string& whyNot);
+  // Merges the texels the storing resolve just queued, into `layout`.
+  void merge(const MapRequest& request, const MapListLayout& layout);
   void fill(const MapRequest& request, const CasterBuffers& casters, int textureUnit);
   void resolve(const MapRequest& request, const GlProgram& program, int face);
   // Runs `program` over the lists of the faces marked in `faces`, storing into `layout` where
@@ -84,12 +95,14 @@ class MapFragmentLists {
                    const std::array<bool, 6>& faces);
 
   GlProgram fill_;
-  // Resolve programs by their defines (the sort's size, storing or not, the visibility
-  // format), linked when a map first needs one; with why one did not.
-  std::map<std::string, GlProgram> resolve_;
-  std::map<std::string, std::string> resolveError_;
+  // Resolve and merge programs by their defines (the sort's size, storing or not, merging or
+  // not, the visibility format), linked when a map first needs one; with why one did not.
+  std::map<std::string, GlProgram> compute_;
+  std::map<std::string, std::string> computeError_;
   GlBuffer list_;
   GlBuffer flags_;
+  GlBuffer mergeQueue_;
+  std::uint64_t mergeQueueTexels_ = 0;
   GlTexture heads_;            // one layer per face
   GlFramebuffer framebuffer_;  // no attachments: the fill writes only the buffer
   int size_ = 0;

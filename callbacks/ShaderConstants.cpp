@@ -38,6 +38,8 @@ std::string shaderConstantDefines() {
        << "#define IVSHADOW_MAP_FLAGS_BINDING " << kMapFlagsBinding << "\n"
        << "#define IVSHADOW_PEEL_PROGRESS_BINDING " << kPeelProgressBinding << "\n"
        << "#define IVSHADOW_FRAGMENT_LIST_BINDING " << kFragmentListBinding << "\n"
+       << "#define IVSHADOW_MAP_MERGE_QUEUE_BINDING " << kMapMergeQueueBinding << "\n"
+       << "#define IVSHADOW_MAP_MERGE_GROUP_SIZE " << kMapMergeGroupSize << "\n"
        << "#define IVSHADOW_FRAGMENT_HEADS_UNIT " << kFragmentHeadsUnit << "\n"
        << "#define IVSHADOW_FRAGMENT_COUNTS_UNIT " << kFragmentCountsUnit << "\n"
        << "#define IVSHADOW_MAX_FRAGMENTS_PER_PIXEL " << kMaxFragmentsPerPixel << "\n"

@@ -51,12 +51,14 @@ enum class MapProjection : int { Cube = 0, Perspective = 1, Orthographic = 2 };
 inline constexpr float kMaxSpotFaceHalfAngle = 1.04719755f;  // pi / 3
 
 // Shader storage binding points: the map build's "any / transparent fragment" flags, the
-// peel passes' "deeper layers left" flag and the fragment lists (FragmentListPass); the
-// storage bindings the passes use, 0 .. kStorageBindings - 1 (GlStateScope restores them).
+// peel passes' "deeper layers left" flag, the fragment lists (FragmentListPass,
+// MapFragmentLists) and the texels a map's lists merge; the storage bindings the passes use,
+// 0 .. kStorageBindings - 1 (GlStateScope restores them).
 inline constexpr int kMapFlagsBinding = 0;
 inline constexpr int kPeelProgressBinding = 1;
 inline constexpr int kFragmentListBinding = 2;
-inline constexpr int kStorageBindings = 3;
+inline constexpr int kMapMergeQueueBinding = 3;
+inline constexpr int kStorageBindings = 4;
 // Image units of the fragment lists: each pixel's first fragment and its count, and the
 // layers a deep shadow map's lists are resolved into (MapFragmentLists), its distances and
 // visibilities (GlStateScope restores units 0 .. kImageUnits - 1).
@@ -82,6 +84,8 @@ inline constexpr int kMapFragmentBytes = 32;
 inline constexpr int kMapResolveGroupSize = 8;
 // Words per face the resolve of a map's lists reports in (dsm_list_resolve.comp).
 inline constexpr int kMapFaceFlags = 7;
+// Texels a workgroup of the merge of a map's lists takes (dsm_list_merge.comp), one each.
+inline constexpr int kMapMergeGroupSize = 64;
 
 // Layers of visible surfaces a screen-space shadow (RAYS, VOLUMES) is computed for: the
 // nearest opaque one and up to four transparent ones in front of it. The shadow volumes

@@ -14,11 +14,10 @@
 // IVSHADOW_MAP_LIST_LAYERS (a power of two, at least uLayers) sizes the sort;
 // IVSHADOW_MAP_VISIBILITY_FORMAT is the visibility array's image format.
 //
-// With IVSHADOW_MAP_LIST_MERGE (SoDeepShadowLight::layerOverflow MERGE), a texel whose
-// surfaces that let light through, in front of its nearest opaque one, are more than uLayers
-// keeps them all, merged into uLayers groups (after Lokovic and Veach 2000: the stored depths
-// a subset of the surfaces', the error in visibility bounded and reported) instead of the
-// nearest uLayers. Texels with fewer are stored as without it, so the layout is the same.
+// With IVSHADOW_MAP_LIST_MERGE (SoDeepShadowLight::layerOverflow MERGE) it counts the texels
+// whose surfaces that let light through, in front of the nearest opaque one, are more than
+// uLayers, and, storing, queues them for dsm_list_merge.comp, which stores them merged over
+// the nearest uLayers written here. The layout is the same either way.
 layout(local_size_x = IVSHADOW_MAP_RESOLVE_GROUP_SIZE,
        local_size_y = IVSHADOW_MAP_RESOLVE_GROUP_SIZE) in;
 
@@ -37,144 +36,13 @@ uniform int uFace;
 
 // Per face, IVSHADOW_MAP_FACE_FLAGS words: bit k of words 0 and 1, layer k holds a surface
 // in some texel (k < 64); of words 2 and 3, one that lets light through; word 4, some texel
-// has a closing layer; word 5, the largest error a merge left in a texel's visibility (the
-// bits of a float >= 0, which order as the floats do); word 6, the texels merged.
+// has a closing layer; word 5, the largest error a merge left in a texel's visibility
+// (dsm_list_merge.comp); word 6, the texels to merge.
 layout(std430, binding = IVSHADOW_MAP_FLAGS_BINDING) buffer FaceFlags {
   uint faceFlags[];
 };
 
 const float kNoSurface = 3.40282347e+38;  // as the build clears empty layers
-
-// The peel's order: by distance, and of surfaces at one distance the lower numbered first.
-bool nearer(float depth, uint triangle, float otherDepth, uint otherTriangle) {
-  return depth < otherDepth || (depth == otherDepth && triangle < otherTriangle);
-}
-
-#ifdef IVSHADOW_MAP_LIST_MERGE
-// A merging texel's surfaces that let light through in front of its closing one: the nearest
-// kMergeSurfaces sorted (their distance, triangle and transmittance), and the rest as one
-// item that follows them, stored at the nearest one's distance (passing all of them; its own
-// error is the nearest one's transmittance less all of theirs). Four times the layers, so
-// that most texels keep every surface apart, up to 64 (the sort is per texel); always more
-// than the layers.
-const int kMergeSurfaces = max(min(4 * IVSHADOW_MAP_LIST_LAYERS, 64), IVSHADOW_MAP_LIST_LAYERS + 1);
-float itemDepth[kMergeSurfaces + 1];
-uint itemTriangle[kMergeSurfaces + 1];
-vec3 itemPasses[kMergeSurfaces + 1];
-vec3 restFirst = vec3(1.0);  // the rest's nearest surface's transmittance
-bool rest = false;
-int items = 0;
-// The groups the items are stored as, nearest first: a group's first item's distance and
-// the light left after the group.
-float groupDepth[IVSHADOW_MAP_LIST_LAYERS];
-vec3 groupAfter[IVSHADOW_MAP_LIST_LAYERS];
-
-float largest(vec3 v) { return max(v.r, max(v.g, v.b)); }
-
-// The light item i passes in front (its first surface's transmittance).
-vec3 firstPasses(int i) { return i == kMergeSurfaces ? restFirst : itemPasses[i]; }
-
-// Gathers the items: every surface that lets light through in front of the closing one (all
-// of them where there is none), by insertion into the nearest kMergeSurfaces, the surfaces
-// pushed out going into the rest.
-void gatherItems(uint head, bool closing, float closingDepth, uint closingTriangle) {
-  float restDepth = 0.0;
-  uint restTriangle = 0u;
-  vec3 restPasses = vec3(1.0);
-  uint steps = 0u;
-  for (uint i = head; i != kNoFragment && steps < capacity; i = fragments[i].next, ++steps) {
-    if (fragments[i].transmittance.a != 0.0) continue;
-    float depth = fragments[i].depth;
-    uint triangle = fragments[i].triangle;
-    if (closing && !nearer(depth, triangle, closingDepth, closingTriangle)) continue;
-    vec3 passes = fragments[i].transmittance.rgb;
-    if (items == kMergeSurfaces) {
-      // Full: this surface, or the farthest kept one, goes into the rest.
-      int last = kMergeSurfaces - 1;
-      bool keep = nearer(depth, triangle, itemDepth[last], itemTriangle[last]);
-      float outDepth = keep ? itemDepth[last] : depth;
-      uint outTriangle = keep ? itemTriangle[last] : triangle;
-      vec3 outPasses = keep ? itemPasses[last] : passes;
-      restPasses *= outPasses;
-      if (!rest || nearer(outDepth, outTriangle, restDepth, restTriangle)) {
-        restDepth = outDepth;
-        restTriangle = outTriangle;
-        restFirst = outPasses;
-      }
-      rest = true;
-      if (!keep) continue;
-      --items;
-    }
-    int j = items++;
-    while (j > 0 && nearer(depth, triangle, itemDepth[j - 1], itemTriangle[j - 1])) {
-      itemDepth[j] = itemDepth[j - 1];
-      itemTriangle[j] = itemTriangle[j - 1];
-      itemPasses[j] = itemPasses[j - 1];
-      --j;
-    }
-    itemDepth[j] = depth;
-    itemTriangle[j] = triangle;
-    itemPasses[j] = passes;
-  }
-  if (rest) {
-    itemDepth[kMergeSurfaces] = restDepth;
-    itemTriangle[kMergeSurfaces] = restTriangle;
-    itemPasses[kMergeSurfaces] = restPasses;
-  }
-}
-
-// The item at position i of the merge (the rest, when there is one, after the sorted ones).
-int itemAt(int i) { return i < items ? i : kMergeSurfaces; }
-
-// Groups the n items in order into uLayers groups, each as long as its error stays within
-// `bound` but leaving an item for every group after it. A group from item i to j, with the
-// light `before` reaching it, errs by before x (what item i passes - what all pass): within
-// it the true light lies between the light after item i and the light after j, and the map
-// stores the latter. Returns the largest error of a group, or, where the groups run out
-// before the items (the bound is too low), a value above 1. With `keep`, sets the groups.
-float groupItems(int n, float bound, bool keep) {
-  vec3 before = vec3(1.0);
-  float worst = 0.0;
-  int i = 0;
-  for (int g = 0; g < uLayers; ++g) {
-    if (i == n) return 2.0;  // cannot happen with n > uLayers; guards the loop
-    vec3 first = firstPasses(itemAt(i));
-    vec3 all = itemPasses[itemAt(i)];
-    int j = i;
-    while (j + 1 <= n - (uLayers - g) &&
-           largest(before * (first - all * itemPasses[itemAt(j + 1)])) <= bound) {
-      ++j;
-      all *= itemPasses[itemAt(j)];
-    }
-    if (g == uLayers - 1 && j != n - 1) return 2.0;
-    worst = max(worst, largest(before * (first - all)));
-    if (keep) {
-      groupDepth[g] = itemDepth[itemAt(i)];
-      groupAfter[g] = before * all;
-    }
-    before *= all;
-    i = j + 1;
-  }
-  return worst;
-}
-
-// Lokovic and Veach bound the error and find the fewest vertices; here the layers are fixed,
-// so the least bound that uLayers groups meet is searched for (by halving: a group's error
-// only grows as it takes more items, so grouping greedily within a bound is the fewest groups
-// for it), and the items grouped within it. Returns the error left.
-float mergeItems() {
-  int n = items + (rest ? 1 : 0);
-  float low = 0.0, high = 1.0;
-  for (int step = 0; step < 24; ++step) {
-    float middle = 0.5 * (low + high);
-    if (groupItems(n, middle, false) <= 1.0)
-      high = middle;
-    else
-      low = middle;
-  }
-  return groupItems(n, high, true);
-}
-#endif
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
@@ -239,11 +107,12 @@ void main() {
   bool merging = passingLeftOut && !opaqueKept &&
                  (!closing || nearer(passingDepth, passingTriangle, closingDepth, closingTriangle));
   if (merging) {
-    gatherItems(head, closing, closingDepth, closingTriangle);
-    float error = mergeItems();
-    int flagWords = uFace * IVSHADOW_MAP_FACE_FLAGS;
-    atomicMax(faceFlags[flagWords + 5], floatBitsToUint(error));
-    atomicAdd(faceFlags[flagWords + 6], 1u);
+    atomicAdd(faceFlags[uFace * IVSHADOW_MAP_FACE_FLAGS + 6], 1u);
+#ifdef IVSHADOW_MAP_LIST_STORE
+    uint queued = atomicAdd(mergeCount, 1u);
+    atomicMax(mergeGroups, min(queued / uint(IVSHADOW_MAP_MERGE_GROUP_SIZE) + 1u, kMaxMergeGroups));
+    mergeTexels[queued] = packMergeTexel(uFace, texel);
+#endif
   }
 #endif
 #ifdef IVSHADOW_MAP_LIST_STORE
@@ -251,12 +120,6 @@ void main() {
   for (int k = 0; k < uKept; ++k) {
     float depth = kNoSurface;
     vec4 stored = vec4(1.0);
-#ifdef IVSHADOW_MAP_LIST_MERGE
-    if (merging && k < count) {
-      depth = groupDepth[k];
-      stored = vec4(groupAfter[k], 1.0);
-    } else
-#endif
     if (k < count) {
       visibility *= fragments[indices[k]].transmittance.rgb;
       depth = depths[k];
