@@ -82,6 +82,7 @@ bool FragmentListPass::allocateList(std::uint64_t overflow) {
   GlBuffer list = createBuffer();
   glNamedBufferData(list.get(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
   if (!glAllocationError(GlAllocation::FragmentList).empty()) return false;
+  if (fixedLayers_ > 0 && !glAllocationError(GlAllocation::FragmentSlots).empty()) return false;
   list_ = std::move(list);
   overflowCapacity_ = overflow;
   return true;

@@ -46,6 +46,9 @@ class FragmentListPass {
   void resolve();
   // Fragments the last pass stored, after finish() said Stored.
   std::uint64_t fragments() const { return stored_; }
+  // The fragments a pixel keeps in slots of its own (kFixedFragmentsPerPixel, or fewer where
+  // GL could not give the storage), after a begin().
+  int slots() const { return fixedLayers_; }
   // Why the view cannot be listed, after begin() returned false or finish() TooLarge.
   std::string tooLargeReason() const;
 

@@ -14,6 +14,7 @@ struct ForcedFailures {
   bool buffer = false;
   bool framebuffer = false;
   bool fragmentList = false;
+  bool fragmentSlots = false;
 };
 
 // IVSHADOW_FAIL_GL, parsed once (a function-local static: safe when two contexts render on
@@ -35,10 +36,12 @@ const ForcedFailures& forced() {
         made.framebuffer = true;
       else if (word == "list")
         made.fragmentList = true;
+      else if (word == "slots")
+        made.fragmentSlots = true;
       else if (!word.empty())
         std::fprintf(stderr,
                      "ivshadow: warning: IVSHADOW_FAIL_GL: '%s' is none of texture, buffer, "
-                     "framebuffer, list; ignored\n",
+                     "framebuffer, list, slots; ignored\n",
                      word.c_str());
     }
     return made;
@@ -57,6 +60,8 @@ bool isForced(GlAllocation kind) {
       return failures.framebuffer;
     case GlAllocation::FragmentList:
       return failures.fragmentList;
+    case GlAllocation::FragmentSlots:
+      return failures.fragmentSlots;
   }
   return false;
 }

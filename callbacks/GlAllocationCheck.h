@@ -6,7 +6,9 @@ namespace ivshadow {
 
 // The kinds of GL object the passes allocate and check: a fragment list's storage is a
 // buffer, told apart so that tests can fail it alone (the lists then peel instead).
-enum class GlAllocation { Texture, Buffer, Framebuffer, FragmentList };
+// FragmentSlots: the camera's fragment lists with slots of their own in each pixel (a failure
+// there makes them try fewer, down to none, before they are counted as FragmentList's).
+enum class GlAllocation { Texture, Buffer, Framebuffer, FragmentList, FragmentSlots };
 
 // Takes GL's pending errors off: an error raised before an allocation is not the
 // allocation's, and would otherwise be taken for its failure.
@@ -14,9 +16,9 @@ void clearGlErrors();
 
 // After allocating objects of `kind` since clearGlErrors(): empty when GL raised no error;
 // else the error by name ("GL_OUT_OF_MEMORY"). Takes GL's errors off.
-// IVSHADOW_FAIL_GL, a comma-separated list of texture, buffer, framebuffer and list read once per
-// process, makes the kinds it names fail here as if GL had run out of memory: the one place
-// tests force the failures the passes must survive (docs/RELIABILITY.md).
+// IVSHADOW_FAIL_GL, a comma-separated list of texture, buffer, framebuffer, list and slots read
+// once per process, makes the kinds it names fail here as if GL had run out of memory: the one
+// place tests force the failures the passes must survive (docs/RELIABILITY.md).
 std::string glAllocationError(GlAllocation kind);
 
 // Empty when framebuffer object `framebuffer` is complete (glCheckNamedFramebufferStatus);

@@ -124,6 +124,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["peel_passes"] = peeling.passes;
   stats["list_passes"] = peeling.listPasses;
   stats["list_fragments"] = peeling.listFragments;
+  stats["list_slots"] = peeling.listSlots;
   return stats;
 }
 

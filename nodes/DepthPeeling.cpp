@@ -102,6 +102,7 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
   if (outcome == FragmentListPass::Outcome::Stored) {
     lists->resolve();
     statistics.listFragments = (long long)lists->fragments();
+    statistics.listSlots = lists->slots();
     statistics.passes = passes;
     return true;
   }
@@ -166,6 +167,7 @@ std::string peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading&
   int passes = 0;
   statistics.listPasses = 0;
   statistics.listFragments = 0;
+  statistics.listSlots = 0;
   const bool listed = (transparentSeen || !options.earlyTermination) && options.fragmentLists &&
                       drawFragmentLists(action, pass, shading, options, draw, statistics);
   if (listed) {

@@ -4,6 +4,8 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 
+#include <algorithm>
+
 namespace ivshadow {
 
 namespace {
@@ -15,6 +17,7 @@ void add(PeelStatistics& total, const PeelStatistics& one) {
   total.frames += one.frames;
   total.listPasses += one.listPasses;
   total.listFragments += one.listFragments;
+  total.listSlots = std::max(total.listSlots, one.listSlots);
 }
 
 }  // namespace

@@ -17,6 +17,9 @@ struct PeelStatistics {
   // grew), and the transparent fragments they stored.
   int listPasses = 0;
   long long listFragments = 0;
+  // The fragments each pixel keeps in slots of its own before the shared overflow (4, fewer,
+  // down to 0, where GL could not give the storage for more); summed, the most of any node.
+  int listSlots = 0;
 };
 
 // The last frame of every SoPeelingSeparator and SoTransparentShadowGroup under `root`,
