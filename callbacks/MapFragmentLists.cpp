@@ -251,6 +251,10 @@ std::string MapFragmentLists::gather(const MapRequest& request, const CasterBuff
     if (!failure.empty()) return failure;
   }
   if (request.mergeOverflow) {
+    // The queue names a texel in 14 bits a side (dsm_list_common.glsl).
+    if (request.resolution > kMaxMergeResolution)
+      return "a map of more than " + std::to_string(kMaxMergeResolution) +
+             " texels a side cannot merge its surfaces";
     failure = allocateMergeQueue(texels);
     if (!failure.empty()) return failure;
   }
@@ -343,6 +347,8 @@ void MapFragmentLists::merge(const MapRequest& request, const MapListLayout& lay
 }
 
 float MapFragmentLists::mergeError() const {
+  // The merge's atomics, read back.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   GLuint flags[6 * kMapFaceFlags] = {};
   glGetNamedBufferSubData(flags_.get(), 0, kCountsOffset, flags);
   float largest = 0.0f;

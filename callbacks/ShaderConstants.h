@@ -84,8 +84,11 @@ inline constexpr int kMapFragmentBytes = 32;
 inline constexpr int kMapResolveGroupSize = 8;
 // Words per face the resolve of a map's lists reports in (dsm_list_resolve.comp).
 inline constexpr int kMapFaceFlags = 7;
-// Texels a workgroup of the merge of a map's lists takes (dsm_list_merge.comp), one each.
+// Texels a workgroup of the merge of a map's lists takes (dsm_list_merge.comp), one each; the
+// largest map that merges (the queue names a texel in 14 bits a side; the map is peeled,
+// truncated, above).
 inline constexpr int kMapMergeGroupSize = 64;
+inline constexpr int kMaxMergeResolution = 16384;
 
 // Layers of visible surfaces a screen-space shadow (RAYS, VOLUMES) is computed for: the
 // nearest opaque one and up to four transparent ones in front of it. The shadow volumes

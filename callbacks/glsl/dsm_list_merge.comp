@@ -26,9 +26,9 @@ layout(std430, binding = IVSHADOW_MAP_FLAGS_BINDING) buffer FaceFlags {
 // A merging texel's surfaces that let light through in front of its closing one: the nearest
 // kMergeSurfaces sorted (their distance, triangle and transmittance), and the rest as one
 // item that follows them, stored at the nearest one's distance (passing all of them; its own
-// error is the nearest one's transmittance less all of theirs). Four times the layers, so
-// that most texels keep every surface apart, up to 64 (the sort is per texel); always more
-// than the layers.
+// error is the nearest one's transmittance less all of theirs). Four times the sort's size
+// (maxLayers rounded up to a power of two), so that most texels keep every surface apart, up
+// to 64 (the sort is per texel); always more than the layers.
 const int kMergeSurfaces = max(min(4 * IVSHADOW_MAP_LIST_LAYERS, 64), IVSHADOW_MAP_LIST_LAYERS + 1);
 float itemDepth[kMergeSurfaces + 1];
 uint itemTriangle[kMergeSurfaces + 1];
@@ -98,12 +98,22 @@ void gatherItems(uint head, bool closing, float closingDepth, uint closingTriang
 // The item at position i of the merge (the rest, when there is one, after the sorted ones).
 int itemAt(int i) { return i < items ? i : kMergeSurfaces; }
 
+// The error of a group that the light `before` reaches, whose surfaces at its first distance
+// pass `first` and all of which pass `all`. `precise`: the bisection and the grouping it
+// settles on must compute the same value, or a bound found to hold could fail.
+float groupError(vec3 before, vec3 first, vec3 all) {
+  precise vec3 wrong = before * (first - all);
+  return largest(wrong);
+}
+
 // Groups the n items in order into uLayers groups, each as long as its error stays within
 // `bound` but leaving an item for every group after it. A group from item i to j, with the
-// light `before` reaching it, errs by before x (what item i passes - what all pass): within
-// it the true light lies between the light after item i and the light after j, and the map
-// stores the latter. Returns the largest error of a group, or, where the groups run out
-// before the items (the bound is too low), a value above 1. With `keep`, sets the groups.
+// light `before` reaching it, errs by before x (what its surfaces at item i's distance pass -
+// what all pass): within it the true light lies between the light after those and the light
+// after j, and the map stores the latter. Surfaces at one distance have no point between
+// them, so merging them costs nothing. Returns the largest error of a group, or, where the
+// groups run out before the items (the bound is too low), a value above 1. With `keep`, sets
+// the groups.
 float groupItems(int n, float bound, bool keep) {
   vec3 before = vec3(1.0);
   float worst = 0.0;
@@ -113,13 +123,17 @@ float groupItems(int n, float bound, bool keep) {
     vec3 first = firstPasses(itemAt(i));
     vec3 all = itemPasses[itemAt(i)];
     int j = i;
-    while (j + 1 <= n - (uLayers - g) &&
-           largest(before * (first - all * itemPasses[itemAt(j + 1)])) <= bound) {
+    while (j + 1 <= n - (uLayers - g)) {
+      vec3 next = itemPasses[itemAt(j + 1)];
+      // (Not the rest: only its nearest surface lies at its distance.)
+      bool tied = itemAt(j + 1) != kMergeSurfaces && itemDepth[itemAt(j + 1)] == itemDepth[itemAt(i)];
+      if (!tied && groupError(before, first, all * next) > bound) break;
       ++j;
-      all *= itemPasses[itemAt(j)];
+      all *= next;
+      if (tied) first *= next;
     }
     if (g == uLayers - 1 && j != n - 1) return 2.0;
-    worst = max(worst, largest(before * (first - all)));
+    worst = max(worst, groupError(before, first, all));
     if (keep) {
       groupDepth[g] = itemDepth[itemAt(i)];
       groupAfter[g] = before * all;
@@ -144,7 +158,10 @@ float mergeItems() {
     else
       low = middle;
   }
-  return groupItems(n, high, true);
+  float error = groupItems(n, high, true);
+  // A bound of 1 always holds (no error exceeds the light there is): should rounding have
+  // failed the one found, the groups are still all set.
+  return error <= 1.0 ? error : groupItems(n, 1.0, true);
 }
 
 // Merges the texel queued at `index`.
