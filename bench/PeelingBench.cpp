@@ -1,7 +1,8 @@
 // Order-independent transparency cost and error against depth complexity: the plugin's
 // SoPeelingSeparator (DUAL, FRONT_TO_BACK, FRAGMENT_LISTS) and a group with renderer TRACER
-// (still, and with the camera moving) against Coin's SORTED_LAYERS_BLEND with
-// as many passes as there are layers, and plain BLEND. Run: build/bin/ivshadow_bench
+// (still, with the camera moving, and moving with movingResolution 0.5) against Coin's
+// SORTED_LAYERS_BLEND with as many passes as there are layers, and plain BLEND. Run:
+// build/bin/ivshadow_bench
 // --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
 // largest channel error (0..255) against the exact CPU compositing of tests/gl/PeelReference.
 #include "headless/OffscreenRenderer.h"
@@ -26,8 +27,23 @@ constexpr int kSize = 400;
 constexpr double kViewHeight = 2.4;
 
 // kTraced: a SoTransparentShadowGroup with renderer TRACER (the stack traced on the CPU);
-// kTracedMoving: the same with the camera moving every frame, so that every frame traces.
-enum Method { kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists, kTraced, kTracedMoving };
+// kTracedMoving: the same with the camera moving every frame, so that every frame traces;
+// kTracedReduced: moving, with movingResolution 0.5 (every frame after the first traced at
+// 200 x 200 and stretched), its error that of the refined still frame.
+enum Method {
+  kBlend,
+  kSortedLayers,
+  kDual,
+  kFrontToBack,
+  kFragmentLists,
+  kTraced,
+  kTracedMoving,
+  kTracedReduced
+};
+
+bool traced(Method method) {
+  return method == kTraced || method == kTracedMoving || method == kTracedReduced;
+}
 
 // `depth` coloured glass sheets stacked over an opaque floor, each tilted so that it cuts
 // its neighbours: every pixel of the centre sees `depth` transparent layers, in an order that
@@ -40,9 +56,10 @@ std::string stackText(int depth, Method method) {
      << (method == kDual            ? "PeelingSeparator { method DUAL\n"
          : method == kFrontToBack   ? "PeelingSeparator { method FRONT_TO_BACK\n"
          : method == kFragmentLists ? "PeelingSeparator { method FRAGMENT_LISTS\n"
-         : method == kTraced || method == kTracedMoving
-             ? "TransparentShadowGroup { renderer TRACER\n"
-             : "Separator {\n")
+         : method == kTracedReduced
+             ? "TransparentShadowGroup { renderer TRACER movingResolution 0.5\n"
+         : traced(method) ? "TransparentShadowGroup { renderer TRACER\n"
+                          : "Separator {\n")
      << "BaseColor { rgb 0.5 0.5 0.5 }\n"
      << "Coordinate3 { point [ -1.1 -1.1 -2, 1.1 -1.1 -2, 1.1 1.1 -2, -1.1 1.1 -2 ] }\n"
      << "FaceSet { numVertices 4 }\n";
@@ -92,42 +109,52 @@ void Peel(benchmark::State& state) {
   const SbVec3f eye = camera->position.getValue();
   int frame = 0;
   for (auto _ : state) {
-    if (method == kTracedMoving)
+    if (method == kTracedMoving || method == kTracedReduced)
       camera->position.setValue(eye + SbVec3f(0.01f * float(++frame % 2), 0.0f, 0.0f));
     state.SetIterationTime(renderer->render(root).wallMs * 1e-3);
   }
   // A traced frame's own share: the trace and its upload (the rest is Coin's traversal and
   // the picture's draw).
-  if (method == kTraced || method == kTracedMoving)
+  if (traced(method))
     state.counters["trace_ms"] = ivshadow::collectDeepShadowStatistics(root).tracerMs;
-  if (camera->position.getValue() != eye) {
-    camera->position.setValue(eye);
-    renderer->render(root);
-  }
-
-  const ivshadow::Image image = renderer->read();
+  const bool moved = camera->position.getValue() != eye;
+  camera->position.setValue(eye);
   const ivshadow::test::PeelReference reference(root, kViewHeight, kSize);
-  double worst = 0.0;
-  for (int y = 0; y < kSize; y += 4)
-    for (int x = 0; x < kSize; x += 4)
-      if (const auto expected = reference.pixel(x, y))
-        for (int c = 0; c < 3; ++c)
-          worst = std::max(worst, std::abs(image.pixel(x, y)[c] - (*expected)[std::size_t(c)]));
-  state.counters["max_error"] = worst;
+  const auto largestError = [&] {
+    const ivshadow::Image image = renderer->read();
+    double worst = 0.0;
+    for (int y = 0; y < kSize; y += 4)
+      for (int x = 0; x < kSize; x += 4)
+        if (const auto expected = reference.pixel(x, y))
+          for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::abs(image.pixel(x, y)[c] - (*expected)[std::size_t(c)]));
+    return worst;
+  };
+  if (moved) {
+    renderer->render(root);
+    // Reduced: that frame was a moving one (the camera moved back); the next, which finds
+    // nothing changed, traces the full picture.
+    if (method == kTracedReduced) {
+      state.counters["moving_max_error"] = largestError();
+      renderer->render(root);
+    }
+  }
+  state.counters["max_error"] = largestError();
   state.SetLabel(method == kBlend           ? "BLEND"
                  : method == kSortedLayers  ? "SORTED_LAYERS_BLEND"
                  : method == kDual          ? "PeelingSeparator DUAL"
                  : method == kFrontToBack   ? "PeelingSeparator FRONT_TO_BACK"
                  : method == kFragmentLists ? "PeelingSeparator FRAGMENT_LISTS"
                  : method == kTraced        ? "TRACER still"
-                                            : "TRACER camera moving");
+                 : method == kTracedMoving  ? "TRACER camera moving"
+                                            : "TRACER camera moving, movingResolution 0.5");
   renderer.reset();
   root->unref();
 }
 
 void depths(benchmark::internal::Benchmark* b) {
-  for (int method :
-       {kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists, kTraced, kTracedMoving})
+  for (int method : {kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists, kTraced,
+                     kTracedMoving, kTracedReduced})
     for (int depth : {1, 2, 4, 8, 16}) b->Args({method, depth});
   b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(5);
 }
