@@ -1,0 +1,156 @@
+#!/usr/bin/env python3
+"""Writes the table of issue 20's goals into docs/PERFORMANCE.md from the measurements
+bench/performance_docs.sh left in docs/performance/ (one run: every ratio compares two
+figures of it). The table goes between the markers <!-- goals:begin --> and
+<!-- goals:end -->; the rest of the file is left as it is.
+
+    python3 bench/performance_goals.py docs/performance docs/PERFORMANCE.md
+"""
+import json
+import os
+import re
+import sys
+
+BEGIN = "<!-- goals:begin -->"
+END = "<!-- goals:end -->"
+
+
+def medians(path):
+    """Benchmark name without its iterations and aggregate suffix -> median wall ms."""
+    with open(path) as f:
+        data = json.load(f)
+    out = {}
+    for b in data["benchmarks"]:
+        if b.get("aggregate_name") != "median":
+            continue
+        name = re.sub(r"/iterations:\d+.*$", "", b["run_name"])
+        scale = {"ms": 1.0, "us": 1e-3, "ns": 1e-6, "s": 1e3}[b["time_unit"]]
+        out[name] = b["real_time"] * scale
+    return out
+
+
+def ratio(a, b):
+    return a / b
+
+
+def verdict(value, goal):
+    return "met" if value <= goal else "not met"
+
+
+def rays_rows(m):
+    rows = []
+    # RaysAgainstCoin/<triangles>/<kind>/<motion>: kind 0 plain Coin, 3 TRACER, 4 TRACER
+    # with movingResolution 0.5; motion 0 static, 1 light moving.
+    for triangles, label in ((100000, "96.8k"), (1000, "970")):
+        plain = m[f"RaysAgainstCoin/{triangles}/0/0"]
+        traced = m[f"RaysAgainstCoin/{triangles}/3/0"]
+        r = ratio(traced, plain)
+        rows.append((f"static frame with deep shadows ≤ 1.5x plain Coin, {label} triangles, "
+                     "800 x 600",
+                     f"`renderer TRACER` {traced:.1f} ms against plain Coin's {plain:.1f}: "
+                     f"**{r:.2f}x**", verdict(r, 1.5)))
+    plain = m["RaysAgainstCoin/100000/0/1"]
+    full = m["RaysAgainstCoin/100000/3/1"]
+    reduced = m["RaysAgainstCoin/100000/4/1"]
+    rows.append(("light moving every frame ≤ 3x plain Coin, 96.8k triangles, 800 x 600",
+                 f"`TRACER` {full:.1f} ms (**{ratio(full, plain):.2f}x** plain Coin's "
+                 f"{plain:.1f}); with `movingResolution 0.5` {reduced:.1f} ms "
+                 f"(**{ratio(reduced, plain):.2f}x**), refined when still",
+                 verdict(min(ratio(full, plain), ratio(reduced, plain)), 3.0)
+                 + ("" if ratio(full, plain) <= 3.0 else " (reduced frames only)")))
+    return rows
+
+
+def peel_rows(m):
+    # Peel/<kind>/<depth>: 1 SORTED_LAYERS_BLEND (as many passes as layers), 4
+    # PeelingSeparator FRAGMENT_LISTS, 5 TRACER still, 6 TRACER camera moving, 7 the same with
+    # movingResolution 0.5 (exact once still).
+    methods = ((4, "`PeelingSeparator FRAGMENT_LISTS`"), (5, "`TRACER`, still frames"),
+               (6, "`TRACER`, camera moving"), (7, "`TRACER`, camera moving, `movingResolution 0.5`"))
+    rows = []
+    for kind, label in methods:
+        cells, met = [], []
+        for depth in (1, 2, 4, 8, 16):
+            r = ratio(m[f"Peel/{kind}/{depth}"], m[f"Peel/1/{depth}"])
+            cells.append(f"{depth}: {r:.2f}x")
+            if r <= 1.0:
+                met.append(str(depth))
+        state = ("met at every depth" if len(met) == 5
+                 else f"met at {', '.join(met)} layers" if met else "not met")
+        rows.append((f"exact transparency ≤ 1.0x Coin's `SORTED_LAYERS_BLEND`: {label}, 400 x 400",
+                     "by layers: " + ", ".join(cells), state))
+    return rows
+
+
+def map_rows(m):
+    cells = []
+    worst = 0.0
+    for triangles, label in ((10000, "10.4k"), (100000, "96.8k")):
+        plain = m[f"MapBuildMethods/{triangles}/4/0"]
+        lists = m[f"MapBuildMethods/{triangles}/4/2"]
+        r = ratio(lists, plain)
+        worst = max(worst, r)
+        cells.append(f"{label} triangles {lists:.1f} ms against {plain:.1f}: **{r:.1f}x**")
+    return [("`MAP` build with L layers ≤ 2x one plain cube shadow-map pass (4 layers, 512 "
+             "texels)", "from fragment lists: " + "; ".join(cells), verdict(worst, 2.0))]
+
+
+def drag_rows(path):
+    fps = {}
+    with open(path) as f:
+        for line in f.read().splitlines()[1:]:
+            match = re.match(r'"(.*)" ([\d.]+) ([\d.]+) (\d+)', line)
+            if match:
+                fps[match.group(1)] = float(match.group(2))
+    traced = fps.get("Stress.renderer=TRACER", 0.0)
+    reduced = fps.get("Stress.renderer=TRACER Stress.movingResolution=0.5", 0.0)
+    plain = fps.get("Stress.isActive=FALSE", 0.0)
+    return [("the viewer ≥ 10 frames per second while the light is dragged, 96.8k triangles, "
+             "800 x 600",
+             f"`TRACER` {traced:.1f}, with `movingResolution 0.5` **{reduced:.1f}** (plain "
+             f"Coin {plain:.1f}); the still picture after the drag is the full trace",
+             "met" if max(traced, reduced) >= 10.0 else "not met")]
+
+
+def demo_rows(path):
+    with open(path) as f:
+        seconds = [float(line.split()[1]) for line in f.read().splitlines()[1:] if line.strip()]
+    return [("`./run demo`'s frame under 0.5 s on a cold shader cache",
+             "the whole `ivshadow render` process, `MESA_SHADER_CACHE_DISABLE=true`: "
+             + ", ".join(f"{s:.2f}" for s in seconds) + " s",
+             verdict(max(seconds), 0.5))]
+
+
+def main():
+    folder, document = sys.argv[1], sys.argv[2]
+    run = {}
+    with open(os.path.join(folder, "run.txt")) as f:
+        for line in f:
+            key, _, value = line.strip().partition(" ")
+            run[key] = value
+    rows = (rays_rows(medians(os.path.join(folder, "rays.json")))
+            + peel_rows(medians(os.path.join(folder, "peel.json")))
+            + map_rows(medians(os.path.join(folder, "map_build.json")))
+            + drag_rows(os.path.join(folder, "viewer_drag.txt"))
+            + demo_rows(os.path.join(folder, "demo.txt")))
+    table = [BEGIN,
+             f"Measured {run.get('date', '?')} at commit {run.get('commit', '?')} on "
+             f"{run.get('renderer', '?')}, load {run.get('load', '?')}, by "
+             "`bench/performance_docs.sh` (medians of 3; the figures are in docs/performance/).",
+             "",
+             "| goal | measured | |",
+             "|---|---|---|"]
+    table += [f"| {goal} | {measured} | {state} |" for goal, measured, state in rows]
+    table.append(END)
+    with open(document) as f:
+        text = f.read()
+    if BEGIN not in text or END not in text:
+        sys.exit(f"{document}: no {BEGIN} ... {END} markers to write the table between")
+    head, rest = text.split(BEGIN, 1)
+    _, tail = rest.split(END, 1)
+    with open(document, "w") as f:
+        f.write(head + "\n".join(table) + tail)
+
+
+if __name__ == "__main__":
+    main()
