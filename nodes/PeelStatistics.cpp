@@ -15,9 +15,12 @@ void add(PeelStatistics& total, const PeelStatistics& one) {
   total.peelMs += one.peelMs;
   total.gpuPeelMs += one.gpuPeelMs;
   total.frames += one.frames;
+  // The fewest slots of the nodes that listed: a fallback in one is not hidden by another.
+  if (one.listPasses > 0)
+    total.listSlots =
+        total.listPasses > 0 ? std::min(total.listSlots, one.listSlots) : one.listSlots;
   total.listPasses += one.listPasses;
   total.listFragments += one.listFragments;
-  total.listSlots = std::max(total.listSlots, one.listSlots);
 }
 
 }  // namespace

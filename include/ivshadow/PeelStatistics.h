@@ -18,7 +18,8 @@ struct PeelStatistics {
   int listPasses = 0;
   long long listFragments = 0;
   // The fragments each pixel keeps in slots of its own before the shared overflow (4, fewer,
-  // down to 0, where GL could not give the storage for more); summed, the most of any node.
+  // down to 0, where GL could not give the storage for more); summed, the fewest of the nodes
+  // that listed.
   int listSlots = 0;
 };
 
