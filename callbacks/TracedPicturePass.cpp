@@ -27,6 +27,10 @@ std::unique_ptr<TracedPicturePass> TracedPicturePass::create(std::string& whyNot
   pass->program_ = GlProgram::link(composeShader(glsl::kPeelCompositeVert),
                                    composeShader(glsl::kTracedPictureFrag), whyNot);
   if (!pass->program_) return nullptr;
+  pass->stretchedProgram_ =
+      GlProgram::link(composeShader(glsl::kPeelCompositeVert),
+                      composeShader(glsl::kTracedPictureFrag, "#define STRETCHED\n"), whyNot);
+  if (!pass->stretchedProgram_) return nullptr;
   pass->emptyVertexArray_ = createVertexArray();
   return pass;
 }
@@ -81,12 +85,12 @@ void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   glDepthFunc(stretched ? GL_LEQUAL : GL_ALWAYS);
   glDepthMask(GL_TRUE);
   glDepthRange(0.0, 1.0);
-  glUseProgram(program_.name());
-  program_.setInt("uColour", kColourUnit);
-  program_.setInt("uDepth", kDepthUnit);
-  glUniform2i(program_.location("uOrigin"), viewport[0], viewport[1]);
-  glUniform2i(program_.location("uSize"), viewport[2], viewport[3]);
-  program_.setInt("uStretched", stretched ? 1 : 0);
+  const GlProgram& program = stretched ? stretchedProgram_ : program_;
+  glUseProgram(program.name());
+  program.setInt("uColour", kColourUnit);
+  program.setInt("uDepth", kDepthUnit);
+  glUniform2i(program.location("uOrigin"), viewport[0], viewport[1]);
+  glUniform2i(program.location("uSize"), viewport[2], viewport[3]);
   glBindTextureUnit(GLuint(kColourUnit), colour_.get());
   glBindTextureUnit(GLuint(kDepthUnit), depth_.get());
   glBindVertexArray(emptyVertexArray_.get());

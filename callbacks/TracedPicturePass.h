@@ -36,7 +36,8 @@ class TracedPicturePass {
  private:
   TracedPicturePass() = default;
 
-  GlProgram program_;
+  GlProgram program_;           // a picture of the viewport's size
+  GlProgram stretchedProgram_;  // a smaller one, stretched over it
   GlVertexArray emptyVertexArray_;
   GlTexture colour_;
   GlTexture depth_;

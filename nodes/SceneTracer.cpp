@@ -102,6 +102,17 @@ class Tracer {
     viewing.inverse().multDirMatrix(SbVec3f(0.0f, 0.0f, 1.0f), back);
     back.normalize();
     viewDirection_ = toGlm(back);
+    // Which lights each group's casters shadow and in which colour model: resolved once a
+    // trace, not at every shaded point (the model reads the light's and the group's fields).
+    casting_.assign(data.groups.size() * data.lights.size(), kNotCasting);
+    for (std::size_t g = 0; g < data.groups.size(); ++g) {
+      const Group& group = data.groups[g];
+      if (!group.casters) continue;
+      for (int index : group.casting)
+        casting_[g * data.lights.size() + std::size_t(index)] = int(castingColourModel(
+            *data.lights[std::size_t(index)].node,
+            *static_cast<const SoTransparentShadowGroup*>(group.node), group.casters->coloured()));
+    }
   }
 
   // A pixel's ray: from the near plane (t = 0) to the far plane (t = 1).
@@ -300,15 +311,13 @@ class Tracer {
     return in;
   }
 
-  bool casts(const Group& group, const Light& light) const {
-    return std::find(group.casting.begin(), group.casting.end(),
-                     int(&light - data_.lights.data())) != group.casting.end();
+  // The colour model `group`'s casters shadow `light` in, or kNotCasting.
+  int castingModel(const Group& group, const Light& light) const {
+    return casting_[std::size_t(&group - data_.groups.data()) * data_.lights.size() +
+                    std::size_t(&light - data_.lights.data())];
   }
-
   ShadowColourModel modelOf(const Group& group, const Light& light) const {
-    return castingColourModel(*light.node,
-                              *static_cast<const SoTransparentShadowGroup*>(group.node),
-                              group.casters->coloured());
+    return ShadowColourModel(castingModel(group, light));
   }
 
   // The transmittance of the group's casters between `position` (on a surface of geometric
@@ -332,7 +341,7 @@ class Tracer {
     glm::vec3 direct = nDotL * light.colour * diffuse;
     if (nDotH > 0.0f)
       direct += std::pow(nDotH, material.shininess) * light.colour * material.specular;
-    if (group != nullptr && tri.shadowed && group->casters && casts(*group, light)) {
+    if (group != nullptr && tri.shadowed && castingModel(*group, light) != kNotCasting) {
       ++rays.shadow;
       direct *= castersTransmittance(*group, light, position, tri.geometricNormal,
                                      modelOf(*group, light));
@@ -429,6 +438,8 @@ class Tracer {
   SbMatrix worldToClip_;
   SbMatrix clipToWorld_;
   glm::vec3 viewDirection_{0.0f, 0.0f, 1.0f};
+  static constexpr int kNotCasting = -1;
+  std::vector<int> casting_;  // groups x lights: castingModel()
 };
 
 }  // namespace
@@ -481,12 +492,12 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
   const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
   out.width = options.width;
   out.height = options.height;
-  out.rgba.assign(pixels * 4, 0.0f);
-  out.depth.assign(pixels, 1.0f);
+  // Every pixel is written below (a cancelled trace is not used).
+  out.rgba.resize(pixels * 4);
+  out.depth.resize(pixels);
   out.cameraRays = 0;
   out.shadowRays = 0;
   out.bounceRays = 0;
-  for (std::size_t i = 0; i < pixels; ++i) out.rgba[i * 4 + 3] = 1.0f;
   const Tracer tracer(data_->extraction, data_->scene.get(), viewing, projection, options);
   const int workers = workerCount(options.threads);
   std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers));

@@ -8,11 +8,13 @@
 // (premultiplied colours, so the mean is compositing's own). Pixels of another surface are
 // left out of the mean, so a surface's colour does not bleed over an edge onto what GL drew
 // before the group there.
+// Compiled twice, with and without STRETCHED: llvmpipe runs both sides of a branch, even on
+// a uniform, and the stretched side's fetches made the draw of a picture of the viewport's
+// size cost about 8 ms at 800 x 600 on llvmpipe instead of 3 (docs/PERFORMANCE.md).
 uniform sampler2D uColour;
 uniform sampler2D uDepth;
 uniform ivec2 uOrigin;    // the viewport's corner in window coordinates
 uniform ivec2 uSize;      // the viewport's size
-uniform bool uStretched;  // the picture is smaller than the viewport
 
 // Window depths closer than this are one surface (a slope within one stretched pixel);
 // surfaces GL drew apart differ by far more.
@@ -21,16 +23,19 @@ const float kSameSurface = 1.0e-3;
 layout(location = 0) out vec4 oColour;
 
 void main() {
+#ifndef STRETCHED
+  // The picture has the viewport's pixels, rows top to bottom.
+  ivec2 at = ivec2(gl_FragCoord.xy) - uOrigin;
+  ivec2 texel = ivec2(at.x, uSize.y - 1 - at.y);
+  gl_FragDepth = texelFetch(uDepth, texel, 0).r;
+  oColour = texelFetch(uColour, texel, 0);
+#else
   vec2 at = (gl_FragCoord.xy - vec2(uOrigin)) / vec2(uSize);
   at.y = 1.0 - at.y;
   ivec2 pixels = textureSize(uDepth, 0);
   ivec2 nearest = min(ivec2(at * vec2(pixels)), pixels - 1);
   float depth = texelFetch(uDepth, nearest, 0).r;
   gl_FragDepth = depth;
-  if (!uStretched) {
-    oColour = texelFetch(uColour, nearest, 0);
-    return;
-  }
   vec2 texel = at * vec2(pixels) - 0.5;
   ivec2 corner = ivec2(floor(texel));
   vec2 f = texel - vec2(corner);
@@ -46,4 +51,5 @@ void main() {
     }
   // The nearest pixel is one of the four and carries the largest weight.
   oColour = weights > 0.0 ? sum / weights : texelFetch(uColour, nearest, 0);
+#endif
 }
