@@ -91,6 +91,76 @@ struct PixelResult {
   float depth = 1.0f;
 };
 
+// A surface shaded up to its shadows: the light of the lights that cast no shadow on it (or
+// its whole colour), while the light of each casting light waits for its shadow ray.
+struct PendingShade {
+  glm::vec3 rgb{0.0f};         // lit per pixel: before GL's clamp, without the shadowed lights
+  float alpha = 1.0f;          // the surface's opacity before texturing
+  float opacity = 1.0f;        // what it covers in the composite: texture applied, 1 if opaque
+  bool clampLit = false;       // rgb plus the shadowed lights' light is clamped as GL clamps
+  std::uint32_t termsEnd = 0;  // its shadowed lights end here in RowShading::terms
+  glm::vec4 texel{1.0f};
+  const TextureImage* image = nullptr;
+  float fog = 1.0f;  // the weight of the surface's own colour against the fog's
+  int material = 0;
+};
+
+// A casting light's light on a surface, before the shadow ray `query` answers.
+struct ShadowTerm {
+  glm::vec3 light;
+  std::uint32_t query;
+};
+
+// One row of pixels in three steps: every pixel's surfaces shaded up to their shadows
+// (Tracer::gather), all the row's shadow rays traced together in packets (traceShadows), then
+// every surface finished and composited (Tracer::resolve).
+struct RowShading {
+  std::vector<PendingShade> shades;
+  std::vector<std::uint32_t> pixelEnds;  // each pixel's surfaces end here in `shades`
+  std::vector<float> depths;             // each pixel's window depth
+  std::vector<ShadowTerm> terms;
+  std::vector<CasterScene::Query> queries;
+  std::vector<const CasterScene*> queryCasters;  // whose casters each query asks
+  std::vector<glm::vec3> answers;
+  // traceShadows' scratch, for rows whose queries ask more than one group's casters.
+  std::vector<CasterScene::Query> someQueries;
+  std::vector<glm::vec3> someAnswers;
+
+  void clear() {
+    shades.clear();
+    pixelEnds.clear();
+    depths.clear();
+    terms.clear();
+    queries.clear();
+    queryCasters.clear();
+  }
+};
+
+void traceShadows(RowShading& row) {
+  row.answers.resize(row.queries.size());
+  if (row.queries.empty()) return;
+  const CasterScene* first = row.queryCasters.front();
+  if (std::all_of(row.queryCasters.begin(), row.queryCasters.end(),
+                  [first](const CasterScene* c) { return c == first; })) {
+    first->transmittances(row.queries.data(), row.queries.size(), row.answers.data());
+    return;
+  }
+  // Several groups' casters: each answers its own queries.
+  std::vector<const CasterScene*> done;
+  for (const CasterScene* casters : row.queryCasters) {
+    if (std::find(done.begin(), done.end(), casters) != done.end()) continue;
+    done.push_back(casters);
+    row.someQueries.clear();
+    for (std::size_t i = 0; i < row.queries.size(); ++i)
+      if (row.queryCasters[i] == casters) row.someQueries.push_back(row.queries[i]);
+    row.someAnswers.resize(row.someQueries.size());
+    casters->transmittances(row.someQueries.data(), row.someQueries.size(), row.someAnswers.data());
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < row.queries.size(); ++i)
+      if (row.queryCasters[i] == casters) row.answers[i] = row.someAnswers[next++];
+  }
+}
+
 class Tracer {
  public:
   Tracer(const Extraction& data, RTCScene scene, const SbMatrix& viewing,
@@ -152,21 +222,34 @@ class Tracer {
     return glm::clamp(0.5f * clip[2] + 0.5f, 0.0f, 1.0f);
   }
 
-  // The `count` surfaces `hits` met along `ray`, shaded and composited front to back.
-  PixelResult composite(const CameraRay& ray, const Hit* hits, std::size_t count, float depth,
-                        RayCounts& rays) const {
-    PixelResult result;
-    result.depth = depth;
+  // The `count` surfaces `hits` met along `ray`, front to back, shaded up to their shadows
+  // into `row` as one more pixel, as far as light gets through them.
+  void gather(const CameraRay& ray, const Hit* hits, std::size_t count, float depth,
+              RayCounts& rays, RowShading& row) const {
+    float transmitted = 1.0f;
     for (std::size_t i = 0; i < count; ++i) {
       const Hit& hit = hits[i];
       const Triangle& tri = data_.triangles[hit.primitive];
       if (metBefore(hits, i)) continue;
       const glm::vec3 position = ray.origin + hit.t * ray.direction;
-      const glm::vec4 shaded = shade(tri, hit, position, ray.direction, rays);
-      const float alpha = isOpaque(shaded.a) ? 1.0f : glm::clamp(shaded.a, 0.0f, 1.0f);
-      result.colour += result.transmitted * alpha * glm::vec3(shaded);
-      result.transmitted *= 1.0f - alpha;
-      if (result.transmitted <= 0.0f) break;
+      const PendingShade& shade = prepare(tri, hit, position, ray.direction, rays, row);
+      transmitted *= 1.0f - shade.opacity;
+      if (transmitted <= 0.0f) break;
+    }
+    row.pixelEnds.push_back(std::uint32_t(row.shades.size()));
+    row.depths.push_back(depth);
+  }
+
+  // Pixel `pixel` of `row`, its shadow rays answered: its surfaces finished and composited.
+  PixelResult resolve(const RowShading& row, std::size_t pixel) const {
+    PixelResult result;
+    result.depth = row.depths[pixel];
+    const std::size_t begin = pixel > 0 ? row.pixelEnds[pixel - 1] : 0;
+    for (std::size_t i = begin; i < row.pixelEnds[pixel]; ++i) {
+      const PendingShade& shade = row.shades[i];
+      const glm::vec3 colour = finish(shade, row, i > 0 ? row.shades[i - 1].termsEnd : 0u);
+      result.colour += result.transmitted * shade.opacity * colour;
+      result.transmitted *= 1.0f - shade.opacity;
     }
     result.transmitted = std::max(result.transmitted, 0.0f);
     return result;
@@ -219,36 +302,46 @@ class Tracer {
     return false;
   }
 
-  // shading.frag's shade(), on the CPU. Shapes inside an active group are lit per pixel, as
-  // the group's shading program does; elsewhere Coin's fixed-function GL lights each vertex
-  // and interpolates (Gouraud), and so does this.
-  glm::vec4 shade(const Triangle& tri, const Hit& hit, const glm::vec3& position,
-                  const glm::vec3& rayDirection, RayCounts& rays) const {
-    const TextureImage* image = imageOf(data_, tri);
-    const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, image, hit.u, hit.v);
-    glm::vec4 colour = sample.colour;
+  // shading.frag's shade(), on the CPU, up to the shadows: appended to `row` (the shadowed
+  // lights' light as terms waiting for their shadow rays) and returned. Shapes inside an
+  // active group are lit per pixel, as the group's shading program does; elsewhere Coin's
+  // fixed-function GL lights each vertex and interpolates (Gouraud), and so does this.
+  const PendingShade& prepare(const Triangle& tri, const Hit& hit, const glm::vec3& position,
+                              const glm::vec3& rayDirection, RayCounts& rays,
+                              RowShading& row) const {
+    PendingShade shade;
+    shade.image = imageOf(data_, tri);
+    const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, shade.image, hit.u, hit.v);
+    shade.rgb = glm::vec3(sample.colour);
+    shade.alpha = sample.colour.a;
+    shade.texel = sample.texel;
     if (tri.lit) {
       bool front = glm::dot(tri.geometricNormal, rayDirection) < 0.0f;
       if (tri.clockwise) front = !front;
       const float side = tri.twoSided && !front ? -1.0f : 1.0f;
       const float w = 1.0f - hit.u - hit.v;
-      glm::vec3 lit;
       if (tri.group >= 0) {
         const glm::vec3 normal = w * tri.normal[0] + hit.u * tri.normal[1] + hit.v * tri.normal[2];
-        lit = lighting(tri, side * normal, position, glm::vec3(colour), rays);
+        shade.rgb = lighting(tri, side * normal, position, glm::vec3(sample.colour), rays, row);
+        shade.clampLit = true;
       } else {
+        // Outside groups nothing casts: each corner's light is whole, clamped there.
         const float weights[3] = {w, hit.u, hit.v};
-        lit = glm::vec3(0.0f);
+        shade.rgb = glm::vec3(0.0f);
         for (std::size_t i = 0; i < 3; ++i) {
           const glm::vec3& corner =
               data_.positions[std::size_t(&tri - data_.triangles.data()) * 3 + i];
-          lit += weights[i] *
-                 lighting(tri, side * tri.normal[i], corner, glm::vec3(tri.colour[i]), rays);
+          shade.rgb += weights[i] * glm::clamp(lighting(tri, side * tri.normal[i], corner,
+                                                        glm::vec3(tri.colour[i]), rays, row),
+                                               0.0f, 1.0f);
         }
       }
-      colour = glm::vec4(lit, colour.a);
     }
-    colour = texturedColour(colour, sample.texel, image);
+    // The texture's models take opacity from the colour's and the texel's alphas alone.
+    const float alpha =
+        texturedColour(glm::vec4(0.0f, 0.0f, 0.0f, shade.alpha), shade.texel, shade.image).a;
+    shade.opacity = isOpaque(alpha) ? 1.0f : glm::clamp(alpha, 0.0f, 1.0f);
+    shade.material = tri.material;
     const Material& material = data_.materials[std::size_t(tri.material)];
     if (material.fogType != 0) {
       SbVec3f eye;
@@ -258,15 +351,34 @@ class Tracer {
           material.fogType == 1   ? (material.fogEnd - z) / (material.fogEnd - material.fogStart)
           : material.fogType == 2 ? std::exp(-material.fogDensity * z)
                                   : std::exp(-material.fogDensity * material.fogDensity * z * z);
-      colour = glm::vec4(
-          glm::mix(material.fogColour, glm::vec3(colour), glm::clamp(fog, 0.0f, 1.0f)), colour.a);
+      shade.fog = glm::clamp(fog, 0.0f, 1.0f);
     }
+    shade.termsEnd = std::uint32_t(row.terms.size());
+    row.shades.push_back(shade);
+    return row.shades.back();
+  }
+
+  // A surface's colour once its shadow rays (its terms from `termsBegin` on) are answered:
+  // the shadowed lights' light added and clamped, the texture and the fog applied.
+  glm::vec3 finish(const PendingShade& shade, const RowShading& row,
+                   std::uint32_t termsBegin) const {
+    glm::vec3 rgb = shade.rgb;
+    if (shade.clampLit) {
+      for (std::uint32_t k = termsBegin; k < shade.termsEnd; ++k)
+        rgb += row.terms[k].light * row.answers[row.terms[k].query];
+      rgb = glm::clamp(rgb, 0.0f, 1.0f);
+    }
+    glm::vec3 colour =
+        glm::vec3(texturedColour(glm::vec4(rgb, shade.alpha), shade.texel, shade.image));
+    const Material& material = data_.materials[std::size_t(shade.material)];
+    if (material.fogType != 0) colour = glm::mix(material.fogColour, colour, shade.fog);
     return colour;
   }
 
-  // Coin's lighting equation at one point, clamped as GL clamps a lit colour.
+  // Coin's lighting equation at one point, before GL clamps it: the casting lights' light on
+  // a surface in a group waits in `row` for its shadow ray.
   glm::vec3 lighting(const Triangle& tri, glm::vec3 normal, const glm::vec3& position,
-                     const glm::vec3& diffuse, RayCounts& rays) const {
+                     const glm::vec3& diffuse, RayCounts& rays, RowShading& row) const {
     const float length = glm::length(normal);
     normal = length > 0.0f ? normal / length : glm::vec3(0.0f, 0.0f, 1.0f);
     const Material& material = data_.materials[std::size_t(tri.material)];
@@ -283,11 +395,11 @@ class Tracer {
       if (set == nullptr) continue;
       for (int index : *set)
         lit += contribution(data_.lights[std::size_t(index)], tri, group, normal, position, diffuse,
-                            material, rays);
+                            material, rays, row);
     }
     if (group != nullptr && group->bounce && options_.bounceSamples > 0)
       lit += diffuse * indirect(*group, tri, normal, position, rays);
-    return glm::clamp(lit, 0.0f, 1.0f);
+    return lit;
   }
 
   // Where a light is seen from `position`: the unit direction towards it and GL's distance
@@ -331,8 +443,8 @@ class Tracer {
 
   glm::vec3 contribution(const Light& light, const Triangle& tri, const Group* group,
                          const glm::vec3& normal, const glm::vec3& position,
-                         const glm::vec3& diffuse, const Material& material,
-                         RayCounts& rays) const {
+                         const glm::vec3& diffuse, const Material& material, RayCounts& rays,
+                         RowShading& row) const {
     const Incidence in = incidence(light, position);
     const float nDotL = glm::dot(normal, in.toLight);
     if (!(nDotL > 0.0f)) return glm::vec3(0.0f);
@@ -343,8 +455,13 @@ class Tracer {
       direct += std::pow(nDotH, material.shininess) * light.colour * material.specular;
     if (group != nullptr && tri.shadowed && castingModel(*group, light) != kNotCasting) {
       ++rays.shadow;
-      direct *= castersTransmittance(*group, light, position, tri.geometricNormal,
-                                     modelOf(*group, light));
+      const bool directional = light.type == LightType::Directional;
+      row.terms.push_back(ShadowTerm{in.attenuation * direct, std::uint32_t(row.queries.size())});
+      row.queries.push_back(CasterScene::Query{position, tri.geometricNormal,
+                                               directional ? light.towardsLight : light.position,
+                                               modelOf(*group, light), directional});
+      row.queryCasters.push_back(group->casters.get());
+      return glm::vec3(0.0f);
     }
     return in.attenuation * direct;
   }
@@ -501,6 +618,7 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
   const Tracer tracer(data_->extraction, data_->scene.get(), viewing, projection, options);
   const int workers = workerCount(options.threads);
   std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers));
+  std::vector<RowShading> shading(static_cast<std::size_t>(workers));
   std::vector<RayCounts> rays(static_cast<std::size_t>(workers));
   SurfacesMet* kept = options.surfaces;
   const bool reuse = kept != nullptr && options.reuseSurfaces && options.height > 0 &&
@@ -523,23 +641,28 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
           keptRow->ends.resize(std::size_t(options.width));
           keptRow->depth.resize(std::size_t(options.width));
         }
+        RowShading& shades = shading[std::size_t(worker)];
+        RayCounts& counts = rays[std::size_t(worker)];
+        shades.clear();
         for (int x = 0; x < options.width; ++x) {
           const Tracer::CameraRay ray = tracer.cameraRay(x, y);
-          PixelResult p;
           if (reuse) {
             const std::uint32_t begin = x > 0 ? keptRow->ends[std::size_t(x) - 1] : 0u;
-            p = tracer.composite(ray, keptRow->hits.data() + begin,
-                                 keptRow->ends[std::size_t(x)] - begin,
-                                 keptRow->depth[std::size_t(x)], rays[std::size_t(worker)]);
+            tracer.gather(ray, keptRow->hits.data() + begin, keptRow->ends[std::size_t(x)] - begin,
+                          keptRow->depth[std::size_t(x)], counts, shades);
           } else {
             const float depth = tracer.visible(ray, limits != nullptr ? limits[x] : 1.0f, found);
-            p = tracer.composite(ray, found.data(), found.size(), depth, rays[std::size_t(worker)]);
+            tracer.gather(ray, found.data(), found.size(), depth, counts, shades);
             if (keptRow != nullptr) {
               keptRow->hits.insert(keptRow->hits.end(), found.begin(), found.end());
               keptRow->ends[std::size_t(x)] = std::uint32_t(keptRow->hits.size());
               keptRow->depth[std::size_t(x)] = depth;
             }
           }
+        }
+        traceShadows(shades);
+        for (int x = 0; x < options.width; ++x) {
+          const PixelResult p = tracer.resolve(shades, std::size_t(x));
           float* rgba = &out.rgba[(row + std::size_t(x)) * 4];
           rgba[0] = p.colour.r;
           rgba[1] = p.colour.g;

@@ -13,50 +13,59 @@
 namespace ivshadow {
 namespace {
 
-// Embree hands the filter function the context it was given; the shadow ray's running
-// product travels in it.
-struct ShadowRayContext : RTCIntersectContext {
-  const CasterScene* scene = nullptr;
+// The running product of one shadow ray, found by the ray's id.
+struct ShadowLane {
   ShadowColourModel model = ShadowColourModel::Monochrome;
   glm::vec3 visibility{1.0f};
   // Surfaces already counted on this ray (shape, ray parameter); kept per thread so that no
   // ray allocates.
   std::vector<std::pair<std::uint32_t, float>>* seen = nullptr;
+};
+
+// Embree hands the filter function the context it was given; the rays' running products
+// travel in it, one lane per ray of a packet (a single ray is lane 0).
+struct ShadowRayContext : RTCIntersectContext {
+  const CasterScene* scene = nullptr;
+  ShadowLane* lanes = nullptr;
   // firstSurface(): transparent hits (ray parameter, transmittance) are collected here and
   // passed over, opaque ones accepted; Embree then keeps the nearest opaque one.
   std::vector<std::pair<float, glm::vec3>>* collected = nullptr;
 };
 
-bool alreadySeen(ShadowRayContext& context, std::uint32_t shape, float t) {
-  for (const auto& [seenShape, seenT] : *context.seen)
+bool alreadySeen(ShadowLane& lane, std::uint32_t shape, float t) {
+  for (const auto& [seenShape, seenT] : *lane.seen)
     if (seenShape == shape && sameSurface(seenT, t)) return true;
-  context.seen->emplace_back(shape, t);
+  lane.seen->emplace_back(shape, t);
   return false;
 }
 
 void shadowFilter(const RTCFilterFunctionNArguments* args) {
   auto& context = *static_cast<ShadowRayContext*>(args->context);
-  const unsigned int primitive = RTCHitN_primID(args->hit, args->N, 0);
-  const float u = RTCHitN_u(args->hit, args->N, 0);
-  const float v = RTCHitN_v(args->hit, args->N, 0);
-  const float t = RTCRayN_tfar(args->ray, args->N, 0);
-  const glm::vec4 colour = context.scene->surfaceColour(primitive, u, v);
-  // A fully clear surface casts nothing, and a surface met before is not met again.
-  if (colour.a <= 0.0f || alreadySeen(context, context.scene->shapeOf(primitive), t)) {
-    args->valid[0] = 0;
-    return;
+  for (unsigned int i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    ShadowLane& lane = context.lanes[RTCRayN_id(args->ray, args->N, i)];
+    const unsigned int primitive = RTCHitN_primID(args->hit, args->N, i);
+    const float u = RTCHitN_u(args->hit, args->N, i);
+    const float v = RTCHitN_v(args->hit, args->N, i);
+    const float t = RTCRayN_tfar(args->ray, args->N, i);
+    const glm::vec4 colour = context.scene->surfaceColour(primitive, u, v);
+    // A fully clear surface casts nothing, and a surface met before is not met again.
+    if (colour.a <= 0.0f || alreadySeen(lane, context.scene->shapeOf(primitive), t)) {
+      args->valid[i] = 0;
+      continue;
+    }
+    if (isOpaque(colour.a)) {
+      if (context.collected != nullptr) continue;  // a candidate for the nearest opaque surface
+      lane.visibility = glm::vec3(0.0f);
+      continue;  // accepted: the ray is blocked and traversal stops
+    }
+    const glm::vec3 through = transmittance(glm::clamp(colour, 0.0f, 1.0f), lane.model);
+    if (context.collected != nullptr)
+      context.collected->emplace_back(t, through);
+    else
+      lane.visibility *= through;
+    args->valid[i] = 0;  // let light through: look for the next surface
   }
-  if (isOpaque(colour.a)) {
-    if (context.collected != nullptr) return;  // a candidate for the nearest opaque surface
-    context.visibility = glm::vec3(0.0f);
-    return;  // accepted: the ray is blocked and traversal stops
-  }
-  const glm::vec3 through = transmittance(glm::clamp(colour, 0.0f, 1.0f), context.model);
-  if (context.collected != nullptr)
-    context.collected->emplace_back(t, through);
-  else
-    context.visibility *= through;
-  args->valid[0] = 0;  // let light through: look for the next surface
 }
 
 // The casters' bounds where they are traced: callers may have moved the vertices (the
@@ -69,6 +78,19 @@ void measureBounds(SceneTriangles& casters) {
 
 }  // namespace
 
+void CasterScene::measureFlatColours() {
+  const std::size_t count = casters_.triangleCount();
+  flatColour_.assign(count, glm::vec4(kNotFlat));
+  for (std::size_t i = 0; i < count; ++i) {
+    if (triangleTexture_[i] >= 0) continue;
+    const TriangleVertex* vertex = &casters_.vertices[i * 3];
+    if (std::equal(vertex[0].colour, vertex[0].colour + 4, vertex[1].colour) &&
+        std::equal(vertex[0].colour, vertex[0].colour + 4, vertex[2].colour))
+      flatColour_[i] = glm::vec4(vertex[0].colour[0], vertex[0].colour[1], vertex[0].colour[2],
+                                 vertex[0].colour[3]);
+  }
+}
+
 std::unique_ptr<CasterScene> CasterScene::build(RTCDevice device, SceneTriangles casters,
                                                 std::string& error) {
   std::unique_ptr<CasterScene> result(new CasterScene);
@@ -79,7 +101,13 @@ std::unique_ptr<CasterScene> CasterScene::build(RTCDevice device, SceneTriangles
   for (const TriangleBatch& batch : triangles.batches)
     std::fill_n(result->triangleTexture_.begin() + std::ptrdiff_t(batch.firstVertex / 3),
                 batch.vertexCount / 3, batch.texture);
+  result->measureFlatColours();
 
+  result->packetWidth_ =
+      rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)  ? 16
+      : rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) ? 8
+      : rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY4_SUPPORTED) ? 4
+                                                                                : 1;
   result->scene_ = buildTriangleScene(
       device, triangles.triangleCount(),
       [&triangles](std::size_t i) { return triangles.vertices[i].position; }, shadowFilter, error);
@@ -102,6 +130,7 @@ CasterScene::Update CasterScene::update(const SceneTriangles& casters) {
   for (const TriangleBatch& batch : casters_.batches)
     std::fill_n(triangleTexture_.begin() + std::ptrdiff_t(batch.firstVertex / 3),
                 batch.vertexCount / 3, batch.texture);
+  measureFlatColours();
   if (!moved) return Update::Colours;
   RTCGeometry geometry = rtcGetGeometry(scene_.get(), 0);
   auto* positions =
@@ -115,6 +144,8 @@ CasterScene::Update CasterScene::update(const SceneTriangles& casters) {
 }
 
 glm::vec4 CasterScene::surfaceColour(unsigned int primitive, float u, float v) const {
+  const glm::vec4& flat = flatColour_[primitive];
+  if (flat.a != kNotFlat) return flat;
   const TriangleVertex* vertex = &casters_.vertices[std::size_t(primitive) * 3];
   glm::vec4 colours[3];
   glm::vec2 texCoords[3];
@@ -129,10 +160,7 @@ glm::vec4 CasterScene::surfaceColour(unsigned int primitive, float u, float v) c
   return texturedColour(sample.colour, sample.texel, image);
 }
 
-glm::vec3 CasterScene::transmittanceTowards(const glm::vec3& from, const glm::vec3& normal,
-                                            const glm::vec3& towards,
-                                            ShadowColourModel model) const {
-  if (casters_.bounds.isEmpty()) return glm::vec3(1.0f);
+glm::vec3 CasterScene::pastCasters(const glm::vec3& from, const glm::vec3& towards) const {
   // A point beyond every caster along the ray: farther than the casters' farthest corner is
   // from `from` (no caster lies past it), and the ray then is an ordinary finite one.
   const SbVec3f low = casters_.bounds.getMin(), high = casters_.bounds.getMax();
@@ -142,19 +170,25 @@ glm::vec3 CasterScene::transmittanceTowards(const glm::vec3& from, const glm::ve
     reach += d * d;
   }
   const float length = 2.0f * std::sqrt(reach) + 1.0f;
-  return transmittance(from, normal, from + glm::normalize(towards) * length, model);
+  return from + glm::normalize(towards) * length;
 }
 
-glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& normal,
-                                     const glm::vec3& to, ShadowColourModel model) const {
-  if (casters_.vertices.empty()) return glm::vec3(1.0f);
+glm::vec3 CasterScene::transmittanceTowards(const glm::vec3& from, const glm::vec3& normal,
+                                            const glm::vec3& towards,
+                                            ShadowColourModel model) const {
+  if (casters_.bounds.isEmpty()) return glm::vec3(1.0f);
+  return transmittance(from, normal, pastCasters(from, towards), model);
+}
+
+bool CasterScene::shadowRay(const glm::vec3& from, const glm::vec3& normal, const glm::vec3& to,
+                            ShadowRay& ray) const {
   // Float positions carry a relative error near 1e-7; stepping 1e-5 of the larger of the
   // point's magnitude and the ray's length off the surface clears it by two orders. A light
   // far outside the casters (1e20 away) needs no more than their extent: past it no caster
   // can be met, and a step of 1e-5 of the light's distance would jump over all of them.
   const glm::dvec3 toLight = glm::dvec3(to) - glm::dvec3(from);
   const double length = glm::length(toLight);
-  if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(1.0f);
+  if (!(length > 0.0) || !std::isfinite(length)) return false;
   const float magnitude = std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)});
   const float extent =
       casters_.bounds.isEmpty()
@@ -163,38 +197,117 @@ glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& nor
   const float offset = 1e-5f * std::max(magnitude, extent);
   const float side = glm::dot(normal, to - from) >= 0.0f ? 1.0f : -1.0f;
   const float normalLength = glm::length(normal);
-  const glm::vec3 origin =
-      normalLength > 0.0f ? from + normal * (side * offset / normalLength) : from;
+  ray.origin = normalLength > 0.0f ? from + normal * (side * offset / normalLength) : from;
   // Embree takes only rays whose origin and direction lie within about 1.8e18 (its
   // ray.valid() assertion aborted the process for a light at 1e20): a unit direction and the
   // distance as tfar keep every finite light within that.
-  const glm::dvec3 towards = glm::dvec3(to) - glm::dvec3(origin);
+  const glm::dvec3 towards = glm::dvec3(to) - glm::dvec3(ray.origin);
   const double distance = glm::length(towards);
-  if (!(distance > 0.0)) return glm::vec3(1.0f);
-  const glm::vec3 direction = glm::vec3(towards / distance);
+  if (!(distance > 0.0)) return false;
+  ray.direction = glm::vec3(towards / distance);
+  ray.tnear = float(std::min(double(offset), 0.5 * distance));
+  ray.tfar = float(std::min(distance, double(std::numeric_limits<float>::max())));  // the light
+  return true;
+}
 
+glm::vec3 CasterScene::transmittance(const glm::vec3& from, const glm::vec3& normal,
+                                     const glm::vec3& to, ShadowColourModel model) const {
+  if (casters_.vertices.empty()) return glm::vec3(1.0f);
+  ShadowRay shadow;
+  if (!shadowRay(from, normal, to, shadow)) return glm::vec3(1.0f);
   thread_local std::vector<std::pair<std::uint32_t, float>> seen;
   seen.clear();
+  ShadowLane lane;
+  lane.model = model;
+  lane.seen = &seen;
   ShadowRayContext context;
   rtcInitIntersectContext(&context);
   context.scene = this;
-  context.model = model;
-  context.seen = &seen;
-  RTCRay ray{};
-  ray.org_x = origin.x;
-  ray.org_y = origin.y;
-  ray.org_z = origin.z;
-  ray.dir_x = direction.x;
-  ray.dir_y = direction.y;
-  ray.dir_z = direction.z;
-  ray.tnear = float(std::min(double(offset), 0.5 * distance));
-  ray.tfar = float(std::min(distance, double(std::numeric_limits<float>::max())));  // the light
+  context.lanes = &lane;
+  RTCRay ray{};  // id 0: the one lane
+  ray.org_x = shadow.origin.x;
+  ray.org_y = shadow.origin.y;
+  ray.org_z = shadow.origin.z;
+  ray.dir_x = shadow.direction.x;
+  ray.dir_y = shadow.direction.y;
+  ray.dir_z = shadow.direction.z;
+  ray.tnear = shadow.tnear;
+  ray.tfar = shadow.tfar;
   ray.mask = 0xFFFFFFFFu;
   ray.flags = 0;
   rtcOccluded1(scene_.get(), &context, &ray);
   // Embree marks a blocked ray with tfar = -inf (an accepted hit: an opaque surface).
   if (ray.tfar < 0.0f) return glm::vec3(0.0f);
-  return context.visibility;
+  return lane.visibility;
+}
+
+template <int Width, typename Packet>
+void CasterScene::tracePackets(const Query* queries, std::size_t count, glm::vec3* out,
+                               void (*occluded)(const int*, RTCScene, RTCIntersectContext*,
+                                                Packet*)) const {
+  thread_local std::vector<std::pair<std::uint32_t, float>> seen[Width];
+  ShadowLane lanes[Width];
+  ShadowRayContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  context.scene = this;
+  context.lanes = lanes;
+  std::size_t next = 0;
+  while (next < count) {
+    Packet packet{};
+    int valid[Width] = {};
+    std::size_t answer[Width];
+    int used = 0;
+    for (; used < Width && next < count; ++next) {
+      const Query& query = queries[next];
+      const glm::vec3 to = query.directional ? pastCasters(query.from, query.to) : query.to;
+      ShadowRay shadow;
+      if (!shadowRay(query.from, query.normal, to, shadow)) {
+        out[next] = glm::vec3(1.0f);
+        continue;
+      }
+      seen[used].clear();
+      lanes[used] = ShadowLane{query.model, glm::vec3(1.0f), &seen[used]};
+      packet.org_x[used] = shadow.origin.x;
+      packet.org_y[used] = shadow.origin.y;
+      packet.org_z[used] = shadow.origin.z;
+      packet.dir_x[used] = shadow.direction.x;
+      packet.dir_y[used] = shadow.direction.y;
+      packet.dir_z[used] = shadow.direction.z;
+      packet.tnear[used] = shadow.tnear;
+      packet.tfar[used] = shadow.tfar;
+      packet.mask[used] = 0xFFFFFFFFu;
+      packet.id[used] = unsigned(used);
+      valid[used] = -1;
+      answer[used] = next;
+      ++used;
+    }
+    if (used == 0) break;
+    occluded(valid, scene_.get(), &context, &packet);
+    for (int i = 0; i < used; ++i)
+      out[answer[i]] = packet.tfar[i] < 0.0f ? glm::vec3(0.0f) : lanes[i].visibility;
+  }
+}
+
+void CasterScene::transmittances(const Query* queries, std::size_t count, glm::vec3* out) const {
+  if (casters_.vertices.empty()) {
+    std::fill_n(out, count, glm::vec3(1.0f));
+    return;
+  }
+  switch (packetWidth_) {
+    case 16:
+      return tracePackets<16, RTCRay16>(queries, count, out, rtcOccluded16);
+    case 8:
+      return tracePackets<8, RTCRay8>(queries, count, out, rtcOccluded8);
+    case 4:
+      return tracePackets<4, RTCRay4>(queries, count, out, rtcOccluded4);
+    default:
+      for (std::size_t i = 0; i < count; ++i) {
+        const Query& q = queries[i];
+        out[i] = q.directional ? transmittanceTowards(q.from, q.normal, q.to, q.model)
+                               : transmittance(q.from, q.normal, q.to, q.model);
+      }
+  }
 }
 
 CasterScene::SurfaceHit CasterScene::firstSurface(const glm::vec3& origin,
@@ -206,11 +319,13 @@ CasterScene::SurfaceHit CasterScene::firstSurface(const glm::vec3& origin,
   thread_local std::vector<std::pair<float, glm::vec3>> collected;
   seen.clear();
   collected.clear();
+  ShadowLane lane;
+  lane.model = model;
+  lane.seen = &seen;
   ShadowRayContext context;
   rtcInitIntersectContext(&context);
   context.scene = this;
-  context.model = model;
-  context.seen = &seen;
+  context.lanes = &lane;
   context.collected = &collected;
   RTCRayHit rayHit{};
   rayHit.ray.org_x = origin.x;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ivshadow {
 
@@ -46,6 +47,20 @@ class IVSHADOW_INTERNAL CasterScene {
   glm::vec3 transmittanceTowards(const glm::vec3& from, const glm::vec3& normal,
                                  const glm::vec3& towards, ShadowColourModel model) const;
 
+  // One question for transmittances(): transmittance() or, `directional`, transmittanceTowards()
+  // (`to` is then the unit vector towards the light).
+  struct Query {
+    glm::vec3 from;
+    glm::vec3 normal;
+    glm::vec3 to;
+    ShadowColourModel model = ShadowColourModel::Monochrome;
+    bool directional = false;
+  };
+  // The answers to `count` questions into `out`, the same as one call each: traced in packets
+  // of Embree's native width, which walk the tree once for neighbouring rays (the shadow rays
+  // of a row of pixels towards one light are nearly parallel).
+  void transmittances(const Query* queries, std::size_t count, glm::vec3* out) const;
+
   bool coloured() const { return casters_.hasColouredTransparent; }
 
   // The first opaque caster along origin + t direction (unit), 0 < t < tfar, and the
@@ -76,7 +91,29 @@ class IVSHADOW_INTERNAL CasterScene {
 
  private:
   CasterScene() = default;
+  // The shadow ray of transmittance(): false when none is needed (the light is at the point).
+  struct ShadowRay {
+    glm::vec3 origin;
+    glm::vec3 direction;
+    float tnear;
+    float tfar;
+  };
+  bool shadowRay(const glm::vec3& from, const glm::vec3& normal, const glm::vec3& to,
+                 ShadowRay& ray) const;
+  // A point past every caster from `from` along the unit vector `towards`.
+  glm::vec3 pastCasters(const glm::vec3& from, const glm::vec3& towards) const;
+  template <int Width, typename Packet>
+  void tracePackets(const Query* queries, std::size_t count, glm::vec3* out,
+                    void (*occluded)(const int*, RTCScene, RTCIntersectContext*, Packet*)) const;
+
+  // Each untextured triangle whose corners share one colour: that colour, which every point
+  // of it has (most casters are; the shadow rays meet them most); kNotFlat otherwise.
+  void measureFlatColours();
+  static constexpr float kNotFlat = -1.0f;
+
   SceneTriangles casters_;
+  std::vector<glm::vec4> flatColour_;
+  int packetWidth_ = 1;  // Embree's native packet width on this machine
   std::vector<int> triangleTexture_;
   EmbreeScene scene_;
 };
