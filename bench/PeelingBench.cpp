@@ -1,6 +1,7 @@
 // Order-independent transparency cost and error against depth complexity: the plugin's
-// SoPeelingSeparator (DUAL, FRONT_TO_BACK, FRAGMENT_LISTS) and a group with renderer TRACER
-// (still, with the camera moving, and moving with movingResolution 0.5) against Coin's
+// SoPeelingSeparator (DUAL, FRONT_TO_BACK, FRAGMENT_LISTS, and TRACER still and with the
+// camera moving) and a group with renderer TRACER (still, with the camera moving, and moving
+// with movingResolution 0.5) against Coin's
 // SORTED_LAYERS_BLEND with as many passes as there are layers, and plain BLEND. Run:
 // build/bin/ivshadow_bench
 // --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
@@ -8,6 +9,7 @@
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
+#include "ivshadow/PeelStatistics.h"
 #include "tests/gl/PeelReference.h"
 
 #include <Inventor/SoDB.h>
@@ -29,7 +31,8 @@ constexpr double kViewHeight = 2.4;
 // kTraced: a SoTransparentShadowGroup with renderer TRACER (the stack traced on the CPU);
 // kTracedMoving: the same with the camera moving every frame, so that every frame traces;
 // kTracedReduced: moving, with movingResolution 0.5 (every frame after the first traced at
-// 200 x 200 and stretched), its error that of the refined still frame.
+// 200 x 200 and stretched), its error that of the refined still frame. kSeparatorTraced and
+// kSeparatorTracedMoving: a SoPeelingSeparator with method TRACER, still and moving.
 enum Method {
   kBlend,
   kSortedLayers,
@@ -38,11 +41,16 @@ enum Method {
   kFragmentLists,
   kTraced,
   kTracedMoving,
-  kTracedReduced
+  kTracedReduced,
+  kSeparatorTraced,
+  kSeparatorTracedMoving
 };
 
 bool traced(Method method) {
   return method == kTraced || method == kTracedMoving || method == kTracedReduced;
+}
+bool moving(Method method) {
+  return method == kTracedMoving || method == kTracedReduced || method == kSeparatorTracedMoving;
 }
 
 // `depth` coloured glass sheets stacked over an opaque floor, each tilted so that it cuts
@@ -56,6 +64,8 @@ std::string stackText(int depth, Method method) {
      << (method == kDual            ? "PeelingSeparator { method DUAL\n"
          : method == kFrontToBack   ? "PeelingSeparator { method FRONT_TO_BACK\n"
          : method == kFragmentLists ? "PeelingSeparator { method FRAGMENT_LISTS\n"
+         : method == kSeparatorTraced || method == kSeparatorTracedMoving
+             ? "PeelingSeparator { method TRACER\n"
          : method == kTracedReduced
              ? "TransparentShadowGroup { renderer TRACER movingResolution 0.5\n"
          : traced(method) ? "TransparentShadowGroup { renderer TRACER\n"
@@ -109,7 +119,7 @@ void Peel(benchmark::State& state) {
   const SbVec3f eye = camera->position.getValue();
   int frame = 0;
   for (auto _ : state) {
-    if (method == kTracedMoving || method == kTracedReduced)
+    if (moving(method))
       camera->position.setValue(eye + SbVec3f(0.01f * float(++frame % 2), 0.0f, 0.0f));
     state.SetIterationTime(renderer->render(root).wallMs * 1e-3);
   }
@@ -117,10 +127,12 @@ void Peel(benchmark::State& state) {
   // the picture's draw).
   if (traced(method))
     state.counters["trace_ms"] = ivshadow::collectDeepShadowStatistics(root).tracerMs;
-  const bool moving = method == kTracedMoving || method == kTracedReduced;
+  if (method == kSeparatorTraced || method == kSeparatorTracedMoving)
+    state.counters["traced_frames"] = ivshadow::collectPeelStatistics(root).tracedFrames;
+  const bool moves = moving(method);
   // The last timed frame may have ended where the camera began (an even count): moved off
   // once more, so that the frame back at the start is a moving one.
-  if (moving && camera->position.getValue() == eye) {
+  if (moves && camera->position.getValue() == eye) {
     camera->position.setValue(eye + SbVec3f(0.01f, 0.0f, 0.0f));
     renderer->render(root);
   }
@@ -136,7 +148,7 @@ void Peel(benchmark::State& state) {
             worst = std::max(worst, std::abs(image.pixel(x, y)[c] - (*expected)[std::size_t(c)]));
     return worst;
   };
-  if (moving) {
+  if (moves) {
     renderer->render(root);
     // Reduced: that frame was a moving one (the camera moved back); the next, which finds
     // nothing changed, traces the full picture.
@@ -146,21 +158,23 @@ void Peel(benchmark::State& state) {
     }
   }
   state.counters["max_error"] = largestError();
-  state.SetLabel(method == kBlend           ? "BLEND"
-                 : method == kSortedLayers  ? "SORTED_LAYERS_BLEND"
-                 : method == kDual          ? "PeelingSeparator DUAL"
-                 : method == kFrontToBack   ? "PeelingSeparator FRONT_TO_BACK"
-                 : method == kFragmentLists ? "PeelingSeparator FRAGMENT_LISTS"
-                 : method == kTraced        ? "TRACER still"
-                 : method == kTracedMoving  ? "TRACER camera moving"
-                                            : "TRACER camera moving, movingResolution 0.5");
+  state.SetLabel(method == kBlend             ? "BLEND"
+                 : method == kSortedLayers    ? "SORTED_LAYERS_BLEND"
+                 : method == kDual            ? "PeelingSeparator DUAL"
+                 : method == kFrontToBack     ? "PeelingSeparator FRONT_TO_BACK"
+                 : method == kFragmentLists   ? "PeelingSeparator FRAGMENT_LISTS"
+                 : method == kTraced          ? "TRACER still"
+                 : method == kTracedMoving    ? "TRACER camera moving"
+                 : method == kTracedReduced   ? "TRACER camera moving, movingResolution 0.5"
+                 : method == kSeparatorTraced ? "PeelingSeparator TRACER still"
+                                              : "PeelingSeparator TRACER camera moving");
   renderer.reset();
   root->unref();
 }
 
 void depths(benchmark::internal::Benchmark* b) {
   for (int method : {kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists, kTraced,
-                     kTracedMoving, kTracedReduced})
+                     kTracedMoving, kTracedReduced, kSeparatorTraced, kSeparatorTracedMoving})
     for (int depth : {1, 2, 4, 8, 16}) b->Args({method, depth});
   b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(5);
 }

@@ -76,9 +76,14 @@ def rays_rows(m):
 def peel_rows(m):
     # Peel/<kind>/<depth>: 1 SORTED_LAYERS_BLEND (as many passes as layers), 4
     # PeelingSeparator FRAGMENT_LISTS, 5 TRACER still, 6 TRACER camera moving, 7 the same with
-    # movingResolution 0.5 (exact once still).
-    methods = ((4, "`PeelingSeparator FRAGMENT_LISTS`"), (5, "`TRACER`, still frames"),
-               (6, "`TRACER`, camera moving"), (7, "`TRACER`, camera moving, `movingResolution 0.5`"))
+    # movingResolution 0.5 (exact once still), 8 PeelingSeparator TRACER still, 9 the same with
+    # the camera moving.
+    methods = ((4, "`PeelingSeparator FRAGMENT_LISTS`"),
+               (8, "`PeelingSeparator TRACER` (`AUTO` here), still frames"),
+               (9, "`PeelingSeparator TRACER` (`AUTO` here), camera moving"),
+               (5, "group `TRACER`, still frames"),
+               (6, "group `TRACER`, camera moving"),
+               (7, "group `TRACER`, camera moving, `movingResolution 0.5`"))
     rows = []
     for kind, label in methods:
         cells, met = [], []

@@ -125,6 +125,7 @@ nlohmann::json statistics(const RenderOptions& options, const OffscreenRenderer&
   stats["list_passes"] = peeling.listPasses;
   stats["list_fragments"] = peeling.listFragments;
   stats["list_slots"] = peeling.listSlots;
+  stats["peel_traced_frames"] = peeling.tracedFrames;
   return stats;
 }
 

@@ -99,11 +99,9 @@ void GroupContents::findLights() {
 
 void GroupContents::update(SoAction* action) {
   if (!lightsValid_) findLights();
-  // Without deep shadows (a peeling separator on its own) there is nothing to cast into.
-  if (!deepShadows_) return;
   SoState* state = action->getState();
   if (!inherited_.matches(state)) {
-    if (!warnedInstanced_ && previous_.matches(state)) {
+    if (deepShadows_ && !warnedInstanced_ && previous_.matches(state)) {
       warnedInstanced_ = true;
       SoDebugError::postWarning(
           owner_->getTypeId().getName().getString(),
@@ -115,6 +113,12 @@ void GroupContents::update(SoAction* action) {
     inherited_ = InheritedState::capture(state);
     castersValid_ = false;
     ++mapsVersion_;
+  }
+  if (!castersValid_ && !deepShadows_) {
+    // Without deep shadows (a peeling separator on its own) nothing casts; the version still
+    // tells a tracer of the subgraph (GroupTracer) that its shapes changed.
+    castersValid_ = true;
+    ++castersVersion_;
   }
   if (!castersValid_) {
     // A copy: the action's own path changes as it traverses; this one is applied to.

@@ -53,6 +53,8 @@ class GroupContents {
   SoPath* cameraPath() const { return cameraPath_.get(); }
   SoPath* environmentPath() const { return environmentPath_.get(); }
   const SceneTriangles& casters() const { return casters_; }
+  // Counts the changes of the shapes below, or of the state they inherit, that made the
+  // casters be taken again (without deep shadows, that would have).
   std::uint64_t castersVersion() const { return castersVersion_; }
   std::uint64_t mapsVersion() const { return mapsVersion_; }
   std::uint64_t viewVersion() const { return viewVersion_; }  // a camera inside changed

@@ -73,8 +73,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-GroupTracer::GroupTracer(SoSeparator* owner)
-    : owner_(owner), refineSensor_(&GroupTracer::refine, this) {}
+GroupTracer::GroupTracer(SoSeparator* owner, const char* setting)
+    : owner_(owner), setting_(setting), refineSensor_(&GroupTracer::refine, this) {}
 GroupTracer::~GroupTracer() = default;
 
 void GroupTracer::refine(void* self, SoSensor*) {
@@ -148,13 +148,13 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
   for (const std::string& shape : scene_->untracedShapes())
     if (firstWarning(owner_, "not traced: " + shape))
       SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                "%s (renderer TRACER) draws %s through GL, without shadows: "
+                                "%s (%s) draws %s through GL, without shadows: "
                                 "lines, points and screen-aligned pixels are not traced",
-                                describeNode(owner_).c_str(), shape.c_str());
+                                describeNode(owner_).c_str(), setting_, shape.c_str());
 }
 
 bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents,
-                         DeepShadowStatistics& statistics) {
+                         const TracerSettings& settings, DeepShadowStatistics& statistics) {
   SoState* state = action->getState();
   Context* context = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
@@ -162,9 +162,9 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     if (!pass) {
       if (firstWarning(owner_, "no traced picture"))
         SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                  "%s: renderer TRACER cannot draw its picture (%s); rendering "
+                                  "%s: %s cannot draw its picture (%s); rendering "
                                   "with GL",
-                                  describeNode(owner_).c_str(), whyNot.c_str());
+                                  describeNode(owner_).c_str(), setting_, whyNot.c_str());
       return std::unique_ptr<Context>();
     }
     auto made = std::make_unique<Context>();
@@ -179,8 +179,8 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   } catch (const std::runtime_error& error) {
     if (firstWarning(owner_, std::string("tracer failed: ") + error.what()))
       SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                "%s: renderer TRACER failed (%s); rendering with GL",
-                                describeNode(owner_).c_str(), error.what());
+                                "%s: %s failed (%s); rendering with GL",
+                                describeNode(owner_).c_str(), setting_, error.what());
     scene_.reset();
     return false;
   }
@@ -206,15 +206,13 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const bool hadPicture = context->scene != 0;
   if (!kept || refining) {
     const auto start = std::chrono::steady_clock::now();
-    auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
     // A change right after a frame that traced for a change is part of a motion.
-    const float fraction = resolveMovingResolution(group);
-    const float scale = !kept && context->tracedLastFrame ? fraction : 1.0f;
+    const float scale = !kept && context->tracedLastFrame ? settings.movingResolution : 1.0f;
     TraceOptions options;
     options.width = std::max(1, int(std::ceil(float(viewport[2]) * scale)));
     options.height = std::max(1, int(std::ceil(float(viewport[3]) * scale)));
     const bool reduced = options.width < viewport[2] || options.height < viewport[3];
-    options.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
+    options.bounceSamples = settings.bounceSamples;
     const float* limit = reduced ? reducedLimit(*context, viewport, options.width, options.height)
                                  : context->depthNow.data();
     options.surfaces = &context->surfaces;

@@ -21,7 +21,8 @@ class GroupContents;
 class TracedPicturePass;
 struct DeepShadowStatistics;
 
-// A SoTransparentShadowGroup whose renderer is TRACER: its subgraph's triangles are traced
+// A SoTransparentShadowGroup whose renderer is TRACER, or a SoPeelingSeparator whose method is:
+// its subgraph's triangles are traced
 // on the CPU (SceneTracer: exact shadows and exact glass in one pass, from the depth GL drew
 // before the group on) and the picture is handed to the framebuffer with its depth
 // (TracedPicturePass). The subgraph is read again when it changes (its shapes or the
@@ -33,9 +34,16 @@ struct DeepShadowStatistics;
 // the last reduced one) by touching its owner. Shapes drawn with lines, points or
 // screen-aligned pixels, which have no triangles to trace, are drawn through GL after the
 // picture (a second render action over their paths), depth-tested against it.
+// What the owner asks of its traces.
+struct TracerSettings {
+  float movingResolution = 1.0f;  // the fraction of the viewport a frame of a motion traces
+  int bounceSamples = 0;          // bounce rays per pixel (0: no bounce)
+};
+
 class GroupTracer {
  public:
-  explicit GroupTracer(SoSeparator* owner);
+  // `setting` names what made `owner` trace, for its messages ("renderer TRACER").
+  GroupTracer(SoSeparator* owner, const char* setting);
   ~GroupTracer();
   GroupTracer(const GroupTracer&) = delete;
   GroupTracer& operator=(const GroupTracer&) = delete;
@@ -44,7 +52,7 @@ class GroupTracer {
   // one warning, when this context cannot draw the picture (the caller renders the group as
   // GL does).
   bool render(SoGLRenderAction* action, const GroupContents& contents,
-              DeepShadowStatistics& statistics);
+              const TracerSettings& settings, DeepShadowStatistics& statistics);
 
  private:
   struct Context {
@@ -80,6 +88,7 @@ class GroupTracer {
                    DeepShadowStatistics& statistics);
 
   SoSeparator* owner_;
+  const char* setting_;
   std::unique_ptr<SceneTracer> scene_;
   std::uint64_t sceneVersion_ = 0;   // counts the reads
   std::uint64_t shapesVersion_ = 0;  // counts the reads of the shapes (not of lights alone)

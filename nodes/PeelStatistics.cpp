@@ -21,6 +21,7 @@ void add(PeelStatistics& total, const PeelStatistics& one) {
         total.listPasses > 0 ? std::min(total.listSlots, one.listSlots) : one.listSlots;
   total.listPasses += one.listPasses;
   total.listFragments += one.listFragments;
+  total.tracedFrames += one.tracedFrames;
 }
 
 }  // namespace

@@ -16,10 +16,15 @@
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/errors/SoDebugError.h>
 
+#include <chrono>
+
 namespace ivshadow {
 
 PeelingSeparatorImpl::PeelingSeparatorImpl(SoPeelingSeparator* owner)
-    : owner_(owner), contents_(owner, false), shading_(contents_) {}
+    : owner_(owner),
+      contents_(owner, false),
+      shading_(contents_),
+      tracer_(owner, "method TRACER") {}
 
 PeelingSeparatorImpl::~PeelingSeparatorImpl() = default;
 
@@ -28,6 +33,12 @@ void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) 
     owner_->SoSeparator::GLRenderInPath(action);
   else
     owner_->SoSeparator::GLRenderBelowPath(action);
+}
+
+bool PeelingSeparatorImpl::traced(SoState* state) {
+  const int method = owner_->method.getValue();
+  if (method != SoPeelingSeparator::AUTO_METHOD) return method == SoPeelingSeparator::TRACER;
+  return autoTracer_.traces(state, owner_, "method", "FRAGMENT_LISTS");
 }
 
 PeelPass* PeelingSeparatorImpl::passFor(SoState* state) {
@@ -62,6 +73,21 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   if (GroupShading* group = ShadowGroupElement::activeGroup(state)) {
     if (!peel(action, inPath, *group)) renderPlainly(action, inPath);
     return;
+  }
+  if (traced(state)) {
+    contents_.update(action);
+    const auto start = std::chrono::steady_clock::now();
+    // Traced, a motion's frames are traced in full: the separator has no field to reduce them.
+    if (tracer_.render(action, contents_, TracerSettings{}, tracerStatistics_)) {
+      const int frames = statistics_.frames;
+      statistics_ = PeelStatistics{};
+      statistics_.frames = frames;
+      statistics_.peelMs =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
+      statistics_.tracedFrames = tracerStatistics_.tracerFrames;
+      return;
+    }
   }
   PeelPass* pass = passFor(state);
   if (pass == nullptr) {

@@ -1,8 +1,11 @@
 #pragma once
 
+#include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/PeelStatistics.h"
+#include "nodes/AutoTracerChoice.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
+#include "nodes/GroupTracer.h"
 #include "nodes/PerContext.h"
 #include "nodes/TracerActivity.h"
 
@@ -17,7 +20,9 @@ class PeelPass;
 
 // The work behind SoPeelingSeparator: the opaque pass, the peel passes and the compositing.
 // Layers are shaded by a surrounding deep shadow group's shading, with its maps, or else by
-// the separator's own (the same programs, lit by the lights in force, without shadows).
+// the separator's own (the same programs, lit by the lights in force, without shadows). With
+// method TRACER (or AUTO on a software rasteriser) outside a group, the children are traced
+// on the CPU instead (GroupTracer).
 class PeelingSeparatorImpl {
  public:
   explicit PeelingSeparatorImpl(SoPeelingSeparator* owner);
@@ -39,12 +44,18 @@ class PeelingSeparatorImpl {
   // children plainly.
   bool peel(SoGLRenderAction* action, bool inPath, GroupShading& shading);
   void renderPlainly(SoGLRenderAction* action, bool inPath);
+  // Whether the children are traced on the CPU in this context (method TRACER, or AUTO on a
+  // software rasteriser).
+  bool traced(SoState* state);
 
   SoPeelingSeparator* owner_;
   GroupContents contents_;  // the lights and camera below it (it casts no shadows)
   GroupShading shading_;
   PerContext<PeelPass> passes_;
   PeelStatistics statistics_;
+  AutoTracerChoice autoTracer_;
+  GroupTracer tracer_;
+  DeepShadowStatistics tracerStatistics_;  // the tracer's figures; statistics_ has its time
 };
 
 }  // namespace ivshadow

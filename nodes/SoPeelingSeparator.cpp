@@ -26,6 +26,9 @@ SoPeelingSeparator::SoPeelingSeparator() : impl_(new ivshadow::PeelingSeparatorI
   SO_NODE_DEFINE_ENUM_VALUE(Method, DUAL);
   SO_NODE_DEFINE_ENUM_VALUE(Method, FRONT_TO_BACK);
   SO_NODE_DEFINE_ENUM_VALUE(Method, FRAGMENT_LISTS);
+  SO_NODE_DEFINE_ENUM_VALUE(Method, TRACER);
+  // Files say AUTO; the C++ name is AUTO_METHOD, since SoSeparator's CacheEnabled has AUTO.
+  fieldData->addEnumValue("Method", "AUTO", AUTO_METHOD);
   SO_NODE_SET_SF_ENUM_TYPE(method, Method);
 }
 

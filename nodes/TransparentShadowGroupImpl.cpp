@@ -1,5 +1,6 @@
 #include "nodes/TransparentShadowGroupImpl.h"
 
+#include "nodes/DeepShadowSettings.h"
 #include "nodes/TracerActivity.h"
 
 #include "callbacks/DeepShadowPass.h"
@@ -94,7 +95,7 @@ TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner,
       renderChildren_(std::move(renderChildren)),
       contents_(owner, true),
       shading_(contents_),
-      tracer_(owner) {}
+      tracer_(owner, "renderer TRACER") {}
 
 TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
 
@@ -360,19 +361,7 @@ bool TransparentShadowGroupImpl::traced(SoGLRenderAction* action) {
   const int renderer = static_cast<SoTransparentShadowGroup*>(owner_)->renderer.getValue();
   if (renderer != SoTransparentShadowGroup::AUTO_RENDERER)
     return renderer == SoTransparentShadowGroup::TRACER;
-  const GlCapabilities* gl = capabilities_.get(
-      SoGLCacheContextElement::get(action->getState()),
-      [] { return std::make_unique<GlCapabilities>(GlCapabilities::queryCurrent()); });
-  // A CPU rasteriser shades every fragment on the cores the tracer would use; tracing the
-  // group whole is the faster of the two there (docs/PERFORMANCE.md).
-  const bool software = gl->isSoftwareRenderer();
-  if (!rendererLogged_) {
-    rendererLogged_ = true;
-    SoDebugError::postInfo("SoTransparentShadowGroup", "%s: renderer AUTO uses %s on %s",
-                           describeNode(owner_).c_str(), software ? "TRACER" : "RASTER",
-                           gl->renderer.c_str());
-  }
-  return software;
+  return autoTracer_.traces(action->getState(), owner_, "renderer", "RASTER");
 }
 
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
@@ -391,7 +380,11 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   // Traced, the group needs none of the GL path's programs or maps.
   if (traced(action)) {
     contents_.update(action);
-    if (tracer_.render(action, contents_, statistics_)) return true;
+    auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
+    TracerSettings settings;
+    settings.movingResolution = resolveMovingResolution(group);
+    settings.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
+    if (tracer_.render(action, contents_, settings, statistics_)) return true;
   }
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;

@@ -6,6 +6,7 @@
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/Export.h"
 #include "ivshadow/PeelStatistics.h"
+#include "nodes/AutoTracerChoice.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/GroupBounce.h"
 #include "nodes/GroupContents.h"
@@ -116,11 +117,10 @@ class TransparentShadowGroupImpl {
   PeelStatistics peelStatistics_;
   RayCasters rayCasters_;
   GroupBounce bounce_;
-  GroupTracer tracer_;                       // renderer TRACER
-  PerContext<GlCapabilities> capabilities_;  // what renderer AUTO chooses by
-  bool rendererLogged_ = false;              // renderer AUTO's choice was said
-  std::uint64_t bouncePlaced_ = 0;           // the mapsVersion the bounce's lights were placed for
-  std::set<const SoLight*> methodLogged_;    // lights whose AUTO choice was said
+  GroupTracer tracer_;                     // renderer TRACER
+  AutoTracerChoice autoTracer_;            // what renderer AUTO chooses
+  std::uint64_t bouncePlaced_ = 0;         // the mapsVersion the bounce's lights were placed for
+  std::set<const SoLight*> methodLogged_;  // lights whose AUTO choice was said
 };
 
 }  // namespace ivshadow

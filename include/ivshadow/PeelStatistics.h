@@ -21,6 +21,10 @@ struct PeelStatistics {
   // down to 0, where GL could not give the storage for more); summed, the fewest of the nodes
   // that listed.
   int listSlots = 0;
+  // A SoPeelingSeparator traced on the CPU (method TRACER, or AUTO on a software rasteriser):
+  // its frames that traced the picture since it was created (the others drew the one kept;
+  // peelMs is then the trace's and the picture's wall time, passes 0).
+  int tracedFrames = 0;
 };
 
 // The last frame of every SoPeelingSeparator and SoTransparentShadowGroup under `root`,

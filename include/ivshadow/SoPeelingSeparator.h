@@ -26,8 +26,21 @@ struct PeelStatistics;
   composites it (an A-buffer): the same picture in one pass whatever the layers; maxPasses and
   earlyTermination do not apply. A view in which a pixel holds more than 32 transparent
   surfaces, or whose fragments do not fit in GL's storage, is peeled with DUAL instead (one
-  warning). Coin's transparency type is overridden inside the separator. Inside a SoTransparentShadowGroup every peeled layer is shaded with the group's
-  deep shadows.
+  warning). Coin's transparency type is overridden inside the separator. Inside a
+  SoTransparentShadowGroup every peeled layer is shaded with the group's deep shadows.
+
+  TRACER takes the children's triangles away from GL: Embree traces every pixel's ray through
+  them on the CPU and composites every surface it meets in exact depth order (the reference
+  renderer's code, `ivshadow reference`, lit as Coin's fixed-function GL lights: per vertex),
+  from the near plane to the depth GL drew before the separator; the picture is blended onto
+  the framebuffer with the depth of its nearest opaque surface. While the children, the state
+  above, the camera, the viewport and the depth drawn before stay the same, a frame draws the
+  picture it kept without tracing. Lines, points and screen-aligned text are drawn by GL after
+  it, depth-tested against it. AUTO chooses per GL context: TRACER where GL is a software
+  rasteriser (Mesa's llvmpipe), whose per-fragment programs cost more than the trace,
+  FRAGMENT_LISTS on a GPU; it says which once. Inside a SoTransparentShadowGroup both peel
+  with FRAGMENT_LISTS, shaded with the group's shadows (the group's own `renderer TRACER`
+  traces its whole subgraph, this separator's children included).
 
   FILE FORMAT/DEFAULTS:
   \code
@@ -36,7 +49,7 @@ struct PeelStatistics;
         boundingBoxCaching AUTO
         renderCulling AUTO
         pickCulling AUTO
-        method FRAGMENT_LISTS   # FRAGMENT_LISTS, DUAL or FRONT_TO_BACK
+        method FRAGMENT_LISTS   # FRAGMENT_LISTS, DUAL, FRONT_TO_BACK, TRACER or AUTO
         maxPasses 0             # passes per frame, the first finding the depth range;
                                 #   0: until no layer is left, at most 64
         earlyTermination TRUE   # stop when a pass found no deeper layer; FALSE always runs
@@ -53,9 +66,13 @@ class IVSHADOW_API SoPeelingSeparator : public SoSeparator {
   SoPeelingSeparator();
 
   enum Method {
-    DUAL,           //!< nearest and farthest layer per pass
-    FRONT_TO_BACK,  //!< nearest layer per pass
-    FRAGMENT_LISTS  //!< one pass into per-pixel fragment lists, sorted and composited after
+    DUAL,            //!< nearest and farthest layer per pass
+    FRONT_TO_BACK,   //!< nearest layer per pass
+    FRAGMENT_LISTS,  //!< one pass into per-pixel fragment lists, sorted and composited after
+    TRACER,          //!< Embree traces the children on the CPU; GL draws the picture
+    // TRACER on a software rasteriser, FRAGMENT_LISTS on a GPU (file name: AUTO; SoSeparator's
+    // CacheEnabled has AUTO).
+    AUTO_METHOD
   };
 
   //! Hard limit on passes per frame, whatever maxPasses says.

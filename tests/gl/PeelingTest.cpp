@@ -1,3 +1,4 @@
+#include "callbacks/GlCapabilities.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/PeelStatistics.h"
@@ -7,8 +8,12 @@
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
+#include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTranslation.h>
 
 #include <gtest/gtest.h>
 
@@ -280,6 +285,91 @@ TEST(Peeling, FragmentListsFallBackToPeelingForACrowdedPixel) {
   EXPECT_GT(rendered.stats.passes, 20);
   int checked = 0;
   EXPECT_LE(compareWithReference(rendered.image, reference(text), {}, 1.0, checked), 1.0);
+}
+
+// method TRACER: Embree traces the children on the CPU; the picture is the exact composite,
+// the per-vertex alpha and the alpha texture included, without a peel pass.
+TEST(Peeling, TracedMatchesTheReference) {
+  for (const std::string& content : {planesAndSphere(), tippedTorus()}) {
+    expectMatchesReference(content, "method TRACER");
+    const Rendered traced = render(sceneText("method TRACER", content));
+    EXPECT_EQ(traced.stats.passes, 0);
+    EXPECT_EQ(traced.stats.listPasses, 0);
+    EXPECT_EQ(traced.stats.tracedFrames, 1);
+  }
+}
+
+// A traced separator's still frame draws the picture it kept. A child changed (the separator
+// is notified) or a transform above it moved (it is not: the state above is compared) is
+// traced again, and is the changed scene's exact picture.
+TEST(Peeling, TracedPictureIsKeptUntilTheSceneChanges) {
+  std::string text = sceneText("method TRACER", tippedTorus());
+  text.replace(text.find("  DEF Peel PeelingSeparator"), 0,
+               "  DEF Shift Translation { translation 0 0 0 }\n");
+  init();
+  std::string error;
+  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  SoSeparator* root = readIv(text);
+  const auto expectExact = [&](const std::string& scene, const char* when) {
+    renderer->render(root);
+    int checked = 0;
+    EXPECT_LE(compareWithReference(renderer->read(), reference(scene), {}, kTolerance, checked),
+              kTolerance)
+        << when << "; images in " << outputDir();
+    EXPECT_GT(checked, kSize * kSize * 9 / 10) << when;
+  };
+  expectExact(text, "first frame");
+  expectExact(text, "still frame");
+  EXPECT_EQ(collectPeelStatistics(root).tracedFrames, 1) << "the still frame traced";
+
+  SoSearchAction search;
+  search.setType(SoMaterial::getClassTypeId());
+  search.apply(root);
+  ASSERT_NE(search.getPath(), nullptr);
+  static_cast<SoMaterial*>(search.getPath()->getTail())->diffuseColor.setValue(1.0f, 0.3f, 0.0f);
+  std::string recoloured = text;
+  recoloured.replace(recoloured.find("diffuseColor 0 0.8 0.9"),
+                     std::string("diffuseColor 0 0.8 0.9").size(), "diffuseColor 1 0.3 0");
+  expectExact(recoloured, "a child changed");
+  EXPECT_EQ(collectPeelStatistics(root).tracedFrames, 2);
+
+  static_cast<SoTranslation*>(SoNode::getByName("Shift"))->translation.setValue(0.3f, -0.2f, 0.0f);
+  std::string shifted = recoloured;
+  shifted.replace(shifted.find("translation 0 0 0"), std::string("translation 0 0 0").size(),
+                  "translation 0.3 -0.2 0");
+  expectExact(shifted, "a transform above moved");
+  EXPECT_EQ(collectPeelStatistics(root).tracedFrames, 3);
+  renderer.reset();
+  root->unref();
+}
+
+// method AUTO traces on a software rasteriser (these machines: llvmpipe) and lists the
+// fragments on a GPU, says which once, and is exact either way.
+TEST(Peeling, AutoTracesOnASoftwareRasteriserAndSaysSo) {
+  const std::string text = sceneText("method AUTO", planesAndSphere());
+  init();
+  CoinMessageCapture messages;
+  std::string error;
+  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  const bool software = GlCapabilities::queryCurrent().isSoftwareRenderer();
+  SoSeparator* root = readIv(text);
+  renderer->render(root);
+  renderer->render(root);
+  const PeelStatistics stats = collectPeelStatistics(root);
+  int checked = 0;
+  EXPECT_LE(compareWithReference(renderer->read(), reference(text), {}, kTolerance, checked),
+            kTolerance);
+  renderer.reset();
+  root->unref();
+  int said = 0;
+  for (const CoinMessageCapture::Message& m : messages.messages())
+    said += m.text.find(software ? "method AUTO uses TRACER" : "method AUTO uses FRAGMENT_LISTS") !=
+            std::string::npos;
+  EXPECT_EQ(said, 1);
+  EXPECT_EQ(stats.tracedFrames, software ? 1 : 0);
+  EXPECT_EQ(stats.listPasses > 0, !software);
 }
 
 TEST(Peeling, TheScenesNeedOrderIndependentTransparency) {
