@@ -372,6 +372,7 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
       result->device.get(), data.triangles.size(),
       [&data](std::size_t i) { return &data.positions[i].x; }, cameraFilter, error);
   if (!result->scene) throw std::runtime_error(error);
+  result->packetWidth = nativePacketWidth(result->device.get());
   return result;
 }
 

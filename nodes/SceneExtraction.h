@@ -138,6 +138,7 @@ struct SceneTracer::Data {
   detail::Extraction extraction;
   EmbreeDevice device;
   EmbreeScene scene;
+  int packetWidth = 1;  // the device's native packet width (nativePacketWidth)
   std::vector<const SoPath*> untracedPaths;
   int width = 0;
   int height = 0;

@@ -40,11 +40,15 @@ using detail::Triangle;
 
 using Hit = SurfacesMet::Hit;
 
-// Every surface a camera ray meets, collected by Embree's filter function.
+// Every surface a camera ray meets, collected by Embree's filter function: hits[id] for the
+// ray whose id is `id` (a single ray's is 0).
 struct CameraRayContext : RTCIntersectContext {
   const Extraction* data = nullptr;
   std::vector<Hit>* hits = nullptr;
 };
+
+// Camera rays traced together, as many as a packet holds.
+constexpr int kMaxPacket = 16;
 
 const TextureImage* imageOf(const Extraction& data, const Triangle& tri) {
   return tri.texture >= 0 ? &data.textures[std::size_t(tri.texture)] : nullptr;
@@ -62,17 +66,21 @@ namespace detail {
 
 void cameraFilter(const RTCFilterFunctionNArguments* args) {
   auto& context = *static_cast<CameraRayContext*>(args->context);
-  Hit hit;
-  hit.primitive = RTCHitN_primID(args->hit, args->N, 0);
-  hit.u = RTCHitN_u(args->hit, args->N, 0);
-  hit.v = RTCHitN_v(args->hit, args->N, 0);
-  hit.t = RTCRayN_tfar(args->ray, args->N, 0);
-  const float alpha = opacity(*context.data, context.data->triangles[hit.primitive], hit.u, hit.v);
-  // An opaque surface is accepted: Embree then only looks for nearer ones. The others are
-  // collected and passed over.
-  if (isOpaque(alpha)) return;
-  if (alpha > 0.0f) context.hits->push_back(hit);
-  args->valid[0] = 0;
+  for (unsigned int i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    Hit hit;
+    hit.primitive = RTCHitN_primID(args->hit, args->N, i);
+    hit.u = RTCHitN_u(args->hit, args->N, i);
+    hit.v = RTCHitN_v(args->hit, args->N, i);
+    hit.t = RTCRayN_tfar(args->ray, args->N, i);
+    const float alpha =
+        opacity(*context.data, context.data->triangles[hit.primitive], hit.u, hit.v);
+    // An opaque surface is accepted: Embree then only looks for nearer ones. The others are
+    // collected and passed over.
+    if (isOpaque(alpha)) continue;
+    if (alpha > 0.0f) context.hits[RTCRayN_id(args->ray, args->N, i)].push_back(hit);
+    args->valid[i] = 0;
+  }
 }
 
 }  // namespace detail
@@ -163,9 +171,13 @@ void traceShadows(RowShading& row) {
 
 class Tracer {
  public:
-  Tracer(const Extraction& data, RTCScene scene, const SbMatrix& viewing,
+  Tracer(const Extraction& data, RTCScene scene, int packetWidth, const SbMatrix& viewing,
          const SbMatrix& projection, const TraceOptions& options)
-      : data_(data), scene_(scene), options_(options), viewing_(viewing) {
+      : data_(data),
+        scene_(scene),
+        packetWidth_(std::min(packetWidth, kMaxPacket)),
+        options_(options),
+        viewing_(viewing) {
     worldToClip_ = viewing * projection;
     clipToWorld_ = worldToClip_.inverse();
     SbVec3f back;
@@ -203,23 +215,34 @@ class Tracer {
     return ray;
   }
 
-  // The surfaces along `ray` into `hits` (surfacesAlong), ending at `limit`, the window depth
-  // where the ray ends (1: the far plane). Returns the window depth of the nearest opaque
-  // one, or `limit` where there is none.
-  float visible(const CameraRay& ray, float limit, std::vector<Hit>& hits) const {
-    float tfar = 1.0f;  // the far plane clips as in GL
-    if (limit < 1.0f) {
-      // The limit's point on this ray: its parameter, as the ray is linear in the world.
-      SbVec3f end;
-      clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, 2.0f * limit - 1.0f), end);
-      tfar =
-          glm::dot(toGlm(end) - ray.origin, ray.direction) / glm::dot(ray.direction, ray.direction);
+  // The surfaces along `count` (at most kMaxPacket) neighbouring camera rays, rays[i]'s into
+  // hits[i] in exact depth order, ending at limits[i], the window depth where the ray ends (1:
+  // the far plane), or at the nearest opaque surface; depths[i] is that surface's window depth,
+  // or the limit where there is none. Traced as one packet where Embree has them: neighbouring
+  // camera rays walk the same nodes of the tree.
+  void visible(const CameraRay* rays, const float* limits, int count, std::vector<Hit>* hits,
+               float* depths) const {
+    switch (packetWidth_) {
+      case 16:
+        return visibleTogether<16, RTCRayHit16>(rays, limits, count, hits, depths, rtcIntersect16);
+      case 8:
+        for (int i = 0; i < count; i += 8)
+          visibleTogether<8, RTCRayHit8>(rays + i, limits + i, std::min(8, count - i), hits + i,
+                                         depths + i, rtcIntersect8);
+        return;
+      case 4:
+        for (int i = 0; i < count; i += 4)
+          visibleTogether<4, RTCRayHit4>(rays + i, limits + i, std::min(4, count - i), hits + i,
+                                         depths + i, rtcIntersect4);
+        return;
+      default:
+        for (int i = 0; i < count; ++i) {
+          const CameraRay& ray = rays[i];
+          const bool opaque =
+              surfacesAlong(ray.origin, ray.direction, 0.0f, rayEnd(ray, limits[i]), hits[i]);
+          depths[i] = opaque ? windowDepth(ray, hits[i].back().t) : limits[i];
+        }
     }
-    if (!surfacesAlong(ray.origin, ray.direction, 0.0f, tfar, hits)) return limit;
-    SbVec3f clip;
-    const glm::vec3 p = ray.origin + hits.back().t * ray.direction;
-    worldToClip_.multVecMatrix(SbVec3f(p.x, p.y, p.z), clip);
-    return glm::clamp(0.5f * clip[2] + 0.5f, 0.0f, 1.0f);
   }
 
   // The `count` surfaces `hits` met along `ray`, front to back, shaded up to their shadows
@@ -256,9 +279,74 @@ class Tracer {
   }
 
  private:
+  // Where a camera ray ending at window depth `limit` ends: its parameter (the far plane: 1).
+  float rayEnd(const CameraRay& ray, float limit) const {
+    if (!(limit < 1.0f)) return 1.0f;  // the far plane clips as in GL
+    // The limit's point on this ray: its parameter, as the ray is linear in the world.
+    SbVec3f end;
+    clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, 2.0f * limit - 1.0f), end);
+    return glm::dot(toGlm(end) - ray.origin, ray.direction) /
+           glm::dot(ray.direction, ray.direction);
+  }
+
+  // The window depth of the point at parameter `t` along a camera ray.
+  float windowDepth(const CameraRay& ray, float t) const {
+    SbVec3f clip;
+    const glm::vec3 p = ray.origin + t * ray.direction;
+    worldToClip_.multVecMatrix(SbVec3f(p.x, p.y, p.z), clip);
+    return glm::clamp(0.5f * clip[2] + 0.5f, 0.0f, 1.0f);
+  }
+
+  template <int Width, typename Packet>
+  void visibleTogether(const CameraRay* rays, const float* limits, int count,
+                       std::vector<Hit>* hits, float* depths,
+                       void (*intersect)(const int*, RTCScene, RTCIntersectContext*,
+                                         Packet*)) const {
+    Packet packet{};
+    int valid[Width] = {};
+    CameraRayContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    context.data = &data_;
+    context.hits = hits;
+    for (int i = 0; i < count; ++i) {
+      hits[i].clear();
+      packet.ray.org_x[i] = rays[i].origin.x;
+      packet.ray.org_y[i] = rays[i].origin.y;
+      packet.ray.org_z[i] = rays[i].origin.z;
+      packet.ray.dir_x[i] = rays[i].direction.x;
+      packet.ray.dir_y[i] = rays[i].direction.y;
+      packet.ray.dir_z[i] = rays[i].direction.z;
+      packet.ray.tnear[i] = 0.0f;
+      packet.ray.tfar[i] = rayEnd(rays[i], limits[i]);
+      packet.ray.mask[i] = 0xFFFFFFFFu;
+      packet.ray.id[i] = unsigned(i);
+      packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+      valid[i] = -1;
+    }
+    intersect(valid, scene_, &context, &packet);
+    for (int i = 0; i < count; ++i) {
+      const bool opaque = packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+      inDepthOrder(hits[i], opaque,
+                   Hit{packet.ray.tfar[i], packet.hit.primID[i], packet.hit.u[i], packet.hit.v[i]});
+      depths[i] = opaque ? windowDepth(rays[i], packet.ray.tfar[i]) : limits[i];
+    }
+  }
+
+  // The transparent surfaces a ray collected, put in exact depth order (coincident ones in the
+  // order Coin traversed them) and ended at the opaque surface `nearest` where `opaque`.
+  static void inDepthOrder(std::vector<Hit>& hits, bool opaque, const Hit& nearest) {
+    hits.erase(std::remove_if(hits.begin(), hits.end(),
+                              [&](const Hit& h) { return opaque && h.t >= nearest.t; }),
+               hits.end());
+    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+      return a.t != b.t ? a.t < b.t : a.primitive < b.primitive;
+    });
+    if (opaque) hits.push_back(nearest);
+  }
+
   // Every surface along origin + t direction, tnear < t < tfar, into `hits` in exact depth
-  // order (coincident ones in the order Coin traversed them), ending at the first opaque one
-  // if there is one; true when there is.
+  // order, ending at the first opaque one if there is one; true when there is.
   bool surfacesAlong(const glm::vec3& origin, const glm::vec3& direction, float tnear, float tfar,
                      std::vector<Hit>& hits) const {
     hits.clear();
@@ -266,7 +354,7 @@ class Tracer {
     rtcInitIntersectContext(&context);
     context.data = &data_;
     context.hits = &hits;
-    RTCRayHit rayHit{};
+    RTCRayHit rayHit{};  // id 0: hits[0]
     rayHit.ray.org_x = origin.x;
     rayHit.ray.org_y = origin.y;
     rayHit.ray.org_z = origin.z;
@@ -278,16 +366,9 @@ class Tracer {
     rayHit.ray.mask = 0xFFFFFFFFu;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &rayHit);
-    const bool opaqueHit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    const float limit = rayHit.ray.tfar;
-    hits.erase(std::remove_if(hits.begin(), hits.end(),
-                              [&](const Hit& h) { return opaqueHit && h.t >= limit; }),
-               hits.end());
-    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
-      return a.t != b.t ? a.t < b.t : a.primitive < b.primitive;
-    });
-    if (opaqueHit) hits.push_back(Hit{limit, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v});
-    return opaqueHit;
+    const bool opaque = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    inDepthOrder(hits, opaque, Hit{rayHit.ray.tfar, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v});
+    return opaque;
   }
 
   // Whether hits[i] is a surface met before (a shared edge, a spatial split): composited once.
@@ -550,6 +631,7 @@ class Tracer {
 
   const Extraction& data_;
   RTCScene scene_;
+  int packetWidth_;  // camera rays traced together
   const TraceOptions& options_;
   SbMatrix viewing_;
   SbMatrix worldToClip_;
@@ -615,9 +697,10 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
   out.cameraRays = 0;
   out.shadowRays = 0;
   out.bounceRays = 0;
-  const Tracer tracer(data_->extraction, data_->scene.get(), viewing, projection, options);
+  const Tracer tracer(data_->extraction, data_->scene.get(), data_->packetWidth, viewing,
+                      projection, options);
   const int workers = workerCount(options.threads);
-  std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers));
+  std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers) * kMaxPacket);
   std::vector<RowShading> shading(static_cast<std::size_t>(workers));
   std::vector<RayCounts> rays(static_cast<std::size_t>(workers));
   SurfacesMet* kept = options.surfaces;
@@ -634,7 +717,7 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
             depthLimit != nullptr
                 ? depthLimit + std::size_t(options.height - 1 - y) * std::size_t(options.width)
                 : nullptr;
-        std::vector<Hit>& found = hits[std::size_t(worker)];
+        std::vector<Hit>* found = &hits[std::size_t(worker) * kMaxPacket];
         SurfacesMet::Row* keptRow = kept != nullptr ? &kept->rows[std::size_t(y)] : nullptr;
         if (keptRow != nullptr && !reuse) {
           keptRow->hits.clear();
@@ -644,19 +727,30 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
         RowShading& shades = shading[std::size_t(worker)];
         RayCounts& counts = rays[std::size_t(worker)];
         shades.clear();
-        for (int x = 0; x < options.width; ++x) {
-          const Tracer::CameraRay ray = tracer.cameraRay(x, y);
+        for (int x = 0; x < options.width; x += kMaxPacket) {
+          const int count = std::min(kMaxPacket, options.width - x);
+          Tracer::CameraRay rays[kMaxPacket];
+          for (int i = 0; i < count; ++i) rays[i] = tracer.cameraRay(x + i, y);
           if (reuse) {
-            const std::uint32_t begin = x > 0 ? keptRow->ends[std::size_t(x) - 1] : 0u;
-            tracer.gather(ray, keptRow->hits.data() + begin, keptRow->ends[std::size_t(x)] - begin,
-                          keptRow->depth[std::size_t(x)], counts, shades);
-          } else {
-            const float depth = tracer.visible(ray, limits != nullptr ? limits[x] : 1.0f, found);
-            tracer.gather(ray, found.data(), found.size(), depth, counts, shades);
+            for (int i = 0; i < count; ++i) {
+              const std::size_t at = std::size_t(x + i);
+              const std::uint32_t begin = at > 0 ? keptRow->ends[at - 1] : 0u;
+              tracer.gather(rays[i], keptRow->hits.data() + begin, keptRow->ends[at] - begin,
+                            keptRow->depth[at], counts, shades);
+            }
+            continue;
+          }
+          float ends[kMaxPacket];
+          float depths[kMaxPacket];
+          for (int i = 0; i < count; ++i) ends[i] = limits != nullptr ? limits[x + i] : 1.0f;
+          tracer.visible(rays, ends, count, found, depths);
+          for (int i = 0; i < count; ++i) {
+            tracer.gather(rays[i], found[i].data(), found[i].size(), depths[i], counts, shades);
             if (keptRow != nullptr) {
-              keptRow->hits.insert(keptRow->hits.end(), found.begin(), found.end());
-              keptRow->ends[std::size_t(x)] = std::uint32_t(keptRow->hits.size());
-              keptRow->depth[std::size_t(x)] = depth;
+              const std::size_t at = std::size_t(x + i);
+              keptRow->hits.insert(keptRow->hits.end(), found[i].begin(), found[i].end());
+              keptRow->ends[at] = std::uint32_t(keptRow->hits.size());
+              keptRow->depth[at] = depths[i];
             }
           }
         }

@@ -103,11 +103,7 @@ std::unique_ptr<CasterScene> CasterScene::build(RTCDevice device, SceneTriangles
                 batch.vertexCount / 3, batch.texture);
   result->measureFlatColours();
 
-  result->packetWidth_ =
-      rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)  ? 16
-      : rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) ? 8
-      : rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY4_SUPPORTED) ? 4
-                                                                                : 1;
+  result->packetWidth_ = nativePacketWidth(device);
   result->scene_ = buildTriangleScene(
       device, triangles.triangleCount(),
       [&triangles](std::size_t i) { return triangles.vertices[i].position; }, shadowFilter, error);

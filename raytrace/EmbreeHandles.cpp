@@ -28,6 +28,13 @@ EmbreeDevice createEmbreeDevice(std::string& error, EmbreeMemory* memory) {
   return EmbreeDevice(device);
 }
 
+int nativePacketWidth(RTCDevice device) {
+  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)) return 16;
+  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED)) return 8;
+  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY4_SUPPORTED)) return 4;
+  return 1;
+}
+
 EmbreeScene buildTriangleScene(RTCDevice device, std::size_t count,
                                const std::function<const float*(std::size_t)>& corner,
                                RTCFilterFunctionN filter, std::string& error) {

@@ -33,11 +33,16 @@ struct EmbreeMemory {
 };
 
 // A robust scene of `count` separate triangles whose corner i (0 .. 3 count - 1) is at
-// corner(i)[0..2], with `filter` called for every hit found by rtcIntersect1 or rtcOccluded1
-// (triangle k is primitive k). Null with the reason in `error` when Embree cannot hold it.
+// corner(i)[0..2], with `filter` called for every hit found by rtcIntersect or rtcOccluded
+// (triangle k is primitive k; in a packet, the filter finds its ray by the ray's id). Null with the
+// reason in `error` when Embree cannot hold it.
 IVSHADOW_INTERNAL EmbreeScene buildTriangleScene(
     RTCDevice device, std::size_t count, const std::function<const float*(std::size_t)>& corner,
     RTCFilterFunctionN filter, std::string& error);
+
+// The widest ray packet `device` traces natively (16, 8 or 4 rays), or 1 when it traces none:
+// a packet of that width walks the tree once for all its rays.
+IVSHADOW_INTERNAL int nativePacketWidth(RTCDevice device);
 
 // A device using every core; null with Embree's reason in `error` when it cannot be made.
 // `memory`, when given, must outlive the device.
