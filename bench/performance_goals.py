@@ -79,8 +79,8 @@ def peel_rows(m):
     # movingResolution 0.5 (exact once still), 8 PeelingSeparator TRACER still, 9 the same with
     # the camera moving.
     methods = ((4, "`PeelingSeparator FRAGMENT_LISTS`"),
-               (8, "`PeelingSeparator TRACER` (`AUTO` here), still frames"),
-               (9, "`PeelingSeparator TRACER` (`AUTO` here), camera moving"),
+               (8, "`PeelingSeparator TRACER` (what `AUTO` picks here), still frames"),
+               (9, "`PeelingSeparator TRACER` (what `AUTO` picks here), camera moving"),
                (5, "group `TRACER`, still frames"),
                (6, "group `TRACER`, camera moving"),
                (7, "group `TRACER`, camera moving, `movingResolution 0.5`"))

@@ -21,25 +21,24 @@ class GroupContents;
 class TracedPicturePass;
 struct DeepShadowStatistics;
 
-// A SoTransparentShadowGroup whose renderer is TRACER, or a SoPeelingSeparator whose method is:
-// its subgraph's triangles are traced
-// on the CPU (SceneTracer: exact shadows and exact glass in one pass, from the depth GL drew
-// before the group on) and the picture is handed to the framebuffer with its depth
-// (TracedPicturePass). The subgraph is read again when it changes (its shapes or the
-// inherited state), only its lights when they or the camera moved; the picture is traced again when
-// the subgraph, the camera, the viewport or the depth drawn before it changed, else the one kept is
-// drawn. While the scene moves (a frame traces right after one that traced) the picture is
-// traced at the group's movingResolution and refined, in full, by the first frame that
-// finds nothing changed; the group schedules that frame itself (kRefineDelaySeconds after
-// the last reduced one) by touching its owner. Shapes drawn with lines, points or
-// screen-aligned pixels, which have no triangles to trace, are drawn through GL after the
-// picture (a second render action over their paths), depth-tested against it.
 // What the owner asks of its traces.
 struct TracerSettings {
   float movingResolution = 1.0f;  // the fraction of the viewport a frame of a motion traces
   int bounceSamples = 0;          // bounce rays per pixel (0: no bounce)
 };
 
+// A SoTransparentShadowGroup whose renderer is TRACER, or a SoPeelingSeparator whose method
+// is: its subgraph's triangles are traced on the CPU (SceneTracer: exact shadows and exact
+// glass in one pass, from the depth GL drew before the owner on) and the picture is handed to
+// the framebuffer with its depth (TracedPicturePass). The subgraph is read again when it
+// changes (its shapes or the inherited state), only its lights when they or the camera moved;
+// the picture is traced again when the subgraph, the camera, the viewport or the depth drawn
+// before it changed, else the one kept is drawn. While the scene moves (a frame traces right
+// after one that traced) the picture is traced at the settings' movingResolution and refined,
+// in full, by the first frame that finds nothing changed; the tracer schedules that frame
+// itself (kRefineDelaySeconds after the last reduced one) by touching its owner. Shapes drawn with
+// lines, points or screen-aligned pixels, which have no triangles to trace, are drawn through GL
+// after the picture (a second render action over their paths), depth-tested against it.
 class GroupTracer {
  public:
   // `setting` names what made `owner` trace, for its messages ("renderer TRACER").

@@ -5,7 +5,9 @@
 #include "callbacks/PeelPass.h"
 #include "callbacks/ShadingUniforms.h"
 #include "ivshadow/SoPeelingSeparator.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DepthPeeling.h"
+#include "nodes/NodesOfType.h"
 #include "nodes/ShadowGroupElement.h"
 #include "scene/SceneTriangles.h"
 #include "scene/WarnOnce.h"
@@ -16,6 +18,7 @@
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/errors/SoDebugError.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace ivshadow {
@@ -78,7 +81,19 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
     contents_.update(action);
     const auto start = std::chrono::steady_clock::now();
     // Traced, a motion's frames are traced in full: the separator has no field to reduce them.
-    if (tracer_.render(action, contents_, TracerSettings{}, tracerStatistics_)) {
+    // Groups below with bounce TRUE bounce as the GL path draws them.
+    if (bounceVersion_ != contents_.castersVersion()) {
+      bounceVersion_ = contents_.castersVersion();
+      bounceSamples_ = 0;
+      forEachNodeOfType<SoTransparentShadowGroup>(
+          owner_, [this](const SoTransparentShadowGroup& g) {
+            if (g.isActive.getValue() && g.bounce.getValue())
+              bounceSamples_ = std::max(bounceSamples_, g.bounceLights.getValue());
+          });
+    }
+    TracerSettings settings;
+    settings.bounceSamples = bounceSamples_;
+    if (tracer_.render(action, contents_, settings, tracerStatistics_)) {
       const int frames = statistics_.frames;
       statistics_ = PeelStatistics{};
       statistics_.frames = frames;
@@ -126,7 +141,11 @@ bool PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShad
   PeelOptions options;
   const int method = owner_->method.getValue();
   options.dual = method != SoPeelingSeparator::FRONT_TO_BACK;
-  options.fragmentLists = method == SoPeelingSeparator::FRAGMENT_LISTS;
+  // TRACER and AUTO peel (where they do not trace: inside a group, on a GPU, or when the
+  // tracer cannot draw) with the lists.
+  options.fragmentLists = method == SoPeelingSeparator::FRAGMENT_LISTS ||
+                          method == SoPeelingSeparator::TRACER ||
+                          method == SoPeelingSeparator::AUTO_METHOD;
   options.owner = owner_;
   options.maxPasses = owner_->maxPasses.getValue();
   options.earlyTermination = owner_->earlyTermination.getValue();

@@ -56,6 +56,10 @@ class PeelingSeparatorImpl {
   AutoTracerChoice autoTracer_;
   GroupTracer tracer_;
   DeepShadowStatistics tracerStatistics_;  // the tracer's figures; statistics_ has its time
+  // The bounce rays per pixel of the groups below with bounce TRUE (the largest), found for
+  // the shapes of castersVersion bounceVersion_.
+  int bounceSamples_ = 0;
+  std::uint64_t bounceVersion_ = ~std::uint64_t(0);
 };
 
 }  // namespace ivshadow

@@ -303,7 +303,7 @@ class Tracer {
                        void (*intersect)(const int*, RTCScene, RTCIntersectContext*,
                                          Packet*)) const {
     Packet packet{};
-    int valid[Width] = {};
+    alignas(64) int valid[Width] = {};  // Embree reads the mask as one vector
     CameraRayContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;

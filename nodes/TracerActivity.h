@@ -2,8 +2,9 @@
 
 namespace ivshadow {
 
-// What a traced group (renderer TRACER) is doing that every other group and peeling separator
-// must know of, process-wide, since the nodes it reaches are not only its own:
+// What a traced group (renderer TRACER) or traced peeling separator (method TRACER) is doing
+// that every other group and peeling separator must know of, process-wide, since the nodes it
+// reaches are not only its own:
 // - DrawingUntraced: a nested render action draws the shapes it does not trace, over paths
 //   from the root through enclosing groups; every group and separator on them renders as a
 //   plain separator meanwhile (their maps, peeling and pictures belong to the outer frame).

@@ -251,7 +251,7 @@ void CasterScene::tracePackets(const Query* queries, std::size_t count, glm::vec
   std::size_t next = 0;
   while (next < count) {
     Packet packet{};
-    int valid[Width] = {};
+    alignas(64) int valid[Width] = {};  // Embree reads the mask as one vector
     std::size_t answer[Width];
     int used = 0;
     for (; used < Width && next < count; ++next) {

@@ -87,6 +87,30 @@ TEST(Bounce, TheWallShowsTheFloorsTintedLightTimesTheFormFactor) {
   EXPECT_NEAR(patch.actual / patch.green, 2.0, 0.1);
 }
 
+// A traced PeelingSeparator around the group traces the group's bounce with the group's
+// rays per point: the reference's picture (the same tracer, 256 rays, the group's default),
+// the blend onto the framebuffer's 8 bits its one rounding more. Without the bounce the
+// wall's patch would be black.
+TEST(Bounce, ATracedSeparatorAroundTheGroupTracesItsBounce) {
+  std::string scene = bounceWall("bounce TRUE");
+  scene.replace(scene.find("DEF Room TransparentShadowGroup {"),
+                std::string("DEF Room TransparentShadowGroup {").size(),
+                "PeelingSeparator { method TRACER DEF Room TransparentShadowGroup {");
+  scene.insert(scene.rfind('}'), "}\n");
+  const Image traced = renderIv(scene, kSize);
+  const Image exact = referenceIv(scene, kSize);
+  double worst = 0.0, lit = 0.0;
+  for (int py = 0; py < kSize; ++py)
+    for (int px = 0; px < kSize; ++px) {
+      if (!inBounceWallPatch(bounceWallPoint(px, py, kSize))) continue;
+      lit = std::max(lit, channel(exact, px, py, 0));
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(channel(traced, px, py, c) - channel(exact, px, py, c)));
+    }
+  EXPECT_GT(lit, 20.0) << "the patch is lit by the bounce alone";
+  EXPECT_LE(worst, 1.0);
+}
+
 TEST(Bounce, TheWallMatchesTheReferencesBounce) {
   // The reference traces the same bounce exactly, with 256 rays per point (5.9 % RMS per
   // pixel). Over the patch's 160 pixels the signed mean difference is the GL path's bias plus
@@ -145,9 +169,9 @@ TEST(Bounce, ABoxOnTheFloorShadowsTheBounceBehindIt) {
   // An opaque box 0.4 high on the floor in front of the wall's lower middle hides part of the
   // floor from it: the wall behind it gets less of the bounce in both paths (no analytic
   // answer; the reference is exact). Measured at the patch's lower half, y within 0.2: the
-  // reference keeps 44 % of the open wall, GL 44 % (0.99 of the reference's). Bounds: both below 60 %, and GL within
-  // 10 % of the reference there (the ISM's own error, where occluders matter; a map that
-  // missed the box would keep 100 %).
+  // reference keeps 44 % of the open wall, GL 44 % (0.99 of the reference's). Bounds: both below 60
+  // %, and GL within 10 % of the reference there (the ISM's own error, where occluders matter; a
+  // map that missed the box would keep 100 %).
   const std::string box =
       "    Separator { Translation { translation 0.45 0 0.2 } Cube { width 0.3 height 0.6 "
       "depth 0.4 } }\n";

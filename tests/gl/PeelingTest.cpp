@@ -13,6 +13,7 @@
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTexture2.h>
 #include <Inventor/nodes/SoTranslation.h>
 
 #include <gtest/gtest.h>
@@ -300,12 +301,13 @@ TEST(Peeling, TracedMatchesTheReference) {
 }
 
 // A traced separator's still frame draws the picture it kept. A child changed (the separator
-// is notified) or a transform above it moved (it is not: the state above is compared) is
-// traced again, and is the changed scene's exact picture.
+// is notified), a transform above it moved or a texture set above it (it is not notified of
+// either: the state above is compared) is traced again, and is the changed scene's exact
+// picture.
 TEST(Peeling, TracedPictureIsKeptUntilTheSceneChanges) {
   std::string text = sceneText("method TRACER", tippedTorus());
   text.replace(text.find("  DEF Peel PeelingSeparator"), 0,
-               "  DEF Shift Translation { translation 0 0 0 }\n");
+               "  DEF Shift Translation { translation 0 0 0 }\n  DEF Above Texture2 { }\n");
   init();
   std::string error;
   auto renderer = OffscreenRenderer::create(kSize, kSize, error);
@@ -340,6 +342,19 @@ TEST(Peeling, TracedPictureIsKeptUntilTheSceneChanges) {
                   "translation 0.3 -0.2 0");
   expectExact(shifted, "a transform above moved");
   EXPECT_EQ(collectPeelStatistics(root).tracedFrames, 3);
+
+  // A texture above the separator textures its children (Coin's MODULATE): the state they
+  // inherit changed, which the separator is not notified of.
+  const std::string texel = "image 1 1 4 0x4080FFC0";
+  static_cast<SoTexture2*>(SoNode::getByName("Above"))
+      ->image.setValue(SbVec2s(1, 1), 4,
+                       reinterpret_cast<const unsigned char*>("\x40\x80\xff\xc0"));
+  std::string textured = shifted;
+  textured.replace(textured.find("DEF Above Texture2 { }"),
+                   std::string("DEF Above Texture2 { }").size(),
+                   "DEF Above Texture2 { " + texel + " }");
+  expectExact(textured, "a texture above set");
+  EXPECT_EQ(collectPeelStatistics(root).tracedFrames, 4);
   renderer.reset();
   root->unref();
 }
@@ -440,13 +455,29 @@ TEST(Peeling, EarlyTerminationOffRunsEveryPass) {
   EXPECT_EQ(rendered.stats.passes, 5);
 }
 
-TEST(Peeling, PeeledLayersInsideAShadowGroupShowItsShadows) {
-  // Seen from above: a red glass (opacity 0.4) over a green glass (opacity 0.8) over the
-  // floor, all under the group's deep shadow light. Opacities are exact in 8 bits.
+// Seen from above: a red glass (opacity 0.4) over a green glass (opacity 0.8) over the floor,
+// all under the group's deep shadow light, in a separator with `peelFields`, in a group with
+// `groupFields`. Opacities are exact in 8 bits.
+void expectPeeledInsideAShadowGroup(const std::string& peelFields,
+                                    const std::string& groupFields = "") {
   ShadowScene scene;
   scene.filters = {Filter{0.3, 0.5, {1, 0, 0}, 0.6, ""}, Filter{0.4, 0.25, {0, 1, 0}, 0.2, ""}};
   scene.peelFilters = true;
-  const Image image = renderIv(scene.text(), ShadowScene::kSize);
+  scene.groupFields = groupFields;
+  std::string text = scene.text();
+  text.replace(text.find("PeelingSeparator {"), std::string("PeelingSeparator {").size(),
+               "PeelingSeparator { " + peelFields);
+  SoNode* root = nullptr;
+  const Image image = renderIv(text, ShadowScene::kSize, &root);
+  const PeelStatistics stats = collectPeelStatistics(root);
+  root->unref();
+  // Inside a group the layers are peeled with its shading (its renderer TRACER would trace
+  // them): by the group's own peeling, or, where the group leaves transparency to Coin, by the
+  // separator, TRACER and AUTO with the lists.
+  EXPECT_EQ(stats.tracedFrames, 0) << peelFields;
+  if (peelFields.find("FRONT_TO_BACK") == std::string::npos &&
+      peelFields.find("DUAL") == std::string::npos)
+    EXPECT_GE(stats.listPasses, 1) << peelFields;
   const auto red = transmittance(scene.filters[0], ColourModel::Saturate);
   const auto green = transmittance(scene.filters[1], ColourModel::Saturate);
   const std::string failure = compareWithExpectation(
@@ -468,7 +499,16 @@ TEST(Peeling, PeeledLayersInsideAShadowGroupShowItsShadows) {
         return e;
       },
       kTolerance);
-  EXPECT_TRUE(failure.empty()) << failure;
+  EXPECT_TRUE(failure.empty()) << peelFields << ": " << failure;
+}
+
+TEST(Peeling, PeeledLayersInsideAShadowGroupShowItsShadows) {
+  expectPeeledInsideAShadowGroup("");
+  expectPeeledInsideAShadowGroup("method DUAL");
+  expectPeeledInsideAShadowGroup("method TRACER");
+  expectPeeledInsideAShadowGroup("method AUTO");
+  for (const char* method : {"method FRAGMENT_LISTS", "method TRACER", "method AUTO"})
+    expectPeeledInsideAShadowGroup(method, "transparency COIN_BLENDING");
 }
 
 }  // namespace
