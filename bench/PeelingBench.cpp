@@ -2,7 +2,8 @@
 // SoPeelingSeparator (DUAL, FRONT_TO_BACK, FRAGMENT_LISTS, and TRACER still and with the
 // camera moving) and a group with renderer TRACER (still, with the camera moving, and moving
 // with movingResolution 0.5) against Coin's
-// SORTED_LAYERS_BLEND with as many passes as there are layers, and plain BLEND. Run:
+// SORTED_LAYERS_BLEND with as many passes as there are layers and with its default 4, and
+// plain BLEND. Run:
 // build/bin/ivshadow_bench
 // --benchmark_filter=Peel. Times are wall clock per frame, GPU finished; `max_error` is the
 // largest channel error (0..255) against the exact CPU compositing of tests/gl/PeelReference.
@@ -43,7 +44,8 @@ enum Method {
   kTracedMoving,
   kTracedReduced,
   kSeparatorTraced,
-  kSeparatorTracedMoving
+  kSeparatorTracedMoving,
+  kSortedLayersFour  // Coin's SORTED_LAYERS_BLEND with its default 4 passes, whatever the depth
 };
 
 bool traced(Method method) {
@@ -108,9 +110,9 @@ void Peel(benchmark::State& state) {
     state.SkipWithError(error.c_str());
     return;
   }
-  if (method == kSortedLayers) {
+  if (method == kSortedLayers || method == kSortedLayersFour) {
     renderer->action().setTransparencyType(SoGLRenderAction::SORTED_LAYERS_BLEND);
-    renderer->action().setSortedLayersNumPasses(depth);
+    renderer->action().setSortedLayersNumPasses(method == kSortedLayers ? depth : 4);
   }
   const std::string text = stackText(depth, method);
   SoSeparator* root = read(text);
@@ -166,15 +168,17 @@ void Peel(benchmark::State& state) {
                  : method == kTraced          ? "TRACER still"
                  : method == kTracedMoving    ? "TRACER camera moving"
                  : method == kTracedReduced   ? "TRACER camera moving, movingResolution 0.5"
-                 : method == kSeparatorTraced ? "PeelingSeparator TRACER still"
-                                              : "PeelingSeparator TRACER camera moving");
+                 : method == kSeparatorTraced       ? "PeelingSeparator TRACER still"
+                 : method == kSeparatorTracedMoving ? "PeelingSeparator TRACER camera moving"
+                                                    : "SORTED_LAYERS_BLEND, 4 passes");
   renderer.reset();
   root->unref();
 }
 
 void depths(benchmark::internal::Benchmark* b) {
   for (int method : {kBlend, kSortedLayers, kDual, kFrontToBack, kFragmentLists, kTraced,
-                     kTracedMoving, kTracedReduced, kSeparatorTraced, kSeparatorTracedMoving})
+                     kTracedMoving, kTracedReduced, kSeparatorTraced, kSeparatorTracedMoving,
+                     kSortedLayersFour})
     for (int depth : {1, 2, 4, 8, 16}) b->Args({method, depth});
   b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(5);
 }
