@@ -1,6 +1,7 @@
 #include "nodes/SceneExtraction.h"
 
 #include "callbacks/ShaderConstants.h"
+#include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
 #include "raytrace/CasterScene.h"
@@ -101,6 +102,17 @@ SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, cons
   group.outsideLights = currentLights(data, action->getState());
   data.groupStack.push_back(int(data.groups.size()));
   data.groups.push_back(std::move(group));
+  return SoCallbackAction::CONTINUE;
+}
+
+// A SoPeelingSeparator shades its children with its own program, per pixel, as a group does.
+SoCallbackAction::Response peelingEnter(void* user, SoCallbackAction*, const SoNode*) {
+  ++static_cast<Extraction*>(user)->peelingDepth;
+  return SoCallbackAction::CONTINUE;
+}
+
+SoCallbackAction::Response peelingLeave(void* user, SoCallbackAction*, const SoNode*) {
+  --static_cast<Extraction*>(user)->peelingDepth;
   return SoCallbackAction::CONTINUE;
 }
 
@@ -222,6 +234,7 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   out.twoSided = action->getVertexOrdering() != SoShapeHints::UNKNOWN_ORDERING &&
                  action->getShapeType() != SoShapeHints::SOLID;
   out.group = data.groupStack.empty() ? -1 : data.groupStack.back();
+  out.perPixel = out.group >= 0 || data.peelingDepth > 0;
   out.shadowed =
       out.group >= 0 && (SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED) != 0;
   if (out.group < 0) out.lightSet = lightSetOf(data, currentLights(data, state));
@@ -339,6 +352,8 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
     SoCallbackAction action{SbViewportRegion(short(width), short(height))};
     action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
     action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
+    action.addPreCallback(SoPeelingSeparator::getClassTypeId(), peelingEnter, &data);
+    action.addPostCallback(SoPeelingSeparator::getClassTypeId(), peelingLeave, &data);
     action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
     action.addPreCallback(SoLight::getClassTypeId(), light, &data);
     action.addPreCallback(SoShape::getClassTypeId(), skipDefectiveShape, nullptr);

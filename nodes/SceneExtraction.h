@@ -96,6 +96,9 @@ struct Triangle {
   bool twoSided = false;
   bool clockwise = false;
   bool shadowed = false;
+  // Lit per pixel, as a group's or a peeling separator's shading program lights it (else per
+  // vertex, as Coin's fixed-function GL does): inside a group or a SoPeelingSeparator.
+  bool perPixel = false;
   std::uint32_t shape = 0;
 };
 
@@ -111,6 +114,7 @@ struct Extraction {
   std::map<std::vector<int>, int> lightSetIndex;
   std::vector<Group> groups;
   std::vector<int> groupStack;
+  int peelingDepth = 0;                          // SoPeelingSeparators being traversed
   std::map<const SoNode*, std::string> skipped;  // shapes without triangles
   std::vector<std::string> untracedShapes;       // their names, in traversal order
   std::vector<CoinRef<SoPath>> untracedPaths;    // and the paths to every instance

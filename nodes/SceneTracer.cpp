@@ -385,8 +385,9 @@ class Tracer {
 
   // shading.frag's shade(), on the CPU, up to the shadows: appended to `row` (the shadowed
   // lights' light as terms waiting for their shadow rays) and returned. Shapes inside an
-  // active group are lit per pixel, as the group's shading program does; elsewhere Coin's
-  // fixed-function GL lights each vertex and interpolates (Gouraud), and so does this.
+  // active group or a peeling separator are lit per pixel, as their shading program does;
+  // elsewhere Coin's fixed-function GL lights each vertex and interpolates (Gouraud), and so
+  // does this.
   const PendingShade& prepare(const Triangle& tri, const Hit& hit, const glm::vec3& position,
                               const glm::vec3& rayDirection, RayCounts& rays,
                               RowShading& row) const {
@@ -401,12 +402,13 @@ class Tracer {
       if (tri.clockwise) front = !front;
       const float side = tri.twoSided && !front ? -1.0f : 1.0f;
       const float w = 1.0f - hit.u - hit.v;
-      if (tri.group >= 0) {
+      if (tri.perPixel) {
         const glm::vec3 normal = w * tri.normal[0] + hit.u * tri.normal[1] + hit.v * tri.normal[2];
         shade.rgb = lighting(tri, side * normal, position, glm::vec3(sample.colour), rays, row);
         shade.clampLit = true;
       } else {
-        // Outside groups nothing casts: each corner's light is whole, clamped there.
+        // Coin's fixed-function GL: each corner's light, clamped there (nothing casts outside
+        // groups).
         const float weights[3] = {w, hit.u, hit.v};
         shade.rgb = glm::vec3(0.0f);
         for (std::size_t i = 0; i < 3; ++i) {

@@ -31,7 +31,7 @@ struct PeelStatistics;
 
   TRACER takes the children's triangles away from GL: Embree traces every pixel's ray through
   them on the CPU and composites every surface it meets in exact depth order (the reference
-  renderer's code, `ivshadow reference`, lit as Coin's fixed-function GL lights: per vertex),
+  renderer's code, `ivshadow reference`, lit per pixel as the separator's own program lights),
   from the near plane to the depth GL drew before the separator; the picture is blended onto
   the framebuffer with the depth of its nearest opaque surface. While the children, the state
   above, the camera, the viewport and the depth drawn before stay the same, a frame draws the
