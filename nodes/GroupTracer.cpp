@@ -215,7 +215,10 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     options.bounceSamples = settings.bounceSamples;
     const float* limit = reduced ? reducedLimit(*context, viewport, options.width, options.height)
                                  : context->depthNow.data();
-    options.surfaces = &context->surfaces;
+    // The first picture keeps no surfaces: a single frame (a batch render) would only pay for
+    // them (about 15 MB at 800 x 600, each page a fault); the first change traces its camera
+    // rays again and keeps them for the changes after it.
+    options.surfaces = hadPicture ? &context->surfaces : nullptr;
     options.reuseSurfaces = sameView;
     scene_->trace(viewing, projection, limit, options, pixels_);
     const std::string error = context->pass->upload(options.width, options.height,
