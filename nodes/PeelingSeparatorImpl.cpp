@@ -81,15 +81,18 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
     contents_.update(action);
     const auto start = std::chrono::steady_clock::now();
     // Traced, a motion's frames are traced in full: the separator has no field to reduce them.
-    // Groups below with bounce TRUE bounce as the GL path draws them.
+    // The groups below are traced whole, with their shadows and bounce (peeled by GL, a group
+    // inside the separator draws as a plain separator): those with bounce TRUE that a switch
+    // does not hide bounce with the most rays per point any of them asks for.
     if (bounceVersion_ != contents_.castersVersion()) {
       bounceVersion_ = contents_.castersVersion();
       bounceSamples_ = 0;
-      forEachNodeOfType<SoTransparentShadowGroup>(
-          owner_, [this](const SoTransparentShadowGroup& g) {
-            if (g.isActive.getValue() && g.bounce.getValue())
-              bounceSamples_ = std::max(bounceSamples_, g.bounceLights.getValue());
-          });
+      forEachPathTo(owner_, SoTransparentShadowGroup::getClassTypeId(), false,
+                    [this](SoPath& path) {
+                      const auto& g = *static_cast<SoTransparentShadowGroup*>(path.getTail());
+                      if (g.isActive.getValue() && g.bounce.getValue())
+                        bounceSamples_ = std::max(bounceSamples_, g.bounceLights.getValue());
+                    });
     }
     TracerSettings settings;
     settings.bounceSamples = bounceSamples_;

@@ -731,13 +731,13 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
         shades.clear();
         for (int x = 0; x < options.width; x += kMaxPacket) {
           const int count = std::min(kMaxPacket, options.width - x);
-          Tracer::CameraRay rays[kMaxPacket];
-          for (int i = 0; i < count; ++i) rays[i] = tracer.cameraRay(x + i, y);
+          Tracer::CameraRay cameraRays[kMaxPacket];
+          for (int i = 0; i < count; ++i) cameraRays[i] = tracer.cameraRay(x + i, y);
           if (reuse) {
             for (int i = 0; i < count; ++i) {
               const std::size_t at = std::size_t(x + i);
               const std::uint32_t begin = at > 0 ? keptRow->ends[at - 1] : 0u;
-              tracer.gather(rays[i], keptRow->hits.data() + begin, keptRow->ends[at] - begin,
+              tracer.gather(cameraRays[i], keptRow->hits.data() + begin, keptRow->ends[at] - begin,
                             keptRow->depth[at], counts, shades);
             }
             continue;
@@ -745,9 +745,10 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
           float ends[kMaxPacket];
           float depths[kMaxPacket];
           for (int i = 0; i < count; ++i) ends[i] = limits != nullptr ? limits[x + i] : 1.0f;
-          tracer.visible(rays, ends, count, found, depths);
+          tracer.visible(cameraRays, ends, count, found, depths);
           for (int i = 0; i < count; ++i) {
-            tracer.gather(rays[i], found[i].data(), found[i].size(), depths[i], counts, shades);
+            tracer.gather(cameraRays[i], found[i].data(), found[i].size(), depths[i], counts,
+                          shades);
             if (keptRow != nullptr) {
               const std::size_t at = std::size_t(x + i);
               keptRow->hits.insert(keptRow->hits.end(), found[i].begin(), found[i].end());
