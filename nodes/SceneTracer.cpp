@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
+#include "nodes/RowShading.h"
 #include "nodes/SceneExtraction.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
@@ -35,6 +36,9 @@ using detail::Group;
 using detail::Light;
 using detail::LightType;
 using detail::Material;
+using detail::PendingShade;
+using detail::RowShading;
+using detail::ShadowTerm;
 using detail::toGlm;
 using detail::Triangle;
 
@@ -98,76 +102,6 @@ struct PixelResult {
   float transmitted = 1.0f;
   float depth = 1.0f;
 };
-
-// A surface shaded up to its shadows: the light of the lights that cast no shadow on it (or
-// its whole colour), while the light of each casting light waits for its shadow ray.
-struct PendingShade {
-  glm::vec3 rgb{0.0f};         // lit per pixel: before GL's clamp, without the shadowed lights
-  float alpha = 1.0f;          // the surface's opacity before texturing
-  float opacity = 1.0f;        // what it covers in the composite: texture applied, 1 if opaque
-  bool clampLit = false;       // rgb plus the shadowed lights' light is clamped as GL clamps
-  std::uint32_t termsEnd = 0;  // its shadowed lights end here in RowShading::terms
-  glm::vec4 texel{1.0f};
-  const TextureImage* image = nullptr;
-  float fog = 1.0f;  // the weight of the surface's own colour against the fog's
-  int material = 0;
-};
-
-// A casting light's light on a surface, before the shadow ray `query` answers.
-struct ShadowTerm {
-  glm::vec3 light;
-  std::uint32_t query;
-};
-
-// One row of pixels in three steps: every pixel's surfaces shaded up to their shadows
-// (Tracer::gather), all the row's shadow rays traced together in packets (traceShadows), then
-// every surface finished and composited (Tracer::resolve).
-struct RowShading {
-  std::vector<PendingShade> shades;
-  std::vector<std::uint32_t> pixelEnds;  // each pixel's surfaces end here in `shades`
-  std::vector<float> depths;             // each pixel's window depth
-  std::vector<ShadowTerm> terms;
-  std::vector<CasterScene::Query> queries;
-  std::vector<const CasterScene*> queryCasters;  // whose casters each query asks
-  std::vector<glm::vec3> answers;
-  // traceShadows' scratch, for rows whose queries ask more than one group's casters.
-  std::vector<CasterScene::Query> someQueries;
-  std::vector<glm::vec3> someAnswers;
-
-  void clear() {
-    shades.clear();
-    pixelEnds.clear();
-    depths.clear();
-    terms.clear();
-    queries.clear();
-    queryCasters.clear();
-  }
-};
-
-void traceShadows(RowShading& row) {
-  row.answers.resize(row.queries.size());
-  if (row.queries.empty()) return;
-  const CasterScene* first = row.queryCasters.front();
-  if (std::all_of(row.queryCasters.begin(), row.queryCasters.end(),
-                  [first](const CasterScene* c) { return c == first; })) {
-    first->transmittances(row.queries.data(), row.queries.size(), row.answers.data());
-    return;
-  }
-  // Several groups' casters: each answers its own queries.
-  std::vector<const CasterScene*> done;
-  for (const CasterScene* casters : row.queryCasters) {
-    if (std::find(done.begin(), done.end(), casters) != done.end()) continue;
-    done.push_back(casters);
-    row.someQueries.clear();
-    for (std::size_t i = 0; i < row.queries.size(); ++i)
-      if (row.queryCasters[i] == casters) row.someQueries.push_back(row.queries[i]);
-    row.someAnswers.resize(row.someQueries.size());
-    casters->transmittances(row.someQueries.data(), row.someQueries.size(), row.someAnswers.data());
-    std::size_t next = 0;
-    for (std::size_t i = 0; i < row.queries.size(); ++i)
-      if (row.queryCasters[i] == casters) row.answers[i] = row.someAnswers[next++];
-  }
-}
 
 class Tracer {
  public:
@@ -757,7 +691,7 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
             }
           }
         }
-        traceShadows(shades);
+        shades.traceShadows();
         for (int x = 0; x < options.width; ++x) {
           const PixelResult p = tracer.resolve(shades, std::size_t(x));
           float* rgba = &out.rgba[(row + std::size_t(x)) * 4];
