@@ -1,12 +1,15 @@
 #include "scene/ShapeValidation.h"
 
+#include "scene/IndexChecks.h"
 #include "scene/SceneTriangles.h"
+#include "scene/VrmlShapeValidation.h"
 #include "scene/WarnOnce.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/elements/SoCoordinateElement.h>
 #include <Inventor/elements/SoLazyElement.h>
 #include <Inventor/elements/SoMaterialBindingElement.h>
+#include <Inventor/elements/SoModelMatrixElement.h>
 #include <Inventor/elements/SoMultiTextureEnabledElement.h>
 #include <Inventor/elements/SoNormalBindingElement.h>
 #include <Inventor/elements/SoNormalElement.h>
@@ -15,9 +18,12 @@
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/nodes/SoFaceSet.h>
 #include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoIndexedLineSet.h>
 #include <Inventor/nodes/SoIndexedNurbsCurve.h>
 #include <Inventor/nodes/SoIndexedNurbsSurface.h>
 #include <Inventor/nodes/SoIndexedShape.h>
+#include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoNonIndexedShape.h>
 #include <Inventor/nodes/SoNurbsCurve.h>
 #include <Inventor/nodes/SoNurbsSurface.h>
@@ -27,6 +33,9 @@
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <tuple>
 #include <utility>
 
 namespace ivshadow {
@@ -132,62 +141,109 @@ std::string nonIndexedDefect(const SoNonIndexedShape* shape, const Counts& count
   return {};
 }
 
-// An index array checked against what it indexes: -1 ends a face, line or strip; anything
-// else must lie in 0..count-1.
-std::string indexDefect(const SoMFInt32& indices, const char* name, long count, const char* what) {
-  for (int i = 0; i < indices.getNum(); ++i) {
-    const long index = indices[i];
-    if (index == -1) continue;
-    if (index < 0 || index >= count)
-      return std::string(name) + "[" + std::to_string(i) + "] " + std::to_string(index) +
-             " is outside the " + std::to_string(count) + " " + what;
-  }
-  return {};
-}
-
 bool boundIndexed(int binding) {
   return binding == SoMaterialBindingElement::PER_PART_INDEXED ||
          binding == SoMaterialBindingElement::PER_FACE_INDEXED ||
          binding == SoMaterialBindingElement::PER_VERTEX_INDEXED;
 }
 
+// What PER_PART and PER_FACE bind to on each of Inventor's indexed shapes, and how many of
+// them its coordIndex holds (Coin 4.0's SoIndexedFaceSet, SoIndexedLineSet and
+// SoIndexedTriangleStripSet); other indexed shapes are checked per index only.
+struct Parts {
+  const char* partUnit = nullptr;
+  long parts = 0;
+  const char* faceUnit = nullptr;
+  long faces = 0;
+};
+
+Parts partsOf(const SoIndexedShape* shape, const IndexRuns& runs) {
+  if (shape->isOfType(SoIndexedFaceSet::getClassTypeId()))
+    return {"face", runs.runs, "face", runs.runs};
+  if (shape->isOfType(SoIndexedLineSet::getClassTypeId()))
+    return {"segment", runs.segments, "polyline", runs.runs};
+  if (shape->isOfType(SoIndexedTriangleStripSet::getClassTypeId()))
+    return {"strip", runs.runs, "triangle", runs.triangles};
+  return {};
+}
+
+// The materials an indexed shape reads under `binding`: one per vertex, part or face, in order
+// or through materialIndex (coordIndex in its place for PER_VERTEX_INDEXED; for the other
+// indexed bindings Coin's generatePrimitives or GL rendering dereferences null without one).
+std::string materialDefect(const SoIndexedShape* shape, int binding, const IndexRuns& runs,
+                           long materials) {
+  using B = SoMaterialBindingElement;
+  const Parts parts = partsOf(shape, runs);
+  const SoMFInt32& indices = shape->materialIndex;
+  const bool given = indices.getNum() > 0 && indices[0] >= 0;
+  switch (binding) {
+    case B::PER_VERTEX:
+      return valuesPerUnit("materials", "materialBinding PER_VERTEX", "vertex", runs.vertices,
+                           materials);
+    case B::PER_VERTEX_INDEXED:
+      if (!given) {
+        std::string defect = indicesInside(shape->coordIndex, "coordIndex", materials, "materials");
+        return defect.empty() ? defect
+                              : defect +
+                                    " (materialBinding PER_VERTEX_INDEXED without a "
+                                    "materialIndex indexes the materials by coordIndex)";
+      }
+      return indicesPerVertex(shape->coordIndex, indices, "materialIndex", materials, "materials");
+    case B::PER_PART:
+    case B::PER_FACE: {
+      const bool part = binding == B::PER_PART;
+      const char* unit = part ? parts.partUnit : parts.faceUnit;
+      if (unit == nullptr) return {};
+      return valuesPerUnit("materials",
+                           part ? "materialBinding PER_PART" : "materialBinding PER_FACE", unit,
+                           part ? parts.parts : parts.faces, materials);
+    }
+    case B::PER_PART_INDEXED:
+    case B::PER_FACE_INDEXED: {
+      const bool part = binding == B::PER_PART_INDEXED;
+      const char* unit = part ? parts.partUnit : parts.faceUnit;
+      if (unit == nullptr)
+        return given ? indicesInside(indices, "materialIndex", materials, "materials")
+                     : std::string();
+      if (!given)
+        return std::string("materialBinding ") + (part ? "PER_PART_INDEXED" : "PER_FACE_INDEXED") +
+               " without a materialIndex (one index per " + unit + ")";
+      return indicesPerUnit(indices, "materialIndex", part ? parts.parts : parts.faces, unit,
+                            materials, "materials");
+    }
+    default:
+      return {};
+  }
+}
+
 std::string indexedDefect(SoCallbackAction* action, const SoIndexedShape* shape,
                           const Counts& counts) {
   if (std::string defect =
-          indexDefect(shape->coordIndex, "coordIndex", counts.coordinates, "coordinates");
+          indicesInside(shape->coordIndex, "coordIndex", counts.coordinates, "coordinates");
       !defect.empty())
     return defect;
   SoState* state = action->getState();
+  const IndexRuns runs = IndexRuns::of(shape->coordIndex);
   // Under PER_VERTEX Coin reads one material per vertex, in coordIndex order, whatever the
   // materials in force hold (SGI's indexedTriangleMesh.iv draws its mesh again under a single
   // BaseColor: the colours came from whatever memory followed it, different on each run).
-  if (materialBinding(state, shape) == SoMaterialBindingElement::PER_VERTEX) {
-    const long vertices = std::count_if(shape->coordIndex.getValues(0),
-                                        shape->coordIndex.getValues(0) + shape->coordIndex.getNum(),
-                                        [](int32_t index) { return index != -1; });
-    if (vertices > counts.materials)
-      return "materialBinding PER_VERTEX asks for " + std::to_string(vertices) +
-             " materials, one per vertex; the materials hold " + std::to_string(counts.materials);
-  }
-  // The other arrays are only read under an indexed binding, and only when the shape gives
-  // them values (otherwise Coin uses coordIndex, or generates normals itself).
-  const bool explicitMaterials = shape->materialIndex.getNum() > 0 && shape->materialIndex[0] != -1;
-  if (boundIndexed(SoMaterialBindingElement::get(state)) && explicitMaterials)
-    if (std::string defect =
-            indexDefect(shape->materialIndex, "materialIndex", counts.materials, "materials");
-        !defect.empty())
-      return defect;
+  if (std::string defect =
+          materialDefect(shape, materialBinding(state, shape), runs, counts.materials);
+      !defect.empty())
+    return defect;
+  // Normals and texture coordinates are only read under an indexed binding, and only when the
+  // shape gives them values (otherwise Coin uses coordIndex, or generates normals itself).
   const bool explicitNormals = shape->normalIndex.getNum() > 0 && shape->normalIndex[0] != -1;
   if (boundIndexed(SoNormalBindingElement::get(state)) && explicitNormals && counts.normals > 0)
     if (std::string defect =
-            indexDefect(shape->normalIndex, "normalIndex", counts.normals, "normals");
+            indicesInside(shape->normalIndex, "normalIndex", counts.normals, "normals");
         !defect.empty())
       return defect;
   const bool explicitTexture =
       shape->textureCoordIndex.getNum() > 0 && shape->textureCoordIndex[0] != -1;
   if (explicitTexture && counts.textureCoordinates > 0)
-    if (std::string defect = indexDefect(shape->textureCoordIndex, "textureCoordIndex",
-                                         counts.textureCoordinates, "texture coordinates");
+    if (std::string defect = indicesInside(shape->textureCoordIndex, "textureCoordIndex",
+                                           counts.textureCoordinates, "texture coordinates");
         !defect.empty())
       return defect;
   return {};
@@ -307,16 +363,47 @@ std::string nurbsDefect(SoCallbackAction* action, const SoShape* shape) {
   return {};
 }
 
-}  // namespace
+// Where the shape lies in world coordinates, checked once its data is known to be sound (its
+// bounding box reads all of it): farther than kLargestTracedCoordinate from the origin, or
+// not finite (a MatrixTransform whose w is 0, coordinates of 1e30 times a scale).
+std::string rangeDefect(SoCallbackAction* action, const SoShape* shape) {
+  SbBox3f box;
+  SbVec3f center;
+  const_cast<SoShape*>(shape)->computeBBox(action, box, center);
+  if (box.isEmpty()) return {};
+  box.transform(SoModelMatrixElement::get(action->getState()));
+  float farthest = 0.0f;
+  for (const SbVec3f& corner : {box.getMin(), box.getMax()})
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(corner[i]))
+        return "its transformation takes it to infinity (a matrix whose w is 0?)";
+      farthest = std::max(farthest, std::fabs(corner[i]));
+    }
+  if (farthest <= kLargestTracedCoordinate) return {};
+  std::ostringstream text;
+  text << "it reaches " << farthest << " from the origin; rays are traced within "
+       << kLargestTracedCoordinate;
+  return text.str();
+}
 
-std::string shapeDefect(SoCallbackAction* action, const SoShape* shape) {
-  if (!shape->isOfType(SoVertexShape::getClassTypeId())) return nurbsDefect(action, shape);
+std::string dataDefect(SoCallbackAction* action, const SoShape* shape) {
+  if (!shape->isOfType(SoVertexShape::getClassTypeId())) {
+    std::string defect = vrmlShapeDefect(shape);
+    return defect.empty() ? nurbsDefect(action, shape) : defect;
+  }
   const Counts counts = countsFor(action, static_cast<const SoVertexShape*>(shape));
   if (shape->isOfType(SoNonIndexedShape::getClassTypeId()))
     return nonIndexedDefect(static_cast<const SoNonIndexedShape*>(shape), counts);
   if (shape->isOfType(SoIndexedShape::getClassTypeId()))
     return indexedDefect(action, static_cast<const SoIndexedShape*>(shape), counts);
   return {};
+}
+
+}  // namespace
+
+std::string shapeDefect(SoCallbackAction* action, const SoShape* shape) {
+  std::string defect = dataDefect(action, shape);
+  return defect.empty() ? rangeDefect(action, shape) : defect;
 }
 
 SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action, const SoNode* node) {
@@ -334,7 +421,9 @@ SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action, c
 
 std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file) {
   struct Found {
-    std::vector<std::pair<SoPath*, std::string>> shapes;
+    // The path to where the shape is drawn (for a VRML97 geometry Coin's path ends at its
+    // VRMLShape), the shape, its defect.
+    std::vector<std::tuple<SoPath*, const SoNode*, std::string>> shapes;
   } found;
   SoCallbackAction action;
   // No primitive callbacks are registered, so Coin generates no primitives while looking.
@@ -345,7 +434,7 @@ std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& 
         if (!defect.empty()) {
           auto* path = action->getCurPath()->copy();
           path->ref();
-          static_cast<Found*>(data)->shapes.emplace_back(path, std::move(defect));
+          static_cast<Found*>(data)->shapes.emplace_back(path, node, std::move(defect));
         }
         return SoCallbackAction::CONTINUE;
       },
@@ -355,10 +444,9 @@ std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& 
   std::vector<std::string> warnings;
   // Latest first, so that the child indices of paths found earlier stay valid.
   for (auto it = found.shapes.rbegin(); it != found.shapes.rend(); ++it) {
-    SoPath* path = it->first;
+    auto& [path, shape, defect] = *it;
     SoNode* parent = path->getLength() >= 2 ? path->getNodeFromTail(1) : nullptr;
-    const SoNode* shape = path->getTail();
-    std::string line = file + ": warning: " + describeNode(shape) + ": " + it->second;
+    std::string line = file + ": warning: " + describeNode(shape) + ": " + defect;
     if (parent != nullptr && parent->isOfType(SoGroup::getClassTypeId())) {
       static_cast<SoGroup*>(parent)->removeChild(path->getIndexFromTail(0));
       line += "; the shape is left out";

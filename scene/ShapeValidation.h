@@ -11,6 +11,11 @@ class SoShape;
 
 namespace ivshadow {
 
+// The farthest from the origin a coordinate may lie and still be traced: Embree takes rays and
+// triangles only within about 1.844e18 (FLT_LARGE, its ray.valid() assertion aborted the
+// process for a visible surface at 1.8e18).
+inline constexpr float kLargestTracedCoordinate = 1.8e18f;
+
 // What is wrong with `shape`'s vertex data in the traversal state of `action`, or an empty
 // string when nothing is:
 // - counts that ask for more vertices than the coordinates in force hold (FaceSet, LineSet,
@@ -24,6 +29,9 @@ namespace ivshadow {
 //   points (an order, knots minus control points, outside 1..min(control points, 24), or
 //   decreasing knots), whose control points ask for more coordinates (or indices) than there
 //   are, or whose texture control points ask for more texture coordinates.
+// - VRML97 shapes whose indices or counts run past their data (scene/VrmlShapeValidation.h);
+// - shapes that reach farther than kLargestTracedCoordinate from the origin, or whose
+//   transformation takes them to infinity.
 // Coin's own GL rendering checks some of these and warns; its generatePrimitives, which
 // SoCallbackAction runs, reads whatever memory the counts name, so these checks come first.
 IVSHADOW_INTERNAL std::string shapeDefect(SoCallbackAction* action, const SoShape* shape);

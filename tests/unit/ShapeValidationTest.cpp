@@ -65,13 +65,13 @@ const Case kCases[] = {
     // binding still in force.
     {"indexed_per_vertex_material",
      "MaterialBinding { value PER_VERTEX } IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }",
-     "IndexedFaceSet: materialBinding PER_VERTEX asks for 3 materials, one per vertex; the "
-     "materials hold 1"},
+     "IndexedFaceSet: materialBinding PER_VERTEX reads one of the materials per vertex, 3 in "
+     "all; there are 1"},
     {"vertex_property_per_vertex_material",
      "IndexedFaceSet { vertexProperty VertexProperty { orderedRGBA [ 0xff0000ff, 0xff00ff ] "
      "materialBinding PER_VERTEX } coordIndex [ 0, 1, 2, -1 ] }",
-     "IndexedFaceSet: materialBinding PER_VERTEX asks for 3 materials, one per vertex; the "
-     "materials hold 2"},
+     "IndexedFaceSet: materialBinding PER_VERTEX reads one of the materials per vertex, 3 in "
+     "all; there are 2"},
     {"indexed_normal",
      "NormalBinding { value PER_VERTEX_INDEXED } Normal { vector [ 0 0 1, 0 0 1 ] } "
      "IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] normalIndex [ 0, 1, 2, -1 ] }",
@@ -79,6 +79,118 @@ const Case kCases[] = {
     {"vertex_property",
      "FaceSet { vertexProperty VertexProperty { vertex [ 0 0 0, 1 0 0 ] } numVertices 3 }",
      "FaceSet: numVertices asks for 3 vertices from index 0; the coordinates hold 2"},
+    // Material bindings against what each indexed shape binds them to (issue 35: an
+    // IndexedFaceSet under PER_FACE_INDEXED without a materialIndex crashed the casters'
+    // extraction; Coin's generatePrimitives dereferences null).
+    {"indexed_per_face_without_index",
+     "MaterialBinding { value PER_FACE_INDEXED } IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }",
+     "IndexedFaceSet: materialBinding PER_FACE_INDEXED without a materialIndex (one index per "
+     "face)"},
+    {"indexed_per_vertex_by_coordinates",
+     "Material { diffuseColor [ 1 0 0, 0 1 0 ] } MaterialBinding { value PER_VERTEX_INDEXED } "
+     "IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }",
+     "IndexedFaceSet: coordIndex[2] 2 is outside the 2 materials (materialBinding "
+     "PER_VERTEX_INDEXED without a materialIndex indexes the materials by coordIndex)"},
+    {"indexed_per_vertex_short_index",
+     "Material { diffuseColor [ 1 0 0, 0 1 0 ] } MaterialBinding { value PER_VERTEX_INDEXED } "
+     "IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] materialIndex [ 0, 1 ] }",
+     "IndexedFaceSet: materialIndex holds 2 entries; coordIndex reads one at each of its 4"},
+    {"indexed_per_face",
+     "MaterialBinding { value PER_FACE } IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 2, 1 ] }",
+     "IndexedFaceSet: materialBinding PER_FACE reads one of the materials per face, 2 in all; "
+     "there are 1"},
+    {"indexed_per_face_indexed_short",
+     "Material { diffuseColor [ 1 0 0, 0 1 0 ] } MaterialBinding { value PER_FACE_INDEXED } "
+     "IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 2, 1 ] materialIndex [ 1 ] }",
+     "IndexedFaceSet: materialIndex holds 1 entries; one is read per face, 2 in all"},
+    {"indexed_line_per_part",
+     "MaterialBinding { value PER_PART } IndexedLineSet { coordIndex [ 0, 1, 2 ] }",
+     "IndexedLineSet: materialBinding PER_PART reads one of the materials per segment, 2 in all; "
+     "there are 1"},
+    {"indexed_strip_per_face",
+     "MaterialBinding { value PER_FACE } IndexedTriangleStripSet { coordIndex [ 0, 1, 2, -1, 2, "
+     "1, 0 ] }",
+     "IndexedTriangleStripSet: materialBinding PER_FACE reads one of the materials per "
+     "triangle, 2 in all; there are 1"},
+    // VRML97 shapes (issue 35: every command segfaulted in Coin's generatePrimitives,
+    // getMaterial or computeBBox).
+    {"vrml_face_coordinates",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } coordIndex [ 0, 1, 2, -1, 0, 2, 9, -1 ] } }",
+     "VRMLIndexedFaceSet: coordIndex[6] 9 is outside the 3 coordinates"},
+    {"vrml_face_without_coord",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coordIndex [ 0, 1, 2 ] } }",
+     "VRMLIndexedFaceSet: coordIndex[0] 0 is outside the 0 coordinates"},
+    {"vrml_face_short",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } coordIndex [ 0, 1, 2, -1, 0, 1, -1 ] } }",
+     "VRMLIndexedFaceSet: face 1 of coordIndex has 2 vertices; a face needs at least 3"},
+    {"vrml_face_colour_index",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } color VRMLColor { color [ 1 0 0 ] } colorIndex [ 0, 5, 0, -1 ] coordIndex [ 0, "
+     "1, 2, -1 ] } }",
+     "VRMLIndexedFaceSet: colorIndex[1] 5 is outside the 1 colours"},
+    {"vrml_face_colours_by_coordinates",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } color VRMLColor { color [ 1 0 0, 0 1 0 ] } coordIndex [ 0, 1, 2 ] } }",
+     "VRMLIndexedFaceSet: coordIndex[2] 2 is outside the 2 colours (coordIndex indexes them "
+     "too: no colorIndex)"},
+    {"vrml_face_colour_per_face",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } color VRMLColor { color [ 1 0 0 ] } colorPerVertex FALSE coordIndex [ 0, 1, 2, "
+     "-1, 2, 1, 0 ] } }",
+     "VRMLIndexedFaceSet: colorPerVertex FALSE without colorIndex reads one of the colours per "
+     "face, 2 in all; there are 1"},
+    {"vrml_face_empty_colour_node",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } color VRMLColor { color [ ] } coordIndex [ 0, 1, 2 ] } }",
+     "VRMLIndexedFaceSet: coordIndex[0] 0 is outside the 0 colours (coordIndex indexes them "
+     "too: no colorIndex)"},
+    {"vrml_face_normal_index",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } normal VRMLNormal { vector [ 0 0 1 ] } normalIndex [ 0, 3, 0 ] coordIndex [ 0, 1, "
+     "2 ] } }",
+     "VRMLIndexedFaceSet: normalIndex[1] 3 is outside the 1 normals"},
+    {"vrml_face_texture_coordinates",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
+     "1 0 ] } texCoord VRMLTextureCoordinate { point [ 0 0 ] } coordIndex [ 0, 1, 2 ] } }",
+     "VRMLIndexedFaceSet: coordIndex[1] 1 is outside the 1 texture coordinates (coordIndex "
+     "indexes them too: no texCoordIndex)"},
+    {"vrml_face_wrong_node",
+     "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLColor { color [ 1 0 0 ] } coordIndex "
+     "[ 0, 1, 2 ] } }",
+     "VRMLIndexedFaceSet: coord holds a VRMLColor; expected a VRMLCoordinate"},
+    {"vrml_line_coordinates",
+     "VRMLShape { geometry VRMLIndexedLineSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0 ] } "
+     "coordIndex [ 0, 1, 7, -1 ] } }",
+     "VRMLIndexedLineSet: coordIndex[2] 7 is outside the 2 coordinates"},
+    {"vrml_line_leading_minus_one",
+     "VRMLShape { geometry VRMLIndexedLineSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0 ] } "
+     "color VRMLColor { color [ 1 0 0 ] } colorIndex [ -1 ] coordIndex [ 0, 1 ] } }",
+     "VRMLIndexedLineSet: colorIndex[0] -1 is outside the 1 colours"},
+    {"vrml_point_set_colours",
+     "VRMLShape { geometry VRMLPointSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] "
+     "} color VRMLColor { color [ 1 0 0, 0 1 0 ] } } }",
+     "VRMLPointSet: a point set reads one of the colours per point, 3 in all; there are 2"},
+    {"vrml_elevation_heights",
+     "VRMLShape { geometry VRMLElevationGrid { xDimension 3 zDimension 3 height [ 0, 0, 0, 0 ] "
+     "} }",
+     "VRMLElevationGrid: xDimension x zDimension reads one of the heights per vertex, 9 in all; "
+     "there are 4"},
+    {"vrml_elevation_negative",
+     "VRMLShape { geometry VRMLElevationGrid { xDimension -2 zDimension 3 } }",
+     "VRMLElevationGrid: xDimension -2 x zDimension 3 is negative"},
+    {"vrml_extrusion_one_point", "VRMLShape { geometry VRMLExtrusion { spine [ 0 0 0 ] } }",
+     "VRMLExtrusion: spine holds 1 point; an extrusion needs at least 2"},
+    // Past the coordinates Embree traces (issue 35: ray.valid() aborted the reference and
+    // renderer TRACER).
+    {"beyond_traced_range",
+     "Separator { Translation { translation 2e18 0 0 } FaceSet { numVertices 3 } }",
+     "FaceSet: it reaches 2e+18 from the origin; rays are traced within 1.8e+18"},
+    {"projective_infinity",
+     "Separator { MatrixTransform { matrix 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 0 } FaceSet { "
+     "numVertices 3 } }",
+     "FaceSet: its transformation takes it to infinity (a matrix whose w is 0?)"},
     // Found by SceneReaderFuzzer: a bundled NURBS scene with its vKnotVector erased (the
     // default, one knot) made Coin's normal code allocate an array of negative order
     // (std::bad_array_new_length: the process died).
@@ -180,6 +292,35 @@ TEST(ShapeValidation, ValidShapesUsingEveryCountAndIndexAreKept) {
   const LoadedScene scene = loadScene(path);
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
   EXPECT_EQ(countShapes(scene.root.get()), 12);
+}
+
+TEST(ShapeValidation, ValidVrmlShapesUsingEveryIndexAreKept) {
+  init();
+  const std::string path = test::outputDir() + "/valid_vrml.iv";
+  const char* coords = "coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] } ";
+  std::ofstream(path)
+      << "#Inventor V2.1 ascii\nSeparator {\n"
+      << "VRMLShape { geometry VRMLIndexedFaceSet { " << coords
+      << "color VRMLColor { color [ 1 0 0, 0 1 0 ] } colorIndex [ 1, 0, 1, -1, 0, 0, 1, -1 ] "
+         "normal VRMLNormal { vector [ 0 0 1 ] } normalPerVertex FALSE normalIndex [ 0, 0 ] "
+         "texCoord VRMLTextureCoordinate { point [ 0 0, 1 0, 0 1, 1 1 ] } "
+         "coordIndex [ 0, 1, 2, -1, 1, 3, 2, -1 ] } }\n"
+      << "VRMLShape { geometry VRMLIndexedFaceSet { " << coords
+      << "color VRMLColor { color [ 1 0 0, 0 1 0 ] } colorPerVertex FALSE "
+         "coordIndex [ 0, 1, 2, -1, 1, 3, 2 ] } }\n"
+      << "VRMLShape { geometry VRMLIndexedLineSet { " << coords
+      << "color VRMLColor { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] } coordIndex [ 0, 1, 3, -1, 2, 3 "
+         "] } }\n"
+      << "VRMLShape { geometry VRMLPointSet { " << coords
+      << "color VRMLColor { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] } } }\n"
+      << "VRMLShape { geometry VRMLElevationGrid { xDimension 2 zDimension 2 height [ 0, 1, 0, 1 ] "
+         "color VRMLColor { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] } } }\n"
+      << "VRMLShape { geometry VRMLExtrusion { } }\n"
+      // Far, but within what Embree traces.
+      << "Separator { Translation { translation 1e18 0 0 } Cube { } }\n}\n";
+  const LoadedScene scene = loadScene(path);
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+  EXPECT_EQ(countShapes(scene.root.get()), 7);
 }
 
 // Applications hand the group graphs that never went through loadScene: the casters'
