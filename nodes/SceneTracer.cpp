@@ -7,6 +7,7 @@
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
 #include "raytrace/ParallelRows.h"
+#include "raytrace/RayRange.h"
 #include "raytrace/SurfaceOptics.h"
 #include "scene/SceneTriangles.h"
 
@@ -256,7 +257,7 @@ class Tracer {
       packet.ray.mask[i] = 0xFFFFFFFFu;
       packet.ray.id[i] = unsigned(i);
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-      valid[i] = -1;
+      valid[i] = embreeTakesRay(rays[i].origin, rays[i].direction) ? -1 : 0;
     }
     intersect(valid, scene_, &context, &packet);
     for (int i = 0; i < count; ++i) {
@@ -299,7 +300,7 @@ class Tracer {
     rayHit.ray.tfar = tfar;
     rayHit.ray.mask = 0xFFFFFFFFu;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene_, &context, &rayHit);
+    if (embreeTakesRay(origin, direction)) rtcIntersect1(scene_, &context, &rayHit);
     const bool opaque = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     inDepthOrder(hits, opaque, Hit{rayHit.ray.tfar, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v});
     return opaque;

@@ -1,5 +1,7 @@
 #include "raytrace/CasterScene.h"
 
+#include "raytrace/RayRange.h"
+
 #include "raytrace/SurfaceOptics.h"
 
 #include <glm/geometric.hpp>
@@ -201,6 +203,7 @@ bool CasterScene::shadowRay(const glm::vec3& from, const glm::vec3& normal, cons
   const double distance = glm::length(towards);
   if (!(distance > 0.0)) return false;
   ray.direction = glm::vec3(towards / distance);
+  if (!embreeTakesRay(ray.origin, ray.direction)) return false;
   ray.tnear = float(std::min(double(offset), 0.5 * distance));
   ray.tfar = float(std::min(distance, double(std::numeric_limits<float>::max())));  // the light
   return true;
@@ -310,7 +313,7 @@ CasterScene::SurfaceHit CasterScene::firstSurface(const glm::vec3& origin,
                                                   const glm::vec3& direction, float tfar,
                                                   ShadowColourModel model) const {
   SurfaceHit result;
-  if (casters_.vertices.empty()) return result;
+  if (casters_.vertices.empty() || !embreeTakesRay(origin, direction)) return result;
   thread_local std::vector<std::pair<std::uint32_t, float>> seen;
   thread_local std::vector<std::pair<float, glm::vec3>> collected;
   seen.clear();

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <vector>
+
 namespace ivshadow {
 namespace {
 
@@ -45,6 +48,45 @@ TEST(CasterScene, LightsFarBeyondFloatLightingRangeStillCastExactShadows) {
                                                   ShadowColourModel::Monochrome);
     EXPECT_EQ(beside, glm::vec3(1.0f));
   }
+}
+
+// Points Embree cannot take a ray from (issue 35: a capture texel that Mesa left undefined
+// under a MarkerSet aborted the process in rtcOccluded1 about half the time; a surface past
+// 1.8e18 aborted the reference): not traced, as if nothing were in the way, in every entry
+// point, single rays and packets.
+TEST(CasterScene, RaysFromPointsEmbreeCannotTakeAreNotTraced) {
+  std::string error;
+  EmbreeDevice device = createEmbreeDevice(error);
+  ASSERT_TRUE(device) << error;
+  std::unique_ptr<CasterScene> scene = CasterScene::build(device.get(), paneAt(1.0f), error);
+  ASSERT_TRUE(scene) << error;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const glm::vec3 up(0.0f, 0.0f, 1.0f), light(0.5f, 0.5f, 10.0f);
+  for (const glm::vec3 from : {glm::vec3(nan, 0.5f, 0.0f), glm::vec3(0.5f, inf, 0.0f),
+                               glm::vec3(0.5f, 0.5f, -1e30f), glm::vec3(2e18f, 0.5f, 0.0f)}) {
+    SCOPED_TRACE(from.x);
+    EXPECT_EQ(scene->transmittance(from, up, light, ShadowColourModel::Monochrome),
+              glm::vec3(1.0f));
+    std::vector<CasterScene::Query> queries(20, CasterScene::Query{});
+    for (CasterScene::Query& query : queries) {
+      query.from = from;
+      query.normal = up;
+      query.to = light;
+      query.model = ShadowColourModel::Monochrome;
+    }
+    std::vector<glm::vec3> out(queries.size(), glm::vec3(-1.0f));
+    scene->transmittances(queries.data(), queries.size(), out.data());
+    for (const glm::vec3& v : out) EXPECT_EQ(v, glm::vec3(1.0f));
+    EXPECT_FALSE(
+        scene
+            ->firstSurface(from, glm::vec3(0.0f, 0.0f, 1.0f), 100.0f, ShadowColourModel::Monochrome)
+            .hit);
+  }
+  // The same rays from a point Embree takes do meet the pane: the guard is not all there is.
+  EXPECT_NEAR(
+      scene->transmittance(glm::vec3(0.5f, 0.5f, 0.0f), up, light, ShadowColourModel::Monochrome).r,
+      0.5f, 1e-6f);
 }
 
 }  // namespace
