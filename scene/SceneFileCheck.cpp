@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -32,6 +35,9 @@ bool isSpecial(char c) {
 class Tokenizer {
  public:
   Tokenizer(const std::string& text, const std::string& path) : text_(text), path_(path) {}
+
+  // Characters not read yet.
+  std::size_t remaining() const { return text_.size() - std::min(at_, text_.size()); }
 
   bool next(Token& token) {
     while (at_ < text_.size()) {
@@ -77,6 +83,39 @@ class Tokenizer {
   int line_ = 1;
 };
 
+// The fields that name a file Coin opens while reading or drawing the scene. Scenes (File,
+// VRMLInline, which Coin reads as a file) are read and checked in turn; a '%' in a name Coin
+// cannot find is taken as printf's format in its message (SoInput::pushFile, Coin 4.0), and
+// SoTexture3 does the same with every name it fails to read. Coin 4.0 reports the other
+// names through "%s".
+struct FileField {
+  const char* node;
+  const char* field;
+  bool scene;         // read as Inventor or VRML, checked in turn
+  bool percentKills;  // a '%' crashes Coin whether or not the file is there
+};
+constexpr FileField kFileFields[] = {
+    {"File", "name", true, false},
+    {"VRMLInline", "url", true, false},
+    {"Texture2", "filename", false, false},
+    {"Texture3", "filenames", false, true},
+    {"VRMLImageTexture", "url", false, false},
+    {"Image", "filename", false, false},
+};
+
+// Fields holding an image inline: its size, then one value per pixel (SoSFImage, SoSFImage3).
+struct ImageField {
+  const char* node;
+  const char* field;
+  int dimensions;
+};
+constexpr ImageField kImageFields[] = {
+    {"Texture2", "image", 2},
+    {"Image", "image", 2},
+    {"VRMLPixelTexture", "image", 2},
+    {"Texture3", "images", 3},
+};
+
 std::string canonicalPath(const std::filesystem::path& path) {
   std::error_code ec;
   const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
@@ -92,7 +131,14 @@ class Checker {
     if (!std::filesystem::is_regular_file(path, ec)) return;
     std::ifstream in(path, std::ios::binary);
     if (!in) return;
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text;
+    // A regular file can still fail to read (/proc/self/mem: EIO on the first read, which
+    // libstdc++'s stream buffer throws as a bare basic_filebuf error).
+    try {
+      text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    } catch (const std::exception&) {
+      throw InputError(path + ": error: cannot read: " + std::strerror(errno));
+    }
     // The header as Coin reads it: its reader drops NUL bytes from the line (found by
     // SceneReaderFuzzer: "#Inventor V2.1 asci", 80 NULs and "i" was read as ASCII, and the
     // cycle it held, never checked, overflowed the stack).
@@ -110,15 +156,33 @@ class Checker {
     std::map<std::string, int> newest;
     // The three tokens before the current one, newest last: "DEF name Type {".
     std::array<Token, 3> before;
-    // Inside `File { ... }`: the depth of its brace, and whether the next token is its name.
-    int fileBrace = 0;
-    bool fileNameNext = false;
+    // Per open brace: the type of the node it opens.
+    std::vector<std::string> types;
+    // The file-naming field whose value comes next, and whether that is a list in brackets.
+    const FileField* fileField = nullptr;
+    bool inList = false;
+    // The inline image whose size comes next: its field, and the numbers read so far.
+    const ImageField* imageField = nullptr;
+    std::vector<long long> imageSize;
     bool useNext = false;
     Tokenizer tokenizer(text, path);
     for (Token token; tokenizer.next(token);) {
-      if (fileNameNext) {
-        fileNameNext = false;
-        checkInclusion(path, token, nesting + int(braces.size()));
+      if (fileField != nullptr) {
+        if (!inList && token.is("[")) {
+          inList = true;
+        } else if (inList && token.is("]")) {
+          fileField = nullptr;
+          inList = false;
+        } else {
+          checkNamedFile(path, *fileField, token, nesting + int(braces.size()));
+          if (!inList) fileField = nullptr;
+        }
+      } else if (imageField != nullptr) {
+        imageSize.push_back(std::atoll(token.text.c_str()));
+        if (int(imageSize.size()) == imageField->dimensions + 1) {
+          checkImageSize(path, *imageField, imageSize, token.line, tokenizer.remaining());
+          imageField = nullptr;
+        }
       } else if (useNext) {
         useNext = false;
         const auto found = newest.find(token.text);
@@ -133,18 +197,24 @@ class Checker {
         if (nesting + int(braces.size()) > kMaxSceneNesting)
           throw InputError(locationPrefix(path, token.line) + "error: nodes nested more than " +
                            std::to_string(kMaxSceneNesting) + " levels deep");
-        if (before[2].is("File")) fileBrace = int(braces.size());
+        types.push_back(before[2].quoted ? std::string() : before[2].text);
       } else if (token.is("}")) {
         if (!braces.empty()) {  // Coin reports an unbalanced brace itself
           const std::string& name = braces.back();
           if (!name.empty() && newest[name] == int(braces.size())) newest[name] = -1;
-          if (fileBrace == int(braces.size())) fileBrace = 0;
           braces.pop_back();
+          types.pop_back();
         }
       } else if (token.is("USE")) {
         useNext = true;
-      } else if (token.is("name") && fileBrace == int(braces.size()) && fileBrace > 0) {
-        fileNameNext = true;
+      } else if (!types.empty() && !token.quoted) {
+        for (const FileField& field : kFileFields)
+          if (types.back() == field.node && token.text == field.field) fileField = &field;
+        for (const ImageField& field : kImageFields)
+          if (types.back() == field.node && token.text == field.field) {
+            imageField = &field;
+            imageSize.clear();
+          }
       }
       before = {before[1], before[2], token};
     }
@@ -152,34 +222,81 @@ class Checker {
   }
 
  private:
-  // The file a File node names, found beside the file that names it as Coin finds it, must
-  // not be one of the files being read.
-  void checkInclusion(const std::string& path, const Token& name, int nesting) {
+  // A file named by `field`, found beside the file that names it as Coin finds it: only a
+  // regular file (a FIFO or /dev/zero blocked the reader forever), a scene not one of the
+  // files being read, and no '%' where Coin would print the name as a format.
+  void checkNamedFile(const std::string& path, const FileField& field, const Token& name,
+                      int nesting) {
     namespace fs = std::filesystem;
+    if (name.text.empty()) return;
+    const std::string where = locationPrefix(path, name.line) + "error: " + field.node + " " +
+                              field.field + " " + name.text + ": ";
     const fs::path named = name.text;
     const fs::path resolved = named.is_absolute() ? named : fs::path(path).parent_path() / named;
+    std::error_code ec;
+    const fs::file_status status = fs::status(resolved, ec);
+    const bool percent = name.text.find('%') != std::string::npos;
+    // Debian's Coin 4.0 reports a File it cannot find with the name as printf's format
+    // (SoInput::pushFile): a '%' in it crashed the reader (found by SceneReaderFuzzer:
+    // File { name "a%s.iv" }; VRMLInline { url "%s%n.wrl" } the same way).
+    if (percent && (field.percentKills || (field.scene && !fs::exists(status))))
+      throw InputError(where +
+                       (fs::exists(status) ? std::string("names a file, but ")
+                                           : "no such file beside " +
+                                                 fs::path(path).filename().string() + ", and ") +
+                       "Coin cannot report a name holding '%' (rename the file)");
+    if (!fs::exists(status)) return;  // Coin says so itself
+    if (std::string kind = notRegularFile(status); !kind.empty()) throw InputError(where + kind);
+    if (!field.scene) return;
     const std::string canonical = canonicalPath(resolved);
     for (const std::string& file : open_)
       if (file == canonical)
-        throw InputError(locationPrefix(path, name.line) + "error: File " + name.text +
-                         " includes " +
+        throw InputError(locationPrefix(path, name.line) + "error: " + field.node + " " +
+                         name.text + " includes " +
                          (file == open_.back() ? "itself" : "a file that includes it") +
                          " (the scene would never end)");
-    // Debian's Coin 4.0 reports a File it cannot find with the name as printf's format
-    // (SoInput::pushFile): a '%' in it crashed the reader (found by SceneReaderFuzzer:
-    // File { name "a%s.iv" }). Only a missing file is reported, so only that is refused.
-    std::error_code ec;
-    if (name.text.find('%') != std::string::npos && !fs::exists(resolved, ec))
-      throw InputError(locationPrefix(path, name.line) + "error: File " + name.text +
-                       ": no such file beside " + fs::path(path).filename().string() +
-                       ", and Coin cannot report a missing name holding '%'");
     checkFile(resolved.string(), nesting);
+  }
+
+  // An inline image's declared size against the values the file still holds: one per pixel,
+  // each at least one character and a separator. Coin allocates the whole image before
+  // reading a value (a Texture3 of 60000 x 60000 x 60000 died in std::bad_alloc).
+  static void checkImageSize(const std::string& path, const ImageField& field,
+                             const std::vector<long long>& size, int line, std::size_t remaining) {
+    long double pixels = 1;
+    std::string declared;
+    for (int i = 0; i < field.dimensions; ++i) {
+      pixels *= std::max(size[std::size_t(i)], 0LL);
+      declared += (i > 0 ? " x " : "") + std::to_string(size[std::size_t(i)]);
+    }
+    const long long components = size[std::size_t(field.dimensions)];
+    if (components < 0 || components > 4)
+      throw InputError(locationPrefix(path, line) + "error: " + field.node + " " + field.field +
+                       " declares " + std::to_string(components) +
+                       " components a pixel; expected 0 to 4");
+    const long double available = (long double)(remaining + 1) / 2;
+    if (components > 0 && pixels > available)
+      throw InputError(locationPrefix(path, line) + "error: " + field.node + " " + field.field +
+                       " declares " + declared + " pixels; the rest of the file holds at most " +
+                       std::to_string((long long)available) + " values");
   }
 
   std::vector<std::string> open_;  // the files being read, outermost first
 };
 
 }  // namespace
+
+std::string notRegularFile(const std::filesystem::file_status& status) {
+  namespace fs = std::filesystem;
+  if (fs::is_regular_file(status)) return {};
+  return std::string("not a regular file (") +
+         (fs::is_directory(status)        ? "a directory"
+          : fs::is_fifo(status)           ? "a FIFO"
+          : fs::is_character_file(status) ? "a character device"
+          : fs::is_block_file(status)     ? "a block device"
+                                          : "a socket or other special file") +
+         "); only regular files are read";
+}
 
 void checkSceneFile(const std::string& path) {
   Checker().checkFile(path, 0);

@@ -48,6 +48,8 @@ LoadedScene loadScene(const std::string& path) {
   if (fs::is_directory(status)) {
     throw InputError(path + ": error: is a directory (expected an Open Inventor .iv file)");
   }
+  if (std::string kind = notRegularFile(status); !kind.empty())
+    throw InputError(path + ": error: " + kind + " (expected an Open Inventor .iv file)");
   if (::access(path.c_str(), R_OK) != 0) {
     throw InputError(path + ": error: cannot read: " + std::strerror(errno));
   }

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 namespace ivshadow {
 namespace {
 
@@ -120,17 +122,15 @@ TEST(SceneFileCheck, FilesIncludingThemselvesDirectlyOrThroughOthersAreRefused) 
   EXPECT_EQ(checkError(twice), "") << "including one file twice is no cycle";
 }
 
-// Found by SceneReaderFuzzer: a File naming a directory made the check read a directory.
-TEST(SceneFileCheck, AFileNodeNamingADirectoryIsLeftToCoinsMessage) {
+// Found by SceneReaderFuzzer: a File naming a directory made the check read a directory; now
+// refused at its line as every file that is not a regular one.
+TEST(SceneFileCheck, AFileNodeNamingADirectoryIsRefusedAtItsLine) {
   init();
   const std::string path = test::writeOutputFile(
       "directory.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \".\" }\n}\n");
-  EXPECT_EQ(checkError(path), "");
-  try {
-    loadScene(path);
-  } catch (const InputError& error) {
-    EXPECT_EQ(std::string(error.what()).rfind(path + ":", 0), 0u) << error.what();
-  }
+  EXPECT_EQ(checkError(path), path +
+                                  ":3: error: File name .: not a regular file (a directory); "
+                                  "only regular files are read");
 }
 
 // Found by SceneReaderFuzzer: Coin 4.0 reports a missing File with its name as printf's
@@ -139,9 +139,10 @@ TEST(SceneFileCheck, AMissingFileWhoseNameHoldsAPercentSignIsRefusedAtItsLine) {
   init();
   const std::string path = test::writeOutputFile(
       "percent.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a%s.iv\" }\n}\n");
-  EXPECT_EQ(checkError(path), path +
-                                  ":4: error: File a%s.iv: no such file beside percent.iv, and "
-                                  "Coin cannot report a missing name holding '%'");
+  EXPECT_EQ(checkError(path),
+            path +
+                ":4: error: File name a%s.iv: no such file beside percent.iv, and "
+                "Coin cannot report a name holding '%' (rename the file)");
   test::writeOutputFile("b%d.iv", "#Inventor V2.1 ascii\nCube { }\n");
   const std::string present = test::writeOutputFile(
       "present.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"b%d.iv\" } }\n");
@@ -164,6 +165,91 @@ TEST(SceneFileCheck, BinaryFilesAreLeftToCoin) {
   const std::string binary =
       test::writeOutputFile("binary.iv", "#Inventor V2.1 binary\n" + std::string(3000, '{'));
   EXPECT_EQ(checkError(binary), "");
+}
+
+// Issue 35: VRMLInline with a '%' segfaulted inside Coin's message as File did; Texture3
+// prints every name it fails to read as a format; Texture2 prints names through "%s".
+TEST(SceneFileCheck, EveryNameCoinWouldPrintAsAFormatIsRefused) {
+  const std::string inlined = test::writeOutputFile(
+      "inline_percent.iv", "#Inventor V2.1 ascii\nVRMLInline { url \"%s%n.wrl\" }\n");
+  EXPECT_EQ(checkError(inlined), inlined +
+                                     ":2: error: VRMLInline url %s%n.wrl: no such file beside "
+                                     "inline_percent.iv, and Coin cannot report a name holding "
+                                     "'%' (rename the file)");
+  test::writeOutputFile("c%d.png", "not an image");
+  const std::string texture3 = test::writeOutputFile(
+      "texture3_percent.iv",
+      "#Inventor V2.1 ascii\nTexture3 { filenames [ \"ok.png\", \"c%d.png\" ] }\nCube { }\n");
+  EXPECT_EQ(checkError(texture3), texture3 +
+                                      ":2: error: Texture3 filenames c%d.png: names a file, but "
+                                      "Coin cannot report a name holding '%' (rename the file)");
+  const std::string texture2 = test::writeOutputFile(
+      "texture2_percent.iv", "#Inventor V2.1 ascii\nTexture2 { filename \"d%s%n.png\" }\n");
+  EXPECT_EQ(checkError(texture2), "");
+  // Coin reports the missing image itself, safely: refused as any unreadable scene is.
+  EXPECT_THROW(loadScene(texture2), InputError);
+}
+
+TEST(SceneFileCheck, AVrmlInlineOfItselfIsRefusedAsAFileOfItselfIs) {
+  const std::string path = test::writeOutputFile(
+      "inline_self.iv", "#Inventor V2.1 ascii\nVRMLInline { url [ \"inline_self.iv\" ] }\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":2: error: VRMLInline inline_self.iv includes itself (the "
+                                  "scene would never end)");
+}
+
+// Issue 35: a File of a FIFO, /dev/zero or /dev/urandom blocked forever; /proc/self/mem gave a
+// bare basic_filebuf error.
+TEST(SceneFileCheck, OnlyRegularFilesAreRead) {
+  const std::string fifo = test::outputDir() + "/pipe.iv";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string includes =
+      test::writeOutputFile("includes.iv",
+                            "#Inventor V2.1 ascii\nFile { name \"pipe.iv\" }\n"
+                            "Texture2 { filename \"/dev/urandom\" }\n");
+  EXPECT_EQ(checkError(includes), includes +
+                                      ":2: error: File name pipe.iv: not a regular file (a FIFO); "
+                                      "only regular files are read");
+  const std::string device = test::writeOutputFile(
+      "device.iv", "#Inventor V2.1 ascii\nTexture2 { filename \"/dev/urandom\" }\n");
+  EXPECT_EQ(checkError(device), device +
+                                    ":2: error: Texture2 filename /dev/urandom: not a regular "
+                                    "file (a character device); only regular files are read");
+  EXPECT_EQ(checkError("/proc/self/mem"), "/proc/self/mem: error: cannot read: Input/output error");
+  for (const std::string& path : {fifo, std::string("/dev/zero")}) {
+    SCOPED_TRACE(path);
+    try {
+      loadScene(path);
+      ADD_FAILURE() << "read";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("not a regular file"), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
+// Issue 35: a Texture3 declaring a huge size died in std::bad_alloc before a value was read.
+TEST(SceneFileCheck, InlineImagesLargerThanTheFileAreRefusedBeforeCoinAllocatesThem) {
+  const std::string huge = test::writeOutputFile(
+      "huge_texture3.iv", "#Inventor V2.1 ascii\nTexture3 { images 60000 60000 60000 4 0xff }\n");
+  EXPECT_EQ(checkError(huge), huge +
+                                  ":2: error: Texture3 images declares 60000 x 60000 x 60000 "
+                                  "pixels; the rest of the file holds at most 4 values");
+  const std::string texture2 = test::writeOutputFile(
+      "huge_texture2.iv", "#Inventor V2.1 ascii\nTexture2 { image 100000 100000 3 0xff }\n");
+  EXPECT_NE(checkError(texture2).find("declares 100000 x 100000 pixels"), std::string::npos);
+  const std::string components =
+      test::writeOutputFile("components.iv", "#Inventor V2.1 ascii\nImage { image 1 1 9 0xff }\n");
+  EXPECT_EQ(checkError(components), components +
+                                        ":2: error: Image image declares 9 components a pixel; "
+                                        "expected 0 to 4");
+  // What a file does hold is read: two by two pixels of three components.
+  const std::string fits = test::writeOutputFile(
+      "fits.iv",
+      "#Inventor V2.1 ascii\nTexture2 { image 2 2 3 0xff0000 0xff00 0xff 0xffffff }\n"
+      "Cube { }\n");
+  EXPECT_EQ(checkError(fits), "");
+  EXPECT_TRUE(static_cast<bool>(loadScene(fits).root));
 }
 
 }  // namespace
