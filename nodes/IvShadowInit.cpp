@@ -6,12 +6,15 @@
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 
-#include <Inventor/SoDB.h>
+#include <Inventor/SoInteraction.h>
 
 namespace ivshadow {
 
 void init() {
-  SoDB::init();
+  // Coin's database, node kits, selection nodes, draggers and manipulators: what SoQt::init
+  // registers for the viewer, so that every command reads the same scenes (render refused a
+  // Selection that view drew).
+  SoInteraction::init();
   SoDeepShadowLight::initClass();
   SoDeepShadowSpotLight::initClass();
   SoDeepShadowDirectionalLight::initClass();

@@ -7,6 +7,7 @@
 #include "ivshadow/IvShadowInit.h"
 
 #include <Inventor/SoDB.h>
+#include <Inventor/SoType.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowDirectionalLight.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowGroup.h>
 #include <Inventor/annex/FXViz/nodes/SoShadowSpotLight.h>
@@ -35,6 +36,25 @@ TEST(NodeRegistration, CoinsLightTypesStayTheSameAfterInit) {
   EXPECT_TRUE(SoType::fromName("DeepShadowLight").isDerivedFrom(point));
   EXPECT_TRUE(SoType::fromName("DeepShadowSpotLight").isDerivedFrom(spot));
   EXPECT_TRUE(SoType::fromName("DeepShadowDirectionalLight").isDerivedFrom(directional));
+}
+
+}  // namespace
+}  // namespace ivshadow
+
+namespace ivshadow {
+namespace {
+
+// Issue 35: `render` refused a Selection that `view` (SoQt::init) drew. After init() every
+// command reads what SoQt's programs read: selection nodes, node kits, draggers, manipulators.
+TEST(NodeRegistration, InitRegistersWhatSoQtRegisters) {
+  init();
+  for (const char* name : {"Selection", "ExtSelection", "ShapeKit", "SeparatorKit",
+                           "TrackballManip", "Translate1Dragger", "PointLightManip"}) {
+    SCOPED_TRACE(name);
+    const SoType type = SoType::fromName(name);
+    ASSERT_FALSE(type.isBad());
+    EXPECT_TRUE(type.canCreateInstance());
+  }
 }
 
 }  // namespace
