@@ -151,6 +151,15 @@ bool PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShad
                           method == SoPeelingSeparator::AUTO_METHOD;
   options.owner = owner_;
   options.maxPasses = owner_->maxPasses.getValue();
+  if (options.maxPasses < 0) {
+    if (firstWarning(owner_, "negative maxPasses"))
+      SoDebugError::postWarning("SoPeelingSeparator",
+                                "%s: field maxPasses %d is negative; using 0 (until no layer is "
+                                "left, at most %d)",
+                                describeNode(owner_).c_str(), options.maxPasses,
+                                SoPeelingSeparator::kMaxPasses);
+    options.maxPasses = 0;
+  }
   options.earlyTermination = owner_->earlyTermination.getValue();
   const std::string failure = peelSubgraph(
       action, *pass, shading, options,

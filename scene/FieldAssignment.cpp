@@ -105,7 +105,10 @@ void FieldAssignment::apply(SoNode* root, const std::string& sceneName) const {
     const bool parsed = fieldPtr->read(&input, SbName(field.c_str()));
     SbString rest;
     const bool leftOver = parsed && input.read(rest);
-    if (!parsed || leftOver || !fieldPtr->set(value.c_str())) {
+    // Coin replaces a number it cannot hold (1e39 as a float) by 0 with a read error and
+    // reads on; the same value in a file is refused.
+    const bool replaced = parsed && !capture.firstError().text.empty();
+    if (!parsed || leftOver || replaced || !fieldPtr->set(value.c_str())) {
       fieldPtr->set(previous.getString());
       const std::string detail = leftOver
                                      ? "'" + std::string(rest.getString()) + "' follows the value"

@@ -2,6 +2,7 @@
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/PeelStatistics.h"
+#include "ivshadow/SoPeelingSeparator.h"
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/PeelReference.h"
 #include "tests/gl/ShadowScene.h"
@@ -486,6 +487,21 @@ TEST(Peeling, AViewWithoutTransparencyCostsNoPeelPass) {
 TEST(Peeling, EarlyTerminationOffRunsEveryPass) {
   const Rendered rendered = render(sceneText("method DUAL earlyTermination FALSE maxPasses 5", ""));
   EXPECT_EQ(rendered.stats.passes, 5);
+}
+
+// Issue 35: a negative maxPasses (from a file or --set PS.maxPasses=-1) was taken as 0
+// silently, where other out-of-range fields warn: it still means 0, said once.
+TEST(Peeling, ANegativeMaxPassesIsTakenAsZeroWithOneWarning) {
+  init();  // before the capture: Coin's handlers are set up by the first init
+  CoinMessageCapture messages;
+  const std::string text = sceneText("method DUAL earlyTermination FALSE maxPasses -1", "");
+  const Rendered rendered = render(text);
+  int warnings = 0;
+  for (const CoinMessageCapture::Message& m : messages.messages())
+    warnings += m.text.find("PeelingSeparator 'Peel': field maxPasses -1 is negative; using 0") !=
+                std::string::npos;
+  EXPECT_EQ(warnings, 1);
+  EXPECT_EQ(rendered.stats.passes, SoPeelingSeparator::kMaxPasses);
 }
 
 // Seen from above: a red glass (opacity 0.4) over a green glass (opacity 0.8) over the floor,

@@ -108,5 +108,20 @@ TEST_F(FieldAssignmentTest, TextLeftAfterTheValueIsAnErrorAndLeavesTheFieldAlone
   EXPECT_EQ(named("Glass")->diffuseColor.getNum(), 2);
 }
 
+// Issue 35: Coin reads a float it cannot hold as 0 after a read error and goes on; --set
+// "1e39 0 0" silently put a light at the origin where the same value in a file is refused.
+TEST_F(FieldAssignmentTest, NumbersCoinCannotHoldAreAnErrorAndLeaveTheFieldAlone) {
+  const std::string error = errorOf("Glass.transparency=1e39");
+  EXPECT_NE(error.find("cannot parse '1e39' as MFFloat for Glass.transparency (Detected "
+                       "non-valid floating point number"),
+            std::string::npos)
+      << error;
+  EXPECT_FLOAT_EQ(named("Glass")->transparency[0], 0.5f);
+  EXPECT_NE(errorOf("Glass.diffuseColor=1e39 0 0").find("cannot parse"), std::string::npos);
+  EXPECT_EQ(named("Glass")->diffuseColor[0], SbColor(1, 1, 1));
+  // The largest float still reads.
+  EXPECT_EQ(errorOf("Glass.transparency=3e38"), "");
+}
+
 }  // namespace
 }  // namespace ivshadow
