@@ -8,6 +8,7 @@
 #include <unistd.h>
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 
 namespace ivshadow {
@@ -46,8 +47,14 @@ SharedDevice& sharedDevice() {
     made->memory.limit = embreeMemoryLimit();
     // IVSHADOW_FAIL_EMBREE=device: the failure tests force, taking the path of a machine
     // where Embree cannot start (no supported CPU, no memory).
+    // An unknown word is reported rather than ignored, as IVSHADOW_FAIL_GL's: a test whose
+    // knob was misspelt would otherwise pass without forcing anything.
     const char* fail = std::getenv("IVSHADOW_FAIL_EMBREE");
-    if (fail != nullptr && std::string(fail) == "device")
+    const bool forced = fail != nullptr && std::string(fail) == "device";
+    if (fail != nullptr && *fail != '\0' && !forced)
+      std::fprintf(stderr, "ivshadow: warning: IVSHADOW_FAIL_EMBREE: '%s' is not device; ignored\n",
+                   fail);
+    if (forced)
       made->error = "Embree could not create a device (forced by IVSHADOW_FAIL_EMBREE=device)";
     else
       made->device = createEmbreeDevice(made->error, &made->memory);
@@ -96,7 +103,9 @@ bool RayCasters::ready(const SceneTriangles& casters, std::uint64_t version, con
     if (!scene_ && error_.empty()) error_ = "Embree failed";
   }
   if (scene_) return true;
-  if (warned_.insert(light).second)
+  // Once per light and what is done instead: a light whose RAYS fell back to its map still
+  // says that its group's bounce is dropped.
+  if (warned_.emplace(light, instead).second)
     SoDebugError::postWarning("SoDeepShadowLight", "light %s: cannot trace shadow rays (%s); %s",
                               lightName.c_str(), error_.c_str(), instead);
   return false;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 
 class SoLight;
 
@@ -29,8 +30,9 @@ class RayCasters {
  private:
   std::unique_ptr<CasterScene> scene_;
   std::uint64_t version_ = 0;
-  std::string error_;                // set once Embree failed: RAYS lights fall back to maps
-  std::set<const SoLight*> warned_;  // lights told they keep their map
+  std::string error_;  // set once Embree failed: RAYS lights fall back to maps
+  // (light, what is done instead) pairs already told
+  std::set<std::pair<const SoLight*, std::string>> warned_;
 };
 
 }  // namespace ivshadow

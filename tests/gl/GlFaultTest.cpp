@@ -343,5 +343,34 @@ TEST(GlFault, AnUnknownWordOfTheKnobIsReported) {
       << faulty.result.err;
 }
 
+// Issue 35: without a device a RAYS light falls back to its map and says so; its group's
+// bounce, placed with Embree whatever the method, was then dropped without a word (the
+// warning was said once per light, whatever it said).
+TEST(GlFault, WithoutAnEmbreeDeviceTheDroppedBounceIsSaidToo) {
+  std::string scene = groupScene("DeepShadowLight", "method RAYS", "COIN_BLENDING");
+  const std::string group = "castingLights DEEP_SHADOW_LIGHTS";
+  scene.replace(scene.find(group), group.size(), group + " bounce TRUE");
+  const Rendered faulty = render("embree_bounce", scene, {"IVSHADOW_FAIL_EMBREE=device"});
+  ASSERT_EQ(faulty.result.exitCode, 0) << faulty.result.err;
+  EXPECT_NE(faulty.result.err.find("using its deep shadow map"), std::string::npos)
+      << faulty.result.err;
+  EXPECT_NE(faulty.result.err.find("light 'Lamp': cannot trace shadow rays (Embree could not "
+                                   "create a device (forced by IVSHADOW_FAIL_EMBREE=device)); the "
+                                   "group renders without its bounce"),
+            std::string::npos)
+      << faulty.result.err;
+}
+
+TEST(GlFault, AnUnknownValueOfTheEmbreeKnobIsReported) {
+  const Rendered faulty =
+      render("embree_unknown", groupScene("DeepShadowLight", "method RAYS", "COIN_BLENDING"),
+             {"IVSHADOW_FAIL_EMBREE=devices"});
+  ASSERT_EQ(faulty.result.exitCode, 0) << faulty.result.err;
+  EXPECT_NE(faulty.result.err.find("IVSHADOW_FAIL_EMBREE: 'devices' is not device; ignored"),
+            std::string::npos)
+      << faulty.result.err;
+  EXPECT_EQ(faulty.result.err.find("cannot trace shadow rays"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ivshadow
