@@ -30,6 +30,9 @@
 #include <memory>
 #include <vector>
 
+// Last: Xlib defines macros (None, Bool, Status) that Qt's headers also use.
+#include <X11/Xlib.h>
+
 namespace ivshadow {
 namespace {
 
@@ -109,10 +112,19 @@ int runViewer(const ViewerOptions& options, const char* programName) {
     std::cerr << error.what() << '\n';
     return 2;
   }
-  // SoQt draws through GLX, so it needs an X display; without one Qt would abort.
-  if (std::getenv("DISPLAY") == nullptr || *std::getenv("DISPLAY") == '\0') {
+  // SoQt draws through GLX, so it needs an X display; without one (none set, or one that
+  // cannot be reached) Qt would abort.
+  const char* display = std::getenv("DISPLAY");
+  if (display == nullptr || *display == '\0') {
     std::cerr << "ivshadow: error: the viewer needs an X display (DISPLAY is not set); use "
                  "'ivshadow render' to render without one\n";
+    return 3;
+  }
+  if (Display* connection = XOpenDisplay(display)) {
+    XCloseDisplay(connection);
+  } else {
+    std::cerr << "ivshadow: error: the viewer cannot open the X display '" << display
+              << "' (DISPLAY); start an X server or use 'ivshadow render' to render without one\n";
     return 3;
   }
 

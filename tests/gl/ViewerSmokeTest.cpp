@@ -103,6 +103,15 @@ TEST(ViewerSmoke, ViewWithoutDisplayExitsThreeWithAdvice) {
   EXPECT_NE(result.err.find("DISPLAY is not set"), std::string::npos) << result.err;
 }
 
+// Issue 35: a DISPLAY nobody answers aborted in Qt (exit 134). No server listens on display
+// 97 (the tests' own server is elsewhere): the same advice, exit 3.
+TEST(ViewerSmoke, ViewWithAnUnreachableDisplayExitsThreeWithAdvice) {
+  const test::ProcessResult result = test::run(
+      {test::ivshadowExe(), "view", test::scenesDir() + "/no_camera.iv"}, {"DISPLAY=:97"});
+  EXPECT_EQ(result.exitCode, 3) << result.err;
+  EXPECT_NE(result.err.find("cannot open the X display ':97'"), std::string::npos) << result.err;
+}
+
 TEST(ViewerExamples, AnExistingSoQtApplicationRunsWithTheGroupAroundItsRoot) {
   const test::ProcessResult result =
       runOnTestDisplay({std::string(IVSHADOW_BIN_DIR) + "/soqt_add_shadows",
