@@ -1,13 +1,17 @@
 #include "image/PngFile.h"
 
 #include "image/AtomicFile.h"
+#include "image/MemoryBudget.h"
 #include "scene/InputError.h"
 
 #include <png.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -27,6 +31,34 @@ using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
                            ": error: " + message);
 }
 void ignorePngWarning(png_structp, png_const_charp) {}
+
+// Deflate expands its input at most 1032 times (a 258-byte match per 2 bits, RFC 1951); zlib's
+// own figure for its compression bound.
+constexpr std::uint64_t kDeflateLargestExpansion = 1032;
+
+// The size a header declares against what the file can hold and the machine can give, before
+// a row is allocated (a 74-byte PNG declaring 60000 x 60000 died in std::bad_alloc; one of
+// 30000 x 30000 was read after 3.5 GB and 7.8 s).
+void checkDeclaredSize(const std::string& path, png_structp png, png_infop info) {
+  const std::uint64_t width = png_get_image_width(png, info);
+  const std::uint64_t height = png_get_image_height(png, info);
+  const std::uint64_t data = height * (1 + std::uint64_t(png_get_rowbytes(png, info)));
+  std::error_code ec;
+  const std::uint64_t fileBytes = std::filesystem::file_size(path, ec);
+  if (!ec && data > fileBytes * kDeflateLargestExpansion)
+    throw InputError(
+        path + ": error: the header declares " + std::to_string(width) + " x " +
+        std::to_string(height) + " pixels, " + std::to_string(data) +
+        " bytes of image data; a PNG file of " + std::to_string(fileBytes) +
+        " bytes holds at most " + std::to_string(fileBytes * kDeflateLargestExpansion) +
+        " (deflate expands at most " + std::to_string(kDeflateLargestExpansion) + " times)");
+  const std::uint64_t pixels = width * height * 4;
+  const std::uint64_t available = MemoryBudget::available();
+  if (pixels > available || width * height > std::uint64_t(std::numeric_limits<int>::max()))
+    throw InputError(path + ": error: the header declares " + std::to_string(width) + " x " +
+                     std::to_string(height) + " pixels, " + std::to_string(pixels) +
+                     " bytes as RGBA; " + std::to_string(available) + " bytes are available");
+}
 
 }  // namespace
 
@@ -76,6 +108,7 @@ Image readPng(const std::string& path) {
     png_init_io(png, file.get());
     png_set_sig_bytes(png, sizeof signature);
     png_read_info(png, info);
+    checkDeclaredSize(path, png, info);
     png_set_expand(png);
     png_set_strip_16(png);
     png_set_gray_to_rgb(png);
