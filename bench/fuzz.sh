@@ -14,7 +14,7 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   CXX=clang++ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIVSHADOW_FUZZ=ON \
     -DBUILD_TESTING=OFF >/dev/null
 fi
-all=(SceneReaderFuzzer FieldAssignmentFuzzer VariantsFileFuzzer ImageReaderFuzzer)
+all=(SceneReaderFuzzer SceneRenderFuzzer FieldAssignmentFuzzer VariantsFileFuzzer ImageReaderFuzzer)
 harnesses=("${@:2}")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
 for harness in "${harnesses[@]}"; do
@@ -26,8 +26,8 @@ seed() {
   local harness=$1 dir=$2
   rm -rf "$dir" && mkdir -p "$dir"
   case "$harness" in
-    SceneReaderFuzzer)
-      cp iv_scenes/*.iv iv_scenes/malformed/*.iv tests/loader/*.iv "$dir"/
+    SceneReaderFuzzer|SceneRenderFuzzer)
+      cp iv_scenes/*.iv iv_scenes/malformed/*.iv tests/loader/*.iv fuzz/seeds/*.iv "$dir"/
       # The stress scenes are large and say nothing the small ones do not.
       rm -f "$dir"/stress_*.iv ;;
     FieldAssignmentFuzzer)
