@@ -1,6 +1,8 @@
 #include "nodes/CastingLight.h"
 
+#include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DeepShadowSettings.h"
 #include "scene/WarnOnce.h"
@@ -35,11 +37,17 @@ bool usableDirection(const SbVec3f& direction) {
 
 }  // namespace
 
+bool isDeepShadowLight(const SoLight& light) {
+  return light.isOfType(SoDeepShadowLight::getClassTypeId()) ||
+         light.isOfType(SoDeepShadowSpotLight::getClassTypeId()) ||
+         light.isOfType(SoDeepShadowDirectionalLight::getClassTypeId());
+}
+
 bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
                   const SbMatrix& toGroup, CastingLight& out) {
   if (!light.on.getValue()) return false;
-  const bool deep = light.isOfType(SoDeepShadowLight::getClassTypeId());
-  if (!deep && group.castingLights.getValue() == SoTransparentShadowGroup::DEEP_SHADOW_LIGHTS)
+  if (!isDeepShadowLight(light) &&
+      group.castingLights.getValue() == SoTransparentShadowGroup::DEEP_SHADOW_LIGHTS)
     return false;
   if (light.isOfType(SoSpotLight::getClassTypeId())) {
     const auto& spot = static_cast<const SoSpotLight&>(light);

@@ -24,6 +24,11 @@ struct CastingLight {
   float cutOffAngle = 0.0f;
 };
 
+// Whether `light` is one of the plugin's deep shadow lights (SoDeepShadowLight,
+// SoDeepShadowSpotLight, SoDeepShadowDirectionalLight): the lights that cast under
+// castingLights DEEP_SHADOW_LIGHTS.
+bool isDeepShadowLight(const SoLight& light);
+
 // Whether `light` casts in `group` (its castingLights field, the light's on field, the light
 // type) and, when it does, where from. A light that cannot cast (zero direction; a spot light
 // whose cutOffAngle is not in (0, pi/2]; a light type other than point, spot and directional)

@@ -20,7 +20,8 @@ struct PeelStatistics;
   strength follows each caster's opacity and whose colour follows its colour.
 
   Every light turned on in the subgraph casts (`castingLights ALL_LIGHTS`, the default), or
-  only the SoDeepShadowLight nodes (`DEEP_SHADOW_LIGHTS`). A SoDeepShadowLight is a point light
+  only the deep shadow lights (`DEEP_SHADOW_LIGHTS`: SoDeepShadowLight, SoDeepShadowSpotLight,
+  SoDeepShadowDirectionalLight). A SoDeepShadowLight is a point light
   with its own shadow fields; an ordinary SoPointLight, SoSpotLight or SoDirectionalLight
   (Coin's SoShadowSpotLight and SoShadowDirectionalLight included) casts with the group's
   fields below, which mean what the SoDeepShadowLight fields of the same names mean. Point and
@@ -153,7 +154,8 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   };
   enum CastingLights {
     ALL_LIGHTS,         //!< every light turned on in the subgraph casts
-    DEEP_SHADOW_LIGHTS  //!< only SoDeepShadowLight nodes cast; other lights only light
+    DEEP_SHADOW_LIGHTS  //!< only the deep shadow lights cast (SoDeepShadowLight and its spot
+                        //!< and directional kin); other lights only light
   };
 
   SoSFBool isActive;

@@ -238,6 +238,19 @@ TEST_P(LightTypes, DeepShadowDirectionalLightCastsWithItsOwnFields) {
                 {obliqueLight(0.3, 1.0, 1.0, kGreyShadow)}, "shadowColor COLORED");
 }
 
+// Issue 36: the dedicated spot and directional nodes exist for castingLights
+// DEEP_SHADOW_LIGHTS, and cast nothing there on any path (only SoDeepShadowLight was counted).
+TEST_P(LightTypes, DeepShadowSpotAndDirectionalLightsCastUnderDeepShadowLightsOnly) {
+  expectPicture(
+      "DeepShadowSpotLight { location 0 0 1 direction 0 0 -1 cutOffAngle 0.5"
+      " shadowColor MONOCHROME }",
+      0.15, {overheadLight(0.15, 1.0, 0.5, 0.0, kGreyShadow)},
+      "shadowColor COLORED castingLights DEEP_SHADOW_LIGHTS");
+  expectPicture("DeepShadowDirectionalLight { direction 1 0 -1 shadowColor MONOCHROME }", 0.3,
+                {obliqueLight(0.3, 1.0, 1.0, kGreyShadow)},
+                "shadowColor COLORED castingLights DEEP_SHADOW_LIGHTS");
+}
+
 TEST_P(LightTypes, SpotConeWiderThanOneFaceCastsAsAPointLight) {
   // cutOffAngle 1.2 (69 degrees, wider than kMaxSpotFaceHalfAngle): the map is a cube; the
   // cone's rim (radius tan(1.2) = 2.6) lies beyond the floor, so all of it is lit.

@@ -88,10 +88,10 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
 
 TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
   const std::string dir = test::outputDir();
-  for (const std::vector<std::string>& option : {std::vector<std::string>{"--layers", "0"},
-                                                 std::vector<std::string>{"--slices", "33"},
-                                                 std::vector<std::string>{"--precision", "double"},
-                                                 std::vector<std::string>{"--filter", "gauss"}}) {
+  for (const std::vector<std::string>& option :
+       {std::vector<std::string>{"--layers", "0"}, std::vector<std::string>{"--slices", "33"},
+        std::vector<std::string>{"--precision", "double"},
+        std::vector<std::string>{"--filter", "gauss"}}) {
     std::vector<std::string> command{test::ivshadowExe(), "trade",
                                      test::scenesDir() + "/coloured_shadows.iv", "-o", dir};
     command.insert(command.end(), option.begin(), option.end());
@@ -108,9 +108,9 @@ TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
 
 TEST(TradeCommand, ASizeBeyondMemoryIsRefusedBeforeTheReference) {
   const std::string dir = test::outputDir() + "/out";
-  // The reference (16) and the traced render (12 + 370, and 80 + 80 for its group's peel
-  // targets and fragment lists) in one process: 558 bytes a pixel.
-  if (double(MemoryBudget::available()) > 558.0 * 16384.0 * 16384.0)
+  // The reference (34) and the traced render (12 + 370, and 80 + 80 for its group's peel
+  // targets and fragment lists) in one process: 576 bytes a pixel.
+  if (double(MemoryBudget::available()) > 576.0 * 16384.0 * 16384.0)
     GTEST_SKIP() << "this machine has the memory";
   const test::ProcessResult result =
       run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o", dir,
@@ -118,7 +118,7 @@ TEST(TradeCommand, ASizeBeyondMemoryIsRefusedBeforeTheReference) {
   EXPECT_EQ(result.exitCode, 2) << result.err;
   EXPECT_NE(result.err.find("--size 16384x16384: error: the trade"), std::string::npos)
       << result.err;
-  EXPECT_NE(result.err.find("558 bytes per pixel"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("576 bytes per pixel"), std::string::npos) << result.err;
   EXPECT_FALSE(test::fileExists(dir)) << "bad input makes no directory";
 }
 

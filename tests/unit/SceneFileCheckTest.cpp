@@ -170,6 +170,7 @@ TEST(SceneFileCheck, BinaryFilesAreLeftToCoin) {
 // Issue 35: VRMLInline with a '%' segfaulted inside Coin's message as File did; Texture3
 // prints every name it fails to read as a format; Texture2 prints names through "%s".
 TEST(SceneFileCheck, EveryNameCoinWouldPrintAsAFormatIsRefused) {
+  init();
   const std::string inlined = test::writeOutputFile(
       "inline_percent.iv", "#Inventor V2.1 ascii\nVRMLInline { url \"%s%n.wrl\" }\n");
   EXPECT_EQ(checkError(inlined), inlined +
