@@ -10,6 +10,7 @@
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageComparison.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
@@ -119,6 +120,12 @@ int runTrade(const TradeOptions& options) {
     };
     const bool maps = asked("map"), rays = asked("rays"), volumes = asked("volumes"),
                opacity = asked("opacity"), tracer = asked("tracer");
+    CommandPaths()
+        .input("scene", options.scene)
+        .output("-o", options.outputDir + "/trade.csv")
+        .output("-o", options.outputDir + "/trade.png")
+        .output("-o", options.outputDir + "/reference.png")
+        .check();
 
     init();
     LoadedScene scene = loadScene(options.scene);

@@ -1,6 +1,6 @@
 #include "cli/VariantsReport.h"
 
-#include "image/AtomicFile.h"
+#include "image/OutputFiles.h"
 
 #include <cstdint>
 #include <iomanip>
@@ -173,8 +173,11 @@ void writeVariantsReports(const std::string& outputDir, const std::string& base,
     html << "</figcaption></figure>\n";
   }
   html << "</body></html>\n";
-  writeTextFileAtomically(outputDir + "/variants.csv", csv.str());
-  writeTextFileAtomically(outputDir + "/index.html", html.str());
+  // Both reports or neither, so that the table and the contact sheet never disagree.
+  OutputFiles outputs;
+  outputs.addText(outputDir + "/variants.csv", csv.str());
+  outputs.addText(outputDir + "/index.html", html.str());
+  outputs.commit();
 }
 
 }  // namespace ivshadow

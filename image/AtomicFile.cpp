@@ -22,7 +22,7 @@ std::string temporaryNameFor(const std::string& path) {
 
 // The file a path finally names: a symbolic link is followed (a rename over the link would
 // replace the link with a file and leave its target as it was).
-std::filesystem::path finalTarget(const std::filesystem::path& path) {
+std::filesystem::path followLinks(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   fs::path current = path;
   std::error_code ec;
@@ -46,7 +46,7 @@ bool writesThrough(const std::filesystem::path& target) {
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::string path) : path_(finalTarget(path).string()) {
+AtomicFile::AtomicFile(std::string path) : path_(followLinks(path).string()) {
   writeThrough_ = writesThrough(path_);
   temporary_ = writeThrough_ ? path_ : temporaryNameFor(path_);
 }
@@ -69,7 +69,7 @@ void AtomicFile::commit() {
 void AtomicFile::checkWritable(const std::string& path, const std::string& what) {
   namespace fs = std::filesystem;
   if (path.empty()) throw InputError(what + ": error: empty file name");
-  const fs::path target = finalTarget(path);
+  const fs::path target = followLinks(path);
   if (writesThrough(target)) {
     if (::access(target.c_str(), W_OK) != 0)
       throw InputError(path + ": error: cannot write " + what + ": " + std::strerror(errno));
@@ -102,11 +102,12 @@ void AtomicFile::checkWritable(const std::string& path, const std::string& what)
   }
 }
 
-void AtomicFile::checkNotInput(const std::string& path, const std::string& input,
-                               const std::string& what) {
-  std::error_code ec;
-  if (std::filesystem::equivalent(finalTarget(path), input, ec) && !ec)
-    throw InputError(path + ": error: cannot write " + what + " over the input file " + input);
+std::string AtomicFile::finalTarget(const std::string& path) {
+  return followLinks(path).string();
+}
+
+bool AtomicFile::writesInPlace(const std::string& path) {
+  return writesThrough(followLinks(path));
 }
 
 void writeTextFileAtomically(const std::string& path, const std::string& text) {

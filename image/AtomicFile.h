@@ -16,17 +16,19 @@ class AtomicFile {
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
+  // The file to write: the temporary, or the output itself where it is written in place.
   const std::string& temporaryPath() const { return temporary_; }
+  bool inPlace() const { return writeThrough_; }
   // Throws std::runtime_error when the rename fails.
   void commit();
 
   // Throws InputError when `path` cannot be created (missing directory, no permission), so
   // bad output paths are reported before any work is done.
   static void checkWritable(const std::string& path, const std::string& what);
-  // Throws InputError when `path` names the file `input` (through links or other
-  // spellings): an output must never overwrite the scene it was made from.
-  static void checkNotInput(const std::string& path, const std::string& input,
-                            const std::string& what);
+  // The file `path` finally names: symbolic links followed, even to a file not there yet.
+  static std::string finalTarget(const std::string& path);
+  // Whether `path` is an existing device, pipe or socket, which is written in place.
+  static bool writesInPlace(const std::string& path);
 
  private:
   std::string path_;

@@ -1,6 +1,7 @@
 #include "image/ImageFile.h"
 
 #include "image/JpegFile.h"
+#include "image/OutputFiles.h"
 #include "image/PngFile.h"
 #include "scene/InputError.h"
 
@@ -22,10 +23,16 @@ ImageFormat imageFormatFor(const std::string& path) {
 }
 
 void writeImage(const std::string& path, const Image& image) {
-  if (imageFormatFor(path) == ImageFormat::Jpeg)
-    writeJpeg(path, image);
+  OutputFiles files;
+  files.addImage(path, image);
+  files.commit();
+}
+
+void writeImageTo(const std::string& file, const std::string& name, const Image& image) {
+  if (imageFormatFor(name) == ImageFormat::Jpeg)
+    writeJpegTo(file, name, image);
   else
-    writePng(path, image);
+    writePngTo(file, name, image);
 }
 
 Image readImage(const std::string& path) {

@@ -3,6 +3,7 @@
 #include "callbacks/ShaderConstants.h"
 #include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageSize.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
@@ -90,6 +91,17 @@ std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) 
   if (!options.inspectOut.empty()) {
     AtomicFile::checkWritable(options.inspectOut, "the inspector's picture");
   }
+  // --save-scene over the scene it read is refused too: a scripted edit in place would lose
+  // the file's comments and `File` includes for good (the window's Save Scene As dialog asks
+  // before it replaces a file).
+  CommandPaths()
+      .input("scene", options.scene)
+      .output("--screenshot", options.screenshot)
+      .output("--save-scene", options.saveScene)
+      .output("--figures", options.figures)
+      .output("--window-shot", options.windowShot)
+      .output("--inspect-out", options.inspectOut)
+      .check();
   std::vector<FieldAssignment> assignments;
   for (const std::string& text : options.assignments) {
     assignments.push_back(FieldAssignment::parse(text));

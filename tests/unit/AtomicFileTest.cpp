@@ -1,4 +1,5 @@
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "scene/InputError.h"
 #include "tests/support/TestSupport.h"
 
@@ -64,21 +65,50 @@ TEST(AtomicFile, DevicesAreWrittenInPlaceNeverReplaced) {
   EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
-TEST(AtomicFile, TheInputIsNeverAnOutputWhateverTheSpelling) {
+TEST(CommandPaths, TheInputIsNeverAnOutputWhateverTheSpelling) {
   const std::string dir = test::outputDir();
   std::ofstream(dir + "/scene.iv") << "#Inventor V2.1 ascii\n";
   fs::create_symlink("scene.iv", dir + "/alias.iv");
-  for (const std::string output : {dir + "/scene.iv", dir + "/./scene.iv", dir + "/alias.iv"}) {
-    try {
-      AtomicFile::checkNotInput(output, dir + "/scene.iv", "the image");
-      ADD_FAILURE() << output << " was accepted as an output";
-    } catch (const InputError& error) {
-      EXPECT_EQ(
-          std::string(error.what()),
-          output + ": error: cannot write the image over the input file " + dir + "/scene.iv");
-    }
+  fs::create_symlink(dir + "/missing.png", dir + "/dangling.png");
+  for (const std::string output :
+       {dir + "/scene.iv", dir + "/./scene.iv", dir + "/alias.iv",
+        dir + "/../" + fs::path(dir).filename().string() + "/scene.iv"}) {
+    const std::string error = test::inputErrorOf(
+        [&] { CommandPaths().input("scene", dir + "/scene.iv").output("-o", output).check(); });
+    EXPECT_EQ(error, output + ": error: -o names the input scene (" + dir +
+                         "/scene.iv); an output never replaces an input");
   }
-  AtomicFile::checkNotInput(dir + "/other.png", dir + "/scene.iv", "the image");
+  // Files not there yet compare by their names, a dangling link by the file it would make.
+  EXPECT_TRUE(CommandPaths::sameFile(dir + "/new.png", dir + "/sub/../new.png"));
+  EXPECT_TRUE(CommandPaths::sameFile(dir + "/dangling.png", dir + "/missing.png"));
+  EXPECT_FALSE(CommandPaths::sameFile(dir + "/new.png", dir + "/New.png"));
+  EXPECT_EQ(test::inputErrorOf([&] {
+              CommandPaths()
+                  .input("scene", dir + "/scene.iv")
+                  .output("-o", dir + "/other.png")
+                  .output("--stats", "")
+                  .check();
+            }),
+            "");
+}
+
+TEST(CommandPaths, TwoOutputsNeverShareAFileButMayShareADevice) {
+  const std::string dir = test::outputDir();
+  const std::string error = test::inputErrorOf([&] {
+    CommandPaths().output("-o", dir + "/x.png").output("--stats", dir + "/./x.png").check();
+  });
+  EXPECT_EQ(error, dir + "/./x.png: error: -o and --stats name the same file (" + dir +
+                       "/x.png); each output needs a file of its own");
+  fs::create_symlink("x.png", dir + "/y.png");
+  EXPECT_NE(test::inputErrorOf([&] {
+              CommandPaths().output("-o", dir + "/y.png").output("--pfm", dir + "/x.png").check();
+            }),
+            "")
+      << "through a link not there yet";
+  EXPECT_EQ(test::inputErrorOf([&] {
+              CommandPaths().output("-o", "/dev/null").output("--stats", "/dev/null").check();
+            }),
+            "");
 }
 
 }  // namespace
