@@ -2,6 +2,8 @@
 
 #include "scene/InputError.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -44,6 +46,24 @@ bool writesThrough(const std::filesystem::path& target) {
          !std::filesystem::is_directory(status);
 }
 
+// A file the user could not write in place is not replaced either, although the rename only
+// needs the directory: replacing it would undo its owner's choice (a read-only reference
+// picture) and hand the file to this user. Root may write any file, so for root the mode
+// decides: a file nobody may write (0444) is refused, the rest are replaced keeping their
+// owner and mode (AtomicFile::commit).
+void checkReplaceable(const std::string& path, const std::filesystem::path& target,
+                      const std::string& what) {
+  struct stat info {};
+  if (::stat(target.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return;
+  char mode[8];
+  std::snprintf(mode, sizeof mode, "%04o", unsigned(info.st_mode & 07777));
+  const bool root = ::geteuid() == 0;
+  if (root ? (info.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0
+           : ::faccessat(AT_FDCWD, target.c_str(), W_OK, AT_EACCESS) != 0)
+    throw InputError(path + ": error: cannot write " + what + ": the file is read-only (mode " +
+                     mode + ", owner uid " + std::to_string(info.st_uid) + "); it is not replaced");
+}
+
 }  // namespace
 
 AtomicFile::AtomicFile(std::string path) : path_(followLinks(path).string()) {
@@ -59,6 +79,16 @@ void AtomicFile::commit() {
   if (writeThrough_) {
     committed_ = true;
     return;
+  }
+  // The file replaced keeps its mode (a private 0600 picture stays private) and, where this
+  // user may give it (root), its owner and group.
+  struct stat existing {};
+  if (::stat(path_.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) {
+    // Only root may give a file to another owner: for others it stays theirs, as the check
+    // allowed (they could write it), so a failure here is no error.
+    const int given = ::chown(temporary_.c_str(), existing.st_uid, existing.st_gid);
+    static_cast<void>(given);
+    ::chmod(temporary_.c_str(), existing.st_mode & 07777);
   }
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
     throw std::runtime_error(path_ + ": error: cannot write: " + std::strerror(errno));
@@ -87,6 +117,7 @@ void AtomicFile::checkWritable(const std::string& path, const std::string& what)
   if (::access(directory.c_str(), W_OK) != 0) {
     throw InputError(path + ": error: cannot write " + what + ": " + std::strerror(errno));
   }
+  checkReplaceable(path, target, what);
   // The file is written under its temporary name first, which is longer: both must fit the
   // directory's file system (ENAMETOOLONG after the work would lose it).
   const long nameMax = ::pathconf(directory.c_str(), _PC_NAME_MAX);

@@ -1,5 +1,6 @@
 #include "image/ImageFile.h"
 
+#include "image/AtomicFile.h"
 #include "image/JpegFile.h"
 #include "image/OutputFiles.h"
 #include "image/PngFile.h"
@@ -17,6 +18,8 @@ ImageFormat imageFormatFor(const std::string& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".png") return ImageFormat::Png;
   if (extension == ".jpg" || extension == ".jpeg") return ImageFormat::Jpeg;
+  // A device or pipe (`-o /dev/null`, a FIFO) is written in place whatever its name.
+  if (AtomicFile::writesInPlace(path)) return ImageFormat::Png;
   throw InputError(path + ": error: cannot write images of type '" +
                    (extension.empty() ? std::string("(no extension)") : extension) +
                    "'; supported: .png, .jpg, .jpeg");

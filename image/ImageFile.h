@@ -8,7 +8,8 @@ namespace ivshadow {
 
 enum class ImageFormat { Png, Jpeg };
 
-// The format `path`'s extension names, case-insensitively: .png, .jpg or .jpeg. Throws
+// The format `path`'s extension names, case-insensitively: .png, .jpg or .jpeg; PNG for an
+// existing device or pipe of another name (`/dev/null`), which is written in place. Throws
 // InputError naming `path` and the supported extensions for any other (or none), so a
 // command refuses an output name before doing any work instead of writing PNG data under a
 // .jpg name.

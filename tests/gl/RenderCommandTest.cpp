@@ -542,6 +542,27 @@ TEST(RenderCommand, ASignalDuringTheWriteLeavesNoFile) {
   }
 }
 
+// `-o /dev/null` was refused for its name although devices are written in place; an output
+// the user may not write (a read-only file) is refused before the work, and kept.
+TEST(RenderCommand, DevicesAreWrittenAndReadOnlyFilesAreKept) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult null = run(
+      {test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", "/dev/null", "--size", "40x30"});
+  EXPECT_EQ(null.exitCode, 0) << null.err;
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  const std::string locked = dir + "/locked.png";
+  std::ofstream(locked) << "kept";
+  std::filesystem::permissions(locked, std::filesystem::perms::owner_read |
+                                           std::filesystem::perms::group_read |
+                                           std::filesystem::perms::others_read);
+  const test::ProcessResult refused =
+      run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", locked, "--size", "40x30"});
+  EXPECT_EQ(refused.exitCode, 2) << refused.err;
+  EXPECT_NE(refused.err.find("the file is read-only (mode 0444"), std::string::npos) << refused.err;
+  EXPECT_EQ(bytesOf(locked), "kept");
+  EXPECT_EQ(test::filesIn(dir), std::vector<std::string>{"locked.png"});
+}
+
 TEST(RenderCommand, VersionAndHelp) {
   const test::ProcessResult version = run({test::ivshadowExe(), "--version"});
   EXPECT_EQ(version.exitCode, 0);

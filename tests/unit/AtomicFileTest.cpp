@@ -4,6 +4,7 @@
 #include "tests/support/TestSupport.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -63,6 +64,45 @@ TEST(AtomicFile, DevicesAreWrittenInPlaceNeverReplaced) {
   reader.join();
   EXPECT_EQ(received, "through");
   EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+// Rendering over a read-only file owned by someone else replaced it, with a new owner and
+// mode 0644: the directory allowed the rename. A file the user could not write in place is
+// refused (for root, who may write anything, one without any write bit), and a file that is
+// replaced keeps its mode, and for root its owner.
+TEST(AtomicFile, AFileThatMayNotBeWrittenIsRefusedAndAReplacedOneKeepsItsOwnerAndMode) {
+  const std::string dir = test::outputDir();
+  const std::string locked = dir + "/locked.png";
+  std::ofstream(locked) << "reference picture";
+  ASSERT_EQ(::chmod(locked.c_str(), 0444), 0);
+  const std::string error =
+      test::inputErrorOf([&] { AtomicFile::checkWritable(locked, "the image"); });
+  EXPECT_EQ(
+      error.rfind(locked + ": error: cannot write the image: the file is read-only (mode 0444", 0),
+      0u)
+      << error;
+  EXPECT_EQ(contents(locked), "reference picture");
+  // Through a link too.
+  fs::create_symlink("locked.png", dir + "/link.png");
+  EXPECT_NE(test::inputErrorOf([&] { AtomicFile::checkWritable(dir + "/link.png", "the image"); }),
+            "");
+
+  const std::string shared = dir + "/shared.png";
+  std::ofstream(shared) << "old";
+  ASSERT_EQ(::chmod(shared.c_str(), 0640), 0);
+  const bool root = ::geteuid() == 0;
+  // As root the file is given to another user first (65534: nobody), whose file root writes.
+  if (root) ASSERT_EQ(::chown(shared.c_str(), 65534, 65534), 0);
+  EXPECT_EQ(test::inputErrorOf([&] { AtomicFile::checkWritable(shared, "the image"); }), "");
+  writeTextFileAtomically(shared, "new");
+  EXPECT_EQ(contents(shared), "new");
+  struct stat info {};
+  ASSERT_EQ(::stat(shared.c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 07777, 0640u);
+  if (root) {
+    EXPECT_EQ(info.st_uid, 65534u);
+    EXPECT_EQ(info.st_gid, 65534u);
+  }
 }
 
 TEST(CommandPaths, TheInputIsNeverAnOutputWhateverTheSpelling) {
