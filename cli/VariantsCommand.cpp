@@ -218,7 +218,8 @@ int runVariants(const VariantsOptions& options) {
 
     // A variant whose manifest is current and whose picture exists was rendered by an
     // earlier run (or another shard); it is kept, not rendered again.
-    const SweepState before = SweepState::collect(plan, options.outputDir);
+    const SweepState before =
+        SweepState::collect(plan, options.outputDir, SweepState::BrokenManifest::RenderAgain);
     std::vector<std::size_t> todo;
     for (std::size_t i : selected)
       if (!before.outcomes[i].ok()) todo.push_back(i);
