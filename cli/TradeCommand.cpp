@@ -14,6 +14,7 @@
 #include "image/ImageComparison.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
+#include "image/OutputFiles.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
@@ -289,12 +290,17 @@ int runTrade(const TradeOptions& options) {
                                   row.kind == "opacity map"});
     }
     markParetoFront(points);
-    writePng(options.outputDir + "/reference.png", exact);
-    writeTextFileAtomically(options.outputDir + "/trade.csv", csv.str());
-    writeTradePlot(options.outputDir + "/trade.png",
-                   std::filesystem::path(options.scene).filename().string() + " at " +
-                       size.toString() + " on " + renderer->capabilities().renderer,
-                   points);
+    // The reference, the table and the chart together or none.
+    OutputFiles outputs;
+    outputs.add(options.outputDir + "/reference.png", [&](const std::string& file) {
+      writePngTo(file, options.outputDir + "/reference.png", exact);
+    });
+    outputs.addText(options.outputDir + "/trade.csv", csv.str());
+    addTradePlot(outputs, options.outputDir + "/trade.png",
+                 std::filesystem::path(options.scene).filename().string() + " at " +
+                     size.toString() + " on " + renderer->capabilities().renderer,
+                 points);
+    outputs.commit();
     std::cout << "wrote " << options.outputDir << "/trade.csv and trade.png (" << settings.size()
               << " settings, reference " << referenceMs << " ms)\n";
     return 0;
