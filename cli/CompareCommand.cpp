@@ -40,17 +40,17 @@ void printRow(const char* name, const ImageComparison::Channel& channel) {
 
 int runCompare(const CompareOptions& options) {
   return withExitStatus([&] {
-    if (!options.diffPath.empty()) {
-      imageFormatFor(options.diffPath);
-      AtomicFile::checkWritable(options.diffPath, "the diff image");
-    }
-    if (!options.jsonPath.empty()) AtomicFile::checkWritable(options.jsonPath, "the metrics");
     CommandPaths()
         .input("reference", options.reference)
         .input("candidate", options.candidate)
         .output("--diff", options.diffPath)
         .output("--json", options.jsonPath)
         .check();
+    if (!options.diffPath.empty()) {
+      imageFormatFor(options.diffPath);
+      AtomicFile::checkWritable(options.diffPath, "the diff image");
+    }
+    if (!options.jsonPath.empty()) AtomicFile::checkWritable(options.jsonPath, "the metrics");
     const Image a = readImage(options.reference);
     const Image b = readImage(options.candidate);
     const ImageComparison result =

@@ -50,15 +50,15 @@ int runReference(const ReferenceCommandOptions& options) {
     std::vector<FieldAssignment> assignments;
     for (const std::string& text : options.assignments)
       assignments.push_back(FieldAssignment::parse(text));
-    imageFormatFor(options.output);
-    AtomicFile::checkWritable(options.output, "the image");
-    MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
-    if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
     CommandPaths()
         .input("scene", options.scene)
         .output("-o", options.output)
         .output("--pfm", options.pfm)
         .check();
+    imageFormatFor(options.output);
+    AtomicFile::checkWritable(options.output, "the image");
+    MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
+    if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
 
     init();
     installCoinOffscreenContexts();

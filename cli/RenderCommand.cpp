@@ -149,14 +149,14 @@ int runRender(const RenderOptions& options) {
     for (const std::string& text : options.assignments) {
       assignments.push_back(FieldAssignment::parse(text));
     }
-    imageFormatFor(options.output);
-    AtomicFile::checkWritable(options.output, "the image");
-    if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
     CommandPaths()
         .input("scene", options.scene)
         .output("-o", options.output)
         .output("--stats", options.statsPath)
         .check();
+    imageFormatFor(options.output);
+    AtomicFile::checkWritable(options.output, "the image");
+    if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
 
     init();
     // The statistics report GPU time per pass; without them no pass waits for its timer.

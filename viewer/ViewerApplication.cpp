@@ -102,17 +102,6 @@ std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) 
     throw InputError("ivshadow: error: --inspect-out needs --inspect");
   }
   if (!options.inspect.empty()) parseInspect(options.inspect);
-  // Every picture follows its name's format, as `ivshadow render` does (a .jpg screenshot
-  // was PNG data under that name).
-  for (const std::string* picture : {&options.screenshot, &options.windowShot, &options.inspectOut})
-    if (!picture->empty()) imageFormatFor(*picture);
-  if (!options.screenshot.empty()) AtomicFile::checkWritable(options.screenshot, "the screenshot");
-  if (!options.saveScene.empty()) AtomicFile::checkWritable(options.saveScene, "the scene");
-  if (!options.figures.empty()) AtomicFile::checkWritable(options.figures, "the figures");
-  if (!options.windowShot.empty()) AtomicFile::checkWritable(options.windowShot, "the window");
-  if (!options.inspectOut.empty()) {
-    AtomicFile::checkWritable(options.inspectOut, "the inspector's picture");
-  }
   // --save-scene over the scene it read is refused too: a scripted edit in place would lose
   // the file's comments and `File` includes for good (the window's Save Scene As dialog asks
   // before it replaces a file).
@@ -124,6 +113,17 @@ std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) 
       .output("--window-shot", options.windowShot)
       .output("--inspect-out", options.inspectOut)
       .check();
+  // Every picture follows its name's format, as `ivshadow render` does (a .jpg screenshot
+  // was PNG data under that name).
+  for (const std::string* picture : {&options.screenshot, &options.windowShot, &options.inspectOut})
+    if (!picture->empty()) imageFormatFor(*picture);
+  if (!options.screenshot.empty()) AtomicFile::checkWritable(options.screenshot, "the screenshot");
+  if (!options.saveScene.empty()) AtomicFile::checkWritable(options.saveScene, "the scene");
+  if (!options.figures.empty()) AtomicFile::checkWritable(options.figures, "the figures");
+  if (!options.windowShot.empty()) AtomicFile::checkWritable(options.windowShot, "the window");
+  if (!options.inspectOut.empty()) {
+    AtomicFile::checkWritable(options.inspectOut, "the inspector's picture");
+  }
   std::vector<FieldAssignment> assignments;
   for (const std::string& text : options.assignments) {
     assignments.push_back(FieldAssignment::parse(text));
