@@ -1,9 +1,12 @@
 #include "cli/CompareCommand.h"
 
 #include "cli/ExitStatus.h"
+#include "cli/InterruptGuard.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageComparison.h"
 #include "image/ImageFile.h"
+#include "image/OutputFiles.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +40,12 @@ void printRow(const char* name, const ImageComparison::Channel& channel) {
 
 int runCompare(const CompareOptions& options) {
   return withExitStatus([&] {
+    CommandPaths()
+        .input("reference", options.reference)
+        .input("candidate", options.candidate)
+        .output("--diff", options.diffPath)
+        .output("--json", options.jsonPath)
+        .check();
     if (!options.diffPath.empty()) {
       imageFormatFor(options.diffPath);
       AtomicFile::checkWritable(options.diffPath, "the diff image");
@@ -52,10 +61,13 @@ int runCompare(const CompareOptions& options) {
     printRow("all", result.all);
     std::printf("largest error %d at pixel (%d, %d)\n", result.all.maxError, result.maxErrorX,
                 result.maxErrorY);
+    // The heat map and the metrics together or neither.
+    OutputFiles outputs;
+    const int scale = options.scale > 0 ? options.scale : std::max(result.all.maxError, 1);
+    Image heatMap;
     if (!options.diffPath.empty()) {
-      const int scale = options.scale > 0 ? options.scale : std::max(result.all.maxError, 1);
-      writeImage(options.diffPath, errorHeatMap(a, b, scale));
-      std::printf("wrote %s (white = %d steps or more)\n", options.diffPath.c_str(), scale);
+      heatMap = errorHeatMap(a, b, scale);
+      outputs.addImage(options.diffPath, heatMap);
     }
     if (!options.jsonPath.empty()) {
       nlohmann::json json = {{"reference", options.reference},
@@ -66,8 +78,16 @@ int runCompare(const CompareOptions& options) {
                              {"green", channelJson(result.channels[1])},
                              {"blue", channelJson(result.channels[2])},
                              {"all", channelJson(result.all)}};
-      writeTextFileAtomically(options.jsonPath, json.dump(2) + "\n");
+      outputs.addText(options.jsonPath, json.dump(2) + "\n");
     }
+    // A signal during the writes leaves none of them (cli/InterruptGuard.h).
+    const InterruptGuard guard;
+    if (!outputs.commit(&InterruptGuard::flag())) {
+      std::cerr << "ivshadow: interrupted; nothing written\n";
+      return InterruptGuard::exitStatus();
+    }
+    if (!options.diffPath.empty())
+      std::printf("wrote %s (white = %d steps or more)\n", options.diffPath.c_str(), scale);
     return 0;
   });
 }

@@ -4,9 +4,9 @@
 
 namespace ivshadow {
 
-// While it lives, SIGINT and SIGTERM set flag() instead of ending the process, so that a
-// command can stop its work, clean up and say so (exit 130); the previous handlers come back
-// with its end. One at a time.
+// While it lives, SIGINT, SIGTERM and SIGHUP set flag() instead of ending the process, so that
+// a command can stop its work, remove what it had begun to write and say so (exit 128 + the
+// signal: 130, 143, 129); the previous handlers come back with its end. One at a time.
 class InterruptGuard {
  public:
   InterruptGuard();
@@ -16,10 +16,13 @@ class InterruptGuard {
 
   static std::atomic<bool>& flag();
   static bool interrupted() { return flag().load(); }
+  // 128 + the signal that came (the shell's status of a process it ended), 130 if none did.
+  static int exitStatus();
 
  private:
   void (*previousInt_)(int);
   void (*previousTerm_)(int);
+  void (*previousHup_)(int);
 };
 
 }  // namespace ivshadow

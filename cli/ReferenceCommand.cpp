@@ -7,9 +7,11 @@
 #include "cli/RenderMemory.h"
 #include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageFile.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
+#include "image/OutputFiles.h"
 #include "image/PfmFile.h"
 #include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
@@ -34,7 +36,7 @@ namespace ivshadow {
 
 int runReference(const ReferenceCommandOptions& options) {
   // From the start: Ctrl-C while the scene loads stops the render as soon as it begins, so
-  // the user always gets the same answer (exit 130, nothing written).
+  // the user always gets the same answer (exit 128 + the signal, nothing written).
   const InterruptGuard guard;
   std::atomic<bool>& interrupted = InterruptGuard::flag();
   const int status = withExitStatus([&] {
@@ -48,14 +50,15 @@ int runReference(const ReferenceCommandOptions& options) {
     std::vector<FieldAssignment> assignments;
     for (const std::string& text : options.assignments)
       assignments.push_back(FieldAssignment::parse(text));
+    CommandPaths()
+        .input("scene", options.scene)
+        .output("-o", options.output)
+        .output("--pfm", options.pfm)
+        .check();
     imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
-    AtomicFile::checkNotInput(options.output, options.scene, "the image");
     MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
-    if (!options.pfm.empty()) {
-      AtomicFile::checkWritable(options.pfm, "the float image");
-      AtomicFile::checkNotInput(options.pfm, options.scene, "the float image");
-    }
+    if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
 
     init();
     installCoinOffscreenContexts();
@@ -68,9 +71,10 @@ int runReference(const ReferenceCommandOptions& options) {
     if (options.bounceGiven && options.bounce > 0) {
       // Only the groups that ask for it bounce: say so where none does.
       bool groups = false;
-      forEachNodeOfType<SoTransparentShadowGroup>(scene.root.get(), [&](SoTransparentShadowGroup& g) {
-        groups = groups || (g.isActive.getValue() && g.bounce.getValue());
-      });
+      forEachNodeOfType<SoTransparentShadowGroup>(
+          scene.root.get(), [&](SoTransparentShadowGroup& g) {
+            groups = groups || (g.isActive.getValue() && g.bounce.getValue());
+          });
       if (!groups)
         std::cerr << options.scene
                   << ": warning: --bounce: no active TransparentShadowGroup has bounce TRUE, so "
@@ -100,18 +104,24 @@ int runReference(const ReferenceCommandOptions& options) {
     if (shown && bar.terminal() && rows.load() < size.height) std::cerr << '\n';
     if (!result) {
       std::cerr << "ivshadow: interrupted; nothing written\n";
-      return 130;
+      return InterruptGuard::exitStatus();
     }
     for (const std::string& warning : result->warnings)
       std::cerr << options.scene << ": warning: " << warning << '\n';
-    // Both files or neither: the float picture goes first, and is removed if the image fails.
-    if (!options.pfm.empty())
-      writePfm(options.pfm, result->image.width, result->image.height, result->image.rgb);
-    try {
-      writeImage(options.output, result->image.toImage());
-    } catch (...) {
-      if (!options.pfm.empty()) std::remove(options.pfm.c_str());
-      throw;
+    // Both files or neither.
+    const Image picture = result->image.toImage();
+    OutputFiles outputs;
+    outputs.addImage(options.output, picture);
+    if (!options.pfm.empty()) {
+      const FloatImage& image = result->image;
+      outputs.add(options.pfm, [&](const std::string& file) {
+        writePfmTo(file, options.pfm, image.width, image.height, image.rgb);
+      });
+    }
+    // A signal after the trace's last row, or during the writes, leaves no file either.
+    if (!outputs.commit(&interrupted)) {
+      std::cerr << "ivshadow: interrupted; nothing written\n";
+      return InterruptGuard::exitStatus();
     }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

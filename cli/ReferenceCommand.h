@@ -21,7 +21,8 @@ struct ReferenceCommandOptions {
 };
 
 // `ivshadow reference`: the exact CPU picture (raytrace/ReferenceRenderer.h). Exit 0, 2 on
-// bad input, 130 when interrupted (Ctrl-C), 1 otherwise; never leaves a partial file.
+// bad input, 128 + the signal when interrupted (130 for Ctrl-C), 1 otherwise; never leaves a
+// partial file.
 int runReference(const ReferenceCommandOptions& options);
 
 }  // namespace ivshadow

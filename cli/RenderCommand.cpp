@@ -3,14 +3,17 @@
 #include "callbacks/GlCapabilities.h"
 #include "cli/ExitStatus.h"
 #include "cli/GroupTransparency.h"
+#include "cli/InterruptGuard.h"
 #include "cli/OpenRenderer.h"
 #include "cli/RenderMemory.h"
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageFile.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
+#include "image/OutputFiles.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
@@ -146,13 +149,14 @@ int runRender(const RenderOptions& options) {
     for (const std::string& text : options.assignments) {
       assignments.push_back(FieldAssignment::parse(text));
     }
+    CommandPaths()
+        .input("scene", options.scene)
+        .output("-o", options.output)
+        .output("--stats", options.statsPath)
+        .check();
     imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
-    AtomicFile::checkNotInput(options.output, options.scene, "the image");
-    if (!options.statsPath.empty()) {
-      AtomicFile::checkWritable(options.statsPath, "statistics");
-      AtomicFile::checkNotInput(options.statsPath, options.scene, "statistics");
-    }
+    if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
 
     init();
     // The statistics report GPU time per pass; without them no pass waits for its timer.
@@ -188,12 +192,23 @@ int runRender(const RenderOptions& options) {
       wallMs.push_back(timing.wallMs);
       gpuMs.push_back(timing.gpuMs);
     }
-    writeImage(options.output, renderer->read());
+    // Both files or neither: statistics that cannot be written (a full disk) take the
+    // picture with them, as the exit status says.
+    const Image picture = renderer->read();
+    OutputFiles outputs;
+    outputs.addImage(options.output, picture);
     if (!options.statsPath.empty()) {
       const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
-      writeTextFileAtomically(
+      outputs.addText(
           options.statsPath,
           statistics(options, *renderer, wallMs, gpuMs, name, view.root.get()).dump(2) + "\n");
+    }
+    // From here a signal would leave the temporaries behind: it is held off until the files
+    // are written, then none of them is kept.
+    const InterruptGuard guard;
+    if (!outputs.commit(&InterruptGuard::flag())) {
+      std::cerr << "ivshadow: interrupted; nothing written\n";
+      return InterruptGuard::exitStatus();
     }
     std::cout << "wrote " << options.output << " (" << size.toString() << ", " << options.frames
               << (options.frames == 1 ? " frame, " : " frames, median ")

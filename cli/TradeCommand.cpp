@@ -10,9 +10,11 @@
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageComparison.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
+#include "image/OutputFiles.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
@@ -119,6 +121,12 @@ int runTrade(const TradeOptions& options) {
     };
     const bool maps = asked("map"), rays = asked("rays"), volumes = asked("volumes"),
                opacity = asked("opacity"), tracer = asked("tracer");
+    CommandPaths()
+        .input("scene", options.scene)
+        .output("-o", options.outputDir + "/trade.csv")
+        .output("-o", options.outputDir + "/trade.png")
+        .output("-o", options.outputDir + "/reference.png")
+        .check();
 
     init();
     LoadedScene scene = loadScene(options.scene);
@@ -282,12 +290,17 @@ int runTrade(const TradeOptions& options) {
                                   row.kind == "opacity map"});
     }
     markParetoFront(points);
-    writePng(options.outputDir + "/reference.png", exact);
-    writeTextFileAtomically(options.outputDir + "/trade.csv", csv.str());
-    writeTradePlot(options.outputDir + "/trade.png",
-                   std::filesystem::path(options.scene).filename().string() + " at " +
-                       size.toString() + " on " + renderer->capabilities().renderer,
-                   points);
+    // The reference, the table and the chart together or none.
+    OutputFiles outputs;
+    outputs.add(options.outputDir + "/reference.png", [&](const std::string& file) {
+      writePngTo(file, options.outputDir + "/reference.png", exact);
+    });
+    outputs.addText(options.outputDir + "/trade.csv", csv.str());
+    addTradePlot(outputs, options.outputDir + "/trade.png",
+                 std::filesystem::path(options.scene).filename().string() + " at " +
+                     size.toString() + " on " + renderer->capabilities().renderer,
+                 points);
+    outputs.commit();
     std::cout << "wrote " << options.outputDir << "/trade.csv and trade.png (" << settings.size()
               << " settings, reference " << referenceMs << " ms)\n";
     return 0;

@@ -1,6 +1,6 @@
 #include "cli/TradePlot.h"
 
-#include "image/AtomicFile.h"
+#include "image/OutputFiles.h"
 
 #include <QFont>
 #include <QFontMetricsF>
@@ -32,8 +32,8 @@ void markParetoFront(std::vector<TradePoint>& points) {
   }
 }
 
-void writeTradePlot(const std::string& path, const std::string& title,
-                    const std::vector<TradePoint>& points) {
+void addTradePlot(OutputFiles& outputs, const std::string& path, const std::string& title,
+                  const std::vector<TradePoint>& points) {
   // Text needs a QGuiApplication; a command-line run has no display, so it gets Qt's
   // offscreen platform.
   std::unique_ptr<QGuiApplication> app;
@@ -168,10 +168,11 @@ void writeTradePlot(const std::string& path, const std::string& title,
                    "diamonds: opacity maps   blue squares: baselines");
   painter.end();
 
-  AtomicFile file(path);
-  if (!image.save(QString::fromStdString(file.temporaryPath()), "PNG"))
-    throw std::runtime_error(path + ": cannot write the plot");
-  file.commit();
+  // QImage shares its pixels: the copy costs nothing.
+  outputs.add(path, [path, image](const std::string& file) {
+    if (!image.save(QString::fromStdString(file), "PNG"))
+      throw std::runtime_error(path + ": error: cannot write the plot");
+  });
 }
 
 }  // namespace ivshadow

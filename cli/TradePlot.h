@@ -5,6 +5,8 @@
 
 namespace ivshadow {
 
+class OutputFiles;
+
 struct TradePoint {
   std::string label;
   double timeMs = 0.0;  // x: cost
@@ -24,9 +26,9 @@ void markParetoFront(std::vector<TradePoint>& points);
 
 // Draws error against time (log time axis), one dot per setting (a diamond for an opacity
 // map's), the Pareto front joined and labelled, baselines as squares, labels moved off one
-// another; writes a PNG atomically. Needs no display (Qt's offscreen
-// platform is used when there is none).
-void writeTradePlot(const std::string& path, const std::string& title,
-                    const std::vector<TradePoint>& points);
+// another; adds the PNG to `outputs`, written with the command's other files. Needs no
+// display (Qt's offscreen platform is used when there is none).
+void addTradePlot(OutputFiles& outputs, const std::string& path, const std::string& title,
+                  const std::vector<TradePoint>& points);
 
 }  // namespace ivshadow

@@ -1,8 +1,10 @@
 #include "cli/VariantManifest.h"
 
+#include "cli/JsonFields.h"
 #include "image/AtomicFile.h"
+#include "scene/InputError.h"
 
-#include <fstream>
+#include <filesystem>
 
 namespace ivshadow {
 
@@ -12,21 +14,25 @@ std::string VariantManifest::path(const std::string& outputDir, const std::strin
 
 std::optional<VariantManifest> VariantManifest::read(const std::string& outputDir,
                                                      const std::string& variant) {
-  std::ifstream in(path(outputDir, variant));
-  if (!in) return std::nullopt;
-  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
-  if (!json.is_object() || json.value("variant", std::string()) != variant) return std::nullopt;
+  const std::string file = path(outputDir, variant);
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return std::nullopt;
+  const nlohmann::json json = readJsonObject(file, "the manifest of variant " + variant);
+  const JsonFields fields(json, file);
   VariantManifest manifest;
-  manifest.variant = variant;
-  manifest.assignments = json.value("assignments", std::vector<std::string>());
-  manifest.size = json.value("size", std::string());
-  manifest.frames = json.value("frames", 0);
-  manifest.hash = json.value("hash", std::string());
-  manifest.exitCode = json.value("exit_code", -1);
-  manifest.error = json.value("error", std::string());
-  manifest.stats = json.contains("stats") ? json["stats"] : nlohmann::json();
-  manifest.seconds = json.value("seconds", 0.0);
-  manifest.host = json.value("host", std::string());
+  manifest.variant = fields.text("variant");
+  if (manifest.variant != variant)
+    throw InputError(file + ": error: the manifest names the variant \"" + manifest.variant +
+                     "\", not \"" + variant + "\" (copied from another sweep?)");
+  manifest.assignments = fields.texts("assignments");
+  manifest.size = fields.text("size");
+  manifest.frames = fields.integer("frames", 0);
+  manifest.hash = fields.text("hash");
+  manifest.exitCode = fields.integer("exit_code", -1);
+  manifest.error = fields.text("error");
+  manifest.stats = fields.object("stats");
+  manifest.seconds = fields.number("seconds", 0.0);
+  manifest.host = fields.text("host");
   return manifest;
 }
 

@@ -30,8 +30,9 @@ struct VariantManifest {
   bool ok() const { return exitCode == 0; }
 
   static std::string path(const std::string& outputDir, const std::string& variant);
-  // The manifest, or nothing when there is none or it cannot be parsed (a file cut short by a
-  // crash of the file system counts as not rendered, so the variant is rendered again).
+  // The manifest, or nothing when there is none. Throws InputError naming the file and what
+  // is wrong when it is empty, cut short, not JSON, of another variant or has a field of the
+  // wrong type (a sweep that renders takes such a variant as not rendered: SweepState).
   static std::optional<VariantManifest> read(const std::string& outputDir,
                                              const std::string& variant);
   void write(const std::string& outputDir) const;

@@ -11,6 +11,7 @@
 #include "cli/VariantsMerge.h"
 #include "cli/VariantsPlan.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
 #include "ivshadow/IvShadowInit.h"
@@ -96,6 +97,21 @@ std::vector<std::string> partCommand(const VariantsOptions& options, const std::
       outputDir,           "--size",   options.size, "--frames",   std::to_string(options.frames)};
 }
 
+// The sweep's files (docs/VARIANTS.md) must not name its inputs: a variants file kept in the
+// output directory as variants.csv, or a base scene there, would be replaced by the report.
+void checkOutputPaths(const VariantsOptions& options, const std::vector<Variant>& variants) {
+  CommandPaths paths;
+  paths.input("base", options.base).input("variants", options.variantsFile);
+  const std::string& dir = options.outputDir;
+  paths.output("-o", VariantsPlan::path(dir))
+      .output("-o", dir + "/variants.csv")
+      .output("-o", dir + "/index.html");
+  for (const Variant& variant : variants)
+    paths.output("-o", dir + "/" + variant.name + ".png")
+        .output("-o", VariantManifest::path(dir, variant.name));
+  paths.check();
+}
+
 int writeSlurmScripts(const VariantsOptions& options, const VariantsPlan& plan) {
   namespace fs = std::filesystem;
   const int variants = int(plan.variants.size());
@@ -145,7 +161,8 @@ int writeSlurmScripts(const VariantsOptions& options, const VariantsPlan& plan) 
 
 int runVariants(const VariantsOptions& options) {
   // Ctrl-C (or SIGTERM) stops starting renders, interrupts the running ones, cleans up their
-  // scratch files and writes no report: exit 130, the variants finished before it kept.
+  // scratch files and writes no report: exit 128 + the signal, the variants finished before it
+  // kept.
   const InterruptGuard guard;
   const std::atomic<bool>& interrupted = InterruptGuard::flag();
   return withExitStatus([&] {
@@ -162,6 +179,7 @@ int runVariants(const VariantsOptions& options) {
                         "a render of the plainest variant", options.jobs,
                         MemoryBudget::available());
     std::vector<Variant> parsed = readVariantsFile(options.variantsFile);
+    checkOutputPaths(options, parsed);
     const std::vector<std::size_t> selected = selectVariants(options, parsed);
     init();
     loadScene(options.base);  // a broken base scene is one error, not one per variant
@@ -200,7 +218,8 @@ int runVariants(const VariantsOptions& options) {
 
     // A variant whose manifest is current and whose picture exists was rendered by an
     // earlier run (or another shard); it is kept, not rendered again.
-    const SweepState before = SweepState::collect(plan, options.outputDir);
+    const SweepState before =
+        SweepState::collect(plan, options.outputDir, SweepState::BrokenManifest::RenderAgain);
     std::vector<std::size_t> todo;
     for (std::size_t i : selected)
       if (!before.outcomes[i].ok()) todo.push_back(i);
@@ -292,7 +311,7 @@ int runVariants(const VariantsOptions& options) {
     if (interrupted) {
       std::cerr << "ivshadow: interrupted: " << rendered << " of " << total
                 << " variants rendered to " << options.outputDir << "; no report written\n";
-      return 130;
+      return InterruptGuard::exitStatus();
     }
 
     const std::string keptText =

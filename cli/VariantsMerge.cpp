@@ -2,17 +2,24 @@
 
 #include "cli/ExitStatus.h"
 #include "cli/VariantsReport.h"
+#include "scene/InputError.h"
 
 #include <filesystem>
 #include <iostream>
 
 namespace ivshadow {
 
-SweepState SweepState::collect(const VariantsPlan& plan, const std::string& outputDir) {
+SweepState SweepState::collect(const VariantsPlan& plan, const std::string& outputDir,
+                               BrokenManifest broken) {
   SweepState state;
   for (std::size_t i = 0; i < plan.variants.size(); ++i) {
     const Variant& variant = plan.variants[i];
-    std::optional<VariantManifest> manifest = VariantManifest::read(outputDir, variant.name);
+    std::optional<VariantManifest> manifest;
+    try {
+      manifest = VariantManifest::read(outputDir, variant.name);
+    } catch (const InputError&) {
+      if (broken == BrokenManifest::Refuse) throw;
+    }
     std::error_code ec;
     const bool current = manifest && manifest->hash == plan.hashes[i];
     if (current && manifest->ok() &&

@@ -23,7 +23,13 @@ struct SweepState {
   int pending = 0;
   int badInput = 0;  // failed with exit status 2: an unknown node or field, a bad value
 
-  static SweepState collect(const VariantsPlan& plan, const std::string& outputDir);
+  // What a manifest that cannot be read (empty, cut short, wrongly typed) means: for a merge
+  // or --status an error naming it (exit 2: a report from it would be wrong); for a run that
+  // renders, a variant to render again, which replaces the manifest.
+  enum class BrokenManifest { Refuse, RenderAgain };
+
+  static SweepState collect(const VariantsPlan& plan, const std::string& outputDir,
+                            BrokenManifest broken = BrokenManifest::Refuse);
   // 0 when every variant is done, 2 when every other one had bad input, 1 otherwise.
   int exitStatus() const;
 };

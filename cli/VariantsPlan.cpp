@@ -1,5 +1,6 @@
 #include "cli/VariantsPlan.h"
 
+#include "cli/JsonFields.h"
 #include "image/AtomicFile.h"
 #include "scene/InputError.h"
 
@@ -7,6 +8,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -68,12 +70,12 @@ std::string VariantsPlan::path(const std::string& outputDir) {
 
 VariantsPlan VariantsPlan::read(const std::string& outputDir) {
   const std::string file = path(outputDir);
-  std::ifstream in(file);
-  if (!in)
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec))
     throw InputError(file + ": error: no plan of a sweep here; run `ivshadow variants ... -o " +
                      outputDir + "` (with or without --shard) first");
-  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
-  if (!json.is_object() || !json.contains("variants") || !json["variants"].is_array())
+  const nlohmann::json json = readJsonObject(file, "the plan of the sweep");
+  if (!json.contains("variants") || !json["variants"].is_array())
     throw InputError(file +
                      ": error: not a plan of a sweep (expected a JSON object with "
                      "\"variants\")");
@@ -94,7 +96,12 @@ VariantsPlan VariantsPlan::read(const std::string& outputDir) {
       plan.hashes.push_back(entry.at("hash").get<std::string>());
     }
   } catch (const nlohmann::json::exception& error) {
-    throw InputError(file + ": error: not a plan of a sweep: " + error.what());
+    // nlohmann's message without its "[json.exception.type_error.302] " prefix.
+    std::string message = error.what();
+    if (message.find("] ") != std::string::npos) message = message.substr(message.find("] ") + 2);
+    throw InputError(file +
+                     ": error: not a plan of a sweep: a field of the wrong type or missing (" +
+                     message + ")");
   }
   return plan;
 }

@@ -1,6 +1,6 @@
 #include "cli/VariantsReport.h"
 
-#include "image/AtomicFile.h"
+#include "image/OutputFiles.h"
 
 #include <cstdint>
 #include <iomanip>
@@ -50,7 +50,7 @@ double number(const nlohmann::json& stats, const char* key, const char* inner = 
   if (!value->contains(key)) return 0.0;
   value = &(*value)[key];
   if (inner) {
-    if (!value->contains(inner)) return 0.0;
+    if (!value->is_object() || !value->contains(inner)) return 0.0;
     value = &(*value)[inner];
   }
   return value->is_number() ? value->get<double>() : 0.0;
@@ -67,7 +67,8 @@ Methods methodsOf(const nlohmann::json& stats) {
   Methods methods;
   if (!stats.is_object() || !stats.contains("dsm_layers_used")) return methods;
   for (const auto& light : stats["dsm_layers_used"]) {
-    const std::string method = light.value("method", std::string());
+    if (!light.is_object() || !light.contains("method") || !light["method"].is_string()) continue;
+    const std::string method = light["method"].get<std::string>();
     methods.map = methods.map || method == "MAP";
     methods.rays = methods.rays || method == "RAYS";
   }
@@ -78,12 +79,18 @@ Methods methodsOf(const nlohmann::json& stats) {
 std::string layersText(const nlohmann::json& stats) {
   std::string text;
   if (!stats.is_object() || !stats.contains("dsm_layers_used")) return text;
+  // Statistics of an older or edited manifest may lack fields or hold others: such a light
+  // is left out rather than the report failing.
   for (const auto& light : stats["dsm_layers_used"]) {
-    if (light.value("method", std::string()) != "MAP") continue;
-    text += (text.empty() ? "" : " ") + light.value("light", std::string("light")) + ":";
+    if (!light.is_object() || light.value("method", nlohmann::json()) != "MAP" ||
+        !light.contains("faces") || !light["faces"].is_array())
+      continue;
+    const nlohmann::json name = light.value("light", nlohmann::json("light"));
+    text +=
+        (text.empty() ? "" : " ") + (name.is_string() ? name.get<std::string>() : "light") + ":";
     bool first = true;
-    for (int used : light["faces"]) {
-      text += (first ? "" : "/") + std::to_string(used);
+    for (const nlohmann::json& used : light["faces"]) {
+      text += (first ? "" : "/") + (used.is_number() ? used.dump() : std::string("?"));
       first = false;
     }
   }
@@ -91,8 +98,9 @@ std::string layersText(const nlohmann::json& stats) {
 }
 
 std::string shadowMethod(const nlohmann::json& stats) {
-  if (!stats.is_object() || !stats.contains("passes")) return {};
-  return stats["passes"].value("shadow_method", std::string());
+  if (!stats.is_object() || !stats.contains("passes") || !stats["passes"].is_object()) return {};
+  const nlohmann::json method = stats["passes"].value("shadow_method", nlohmann::json());
+  return method.is_string() ? method.get<std::string>() : std::string();
 }
 
 // A CSV number, or an empty field when the column does not apply to this render.
@@ -173,8 +181,11 @@ void writeVariantsReports(const std::string& outputDir, const std::string& base,
     html << "</figcaption></figure>\n";
   }
   html << "</body></html>\n";
-  writeTextFileAtomically(outputDir + "/variants.csv", csv.str());
-  writeTextFileAtomically(outputDir + "/index.html", html.str());
+  // Both reports or neither, so that the table and the contact sheet never disagree.
+  OutputFiles outputs;
+  outputs.addText(outputDir + "/variants.csv", csv.str());
+  outputs.addText(outputDir + "/index.html", html.str());
+  outputs.commit();
 }
 
 }  // namespace ivshadow

@@ -2,6 +2,8 @@
 
 #include "scene/InputError.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -22,7 +24,7 @@ std::string temporaryNameFor(const std::string& path) {
 
 // The file a path finally names: a symbolic link is followed (a rename over the link would
 // replace the link with a file and leave its target as it was).
-std::filesystem::path finalTarget(const std::filesystem::path& path) {
+std::filesystem::path followLinks(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   fs::path current = path;
   std::error_code ec;
@@ -44,9 +46,27 @@ bool writesThrough(const std::filesystem::path& target) {
          !std::filesystem::is_directory(status);
 }
 
+// A file the user could not write in place is not replaced either, although the rename only
+// needs the directory: replacing it would undo its owner's choice (a read-only reference
+// picture) and hand the file to this user. Root may write any file, so for root the mode
+// decides: a file nobody may write (0444) is refused, the rest are replaced keeping their
+// owner and mode (AtomicFile::commit).
+void checkReplaceable(const std::string& path, const std::filesystem::path& target,
+                      const std::string& what) {
+  struct stat info {};
+  if (::stat(target.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return;
+  char mode[8];
+  std::snprintf(mode, sizeof mode, "%04o", unsigned(info.st_mode & 07777));
+  const bool root = ::geteuid() == 0;
+  if (root ? (info.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0
+           : ::faccessat(AT_FDCWD, target.c_str(), W_OK, AT_EACCESS) != 0)
+    throw InputError(path + ": error: cannot write " + what + ": the file is read-only (mode " +
+                     mode + ", owner uid " + std::to_string(info.st_uid) + "); it is not replaced");
+}
+
 }  // namespace
 
-AtomicFile::AtomicFile(std::string path) : path_(finalTarget(path).string()) {
+AtomicFile::AtomicFile(std::string path) : path_(followLinks(path).string()) {
   writeThrough_ = writesThrough(path_);
   temporary_ = writeThrough_ ? path_ : temporaryNameFor(path_);
 }
@@ -60,6 +80,16 @@ void AtomicFile::commit() {
     committed_ = true;
     return;
   }
+  // The file replaced keeps its mode (a private 0600 picture stays private) and, where this
+  // user may give it (root), its owner and group.
+  struct stat existing {};
+  if (::stat(path_.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) {
+    // Only root may give a file to another owner: for others it stays theirs, as the check
+    // allowed (they could write it), so a failure here is no error.
+    const int given = ::chown(temporary_.c_str(), existing.st_uid, existing.st_gid);
+    static_cast<void>(given);
+    ::chmod(temporary_.c_str(), existing.st_mode & 07777);
+  }
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
     throw std::runtime_error(path_ + ": error: cannot write: " + std::strerror(errno));
   }
@@ -69,7 +99,7 @@ void AtomicFile::commit() {
 void AtomicFile::checkWritable(const std::string& path, const std::string& what) {
   namespace fs = std::filesystem;
   if (path.empty()) throw InputError(what + ": error: empty file name");
-  const fs::path target = finalTarget(path);
+  const fs::path target = followLinks(path);
   if (writesThrough(target)) {
     if (::access(target.c_str(), W_OK) != 0)
       throw InputError(path + ": error: cannot write " + what + ": " + std::strerror(errno));
@@ -87,6 +117,7 @@ void AtomicFile::checkWritable(const std::string& path, const std::string& what)
   if (::access(directory.c_str(), W_OK) != 0) {
     throw InputError(path + ": error: cannot write " + what + ": " + std::strerror(errno));
   }
+  checkReplaceable(path, target, what);
   // The file is written under its temporary name first, which is longer: both must fit the
   // directory's file system (ENAMETOOLONG after the work would lose it).
   const long nameMax = ::pathconf(directory.c_str(), _PC_NAME_MAX);
@@ -102,11 +133,12 @@ void AtomicFile::checkWritable(const std::string& path, const std::string& what)
   }
 }
 
-void AtomicFile::checkNotInput(const std::string& path, const std::string& input,
-                               const std::string& what) {
-  std::error_code ec;
-  if (std::filesystem::equivalent(finalTarget(path), input, ec) && !ec)
-    throw InputError(path + ": error: cannot write " + what + " over the input file " + input);
+std::string AtomicFile::finalTarget(const std::string& path) {
+  return followLinks(path).string();
+}
+
+bool AtomicFile::writesInPlace(const std::string& path) {
+  return writesThrough(followLinks(path));
 }
 
 void writeTextFileAtomically(const std::string& path, const std::string& text) {

@@ -1,6 +1,8 @@
 #include "image/ImageFile.h"
 
+#include "image/AtomicFile.h"
 #include "image/JpegFile.h"
+#include "image/OutputFiles.h"
 #include "image/PngFile.h"
 #include "scene/InputError.h"
 
@@ -16,16 +18,24 @@ ImageFormat imageFormatFor(const std::string& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".png") return ImageFormat::Png;
   if (extension == ".jpg" || extension == ".jpeg") return ImageFormat::Jpeg;
+  // A device or pipe (`-o /dev/null`, a FIFO) is written in place whatever its name.
+  if (AtomicFile::writesInPlace(path)) return ImageFormat::Png;
   throw InputError(path + ": error: cannot write images of type '" +
                    (extension.empty() ? std::string("(no extension)") : extension) +
                    "'; supported: .png, .jpg, .jpeg");
 }
 
 void writeImage(const std::string& path, const Image& image) {
-  if (imageFormatFor(path) == ImageFormat::Jpeg)
-    writeJpeg(path, image);
+  OutputFiles files;
+  files.addImage(path, image);
+  files.commit();
+}
+
+void writeImageTo(const std::string& file, const std::string& name, const Image& image) {
+  if (imageFormatFor(name) == ImageFormat::Jpeg)
+    writeJpegTo(file, name, image);
   else
-    writePng(path, image);
+    writePngTo(file, name, image);
 }
 
 Image readImage(const std::string& path) {

@@ -32,42 +32,46 @@ struct FileCloser {
 
 void writeJpeg(const std::string& path, const Image& image, int quality) {
   AtomicFile output(path);
-  {
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(output.temporaryPath().c_str(), "wb"));
-    if (!file) throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
-    jpeg_compress_struct info{};
-    jpeg_error_mgr errors{};
-    info.err = jpeg_std_error(&errors);
-    errors.error_exit = throwJpegError;
-    try {
-      jpeg_create_compress(&info);
-      jpeg_stdio_dest(&info, file.get());
-      info.image_width = static_cast<JDIMENSION>(image.width());
-      info.image_height = static_cast<JDIMENSION>(image.height());
-      info.input_components = 3;
-      info.in_color_space = JCS_RGB;
-      jpeg_set_defaults(&info);
-      jpeg_set_quality(&info, quality, TRUE);
-      jpeg_start_compress(&info, TRUE);
-      std::vector<JSAMPLE> row(static_cast<std::size_t>(image.width()) * 3u);
-      for (int y = 0; y < image.height(); ++y) {
-        const std::uint8_t* rgba = image.pixel(0, y);
-        for (int x = 0; x < image.width(); ++x)
-          for (int c = 0; c < 3; ++c)
-            row[static_cast<std::size_t>(x) * 3u + std::size_t(c)] = rgba[x * 4 + c];
-        JSAMPROW rows[] = {row.data()};
-        jpeg_write_scanlines(&info, rows, 1);
-      }
-      jpeg_finish_compress(&info);
-    } catch (const std::runtime_error& error) {
-      jpeg_destroy_compress(&info);
-      throw std::runtime_error(path + ": error: " + error.what());
-    }
-    jpeg_destroy_compress(&info);
-    if (std::fflush(file.get()) != 0)
-      throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
-  }
+  writeJpegTo(output.temporaryPath(), path, image, quality);
   output.commit();
+}
+
+void writeJpegTo(const std::string& fileName, const std::string& path, const Image& image,
+                 int quality) {
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(fileName.c_str(), "wb"));
+  if (!file) throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
+  jpeg_compress_struct info{};
+  jpeg_error_mgr errors{};
+  info.err = jpeg_std_error(&errors);
+  errors.error_exit = throwJpegError;
+  try {
+    jpeg_create_compress(&info);
+    jpeg_stdio_dest(&info, file.get());
+    info.image_width = static_cast<JDIMENSION>(image.width());
+    info.image_height = static_cast<JDIMENSION>(image.height());
+    info.input_components = 3;
+    info.in_color_space = JCS_RGB;
+    jpeg_set_defaults(&info);
+    jpeg_set_quality(&info, quality, TRUE);
+    jpeg_start_compress(&info, TRUE);
+    std::vector<JSAMPLE> row(static_cast<std::size_t>(image.width()) * 3u);
+    for (int y = 0; y < image.height(); ++y) {
+      const std::uint8_t* rgba = image.pixel(0, y);
+      for (int x = 0; x < image.width(); ++x)
+        for (int c = 0; c < 3; ++c)
+          row[static_cast<std::size_t>(x) * 3u + std::size_t(c)] = rgba[x * 4 + c];
+      JSAMPROW rows[] = {row.data()};
+      jpeg_write_scanlines(&info, rows, 1);
+    }
+    jpeg_finish_compress(&info);
+  } catch (const std::runtime_error& error) {
+    jpeg_destroy_compress(&info);
+    throw std::runtime_error(path + ": error: " + error.what());
+  }
+  jpeg_destroy_compress(&info);
+  // fclose reports what the last flush could not write (a full disk, /dev/full).
+  if (std::fclose(file.release()) != 0)
+    throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
 }
 
 Image readJpeg(const std::string& path) {

@@ -23,18 +23,20 @@ bool littleEndianHost() {
 
 void writePfm(const std::string& path, int width, int height, const std::vector<float>& rgb) {
   AtomicFile file(path);
-  {
-    std::ofstream out(file.temporaryPath(), std::ios::binary);
-    // A negative scale says little-endian; PFM stores rows bottom to top.
-    out << "PF\n"
-        << width << ' ' << height << '\n'
-        << (littleEndianHost() ? "-1.0" : "1.0") << '\n';
-    for (int y = height - 1; y >= 0; --y)
-      out.write(reinterpret_cast<const char*>(&rgb[std::size_t(y) * std::size_t(width) * 3]),
-                std::streamsize(std::size_t(width) * 3 * sizeof(float)));
-    if (!out.flush()) throw std::runtime_error(path + ": cannot write the float image");
-  }
+  writePfmTo(file.temporaryPath(), path, width, height, rgb);
   file.commit();
+}
+
+void writePfmTo(const std::string& file, const std::string& path, int width, int height,
+                const std::vector<float>& rgb) {
+  std::ofstream out(file, std::ios::binary);
+  // A negative scale says little-endian; PFM stores rows bottom to top.
+  out << "PF\n" << width << ' ' << height << '\n' << (littleEndianHost() ? "-1.0" : "1.0") << '\n';
+  for (int y = height - 1; y >= 0; --y)
+    out.write(reinterpret_cast<const char*>(&rgb[std::size_t(y) * std::size_t(width) * 3]),
+              std::streamsize(std::size_t(width) * 3 * sizeof(float)));
+  out.close();
+  if (!out) throw std::runtime_error(path + ": error: cannot write the float image");
 }
 
 std::vector<float> readPfm(const std::string& path, int& width, int& height) {

@@ -64,32 +64,35 @@ void checkDeclaredSize(const std::string& path, png_structp png, png_infop info)
 
 void writePng(const std::string& path, const Image& image) {
   AtomicFile output(path);
-  {
-    FilePtr file(std::fopen(output.temporaryPath().c_str(), "wb"));
-    if (!file) throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
-    png_structp png = png_create_write_struct(
-        PNG_LIBPNG_VER_STRING, const_cast<std::string*>(&path), throwPngError, ignorePngWarning);
-    png_infop info = png_create_info_struct(png);
-    try {
-      png_init_io(png, file.get());
-      png_set_IHDR(png, info, static_cast<png_uint_32>(image.width()),
-                   static_cast<png_uint_32>(image.height()), 8, PNG_COLOR_TYPE_RGB_ALPHA,
-                   PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-      png_write_info(png, info);
-      for (int y = 0; y < image.height(); ++y) {
-        png_write_row(png, const_cast<png_bytep>(image.pixel(0, y)));
-      }
-      png_write_end(png, info);
-    } catch (...) {
-      png_destroy_write_struct(&png, &info);
-      throw;
-    }
-    png_destroy_write_struct(&png, &info);
-    if (std::fflush(file.get()) != 0) {
-      throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
-    }
-  }
+  writePngTo(output.temporaryPath(), path, image);
   output.commit();
+}
+
+void writePngTo(const std::string& fileName, const std::string& path, const Image& image) {
+  FilePtr file(std::fopen(fileName.c_str(), "wb"));
+  if (!file) throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, const_cast<std::string*>(&path),
+                                            throwPngError, ignorePngWarning);
+  png_infop info = png_create_info_struct(png);
+  try {
+    png_init_io(png, file.get());
+    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width()),
+                 static_cast<png_uint_32>(image.height()), 8, PNG_COLOR_TYPE_RGB_ALPHA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    for (int y = 0; y < image.height(); ++y) {
+      png_write_row(png, const_cast<png_bytep>(image.pixel(0, y)));
+    }
+    png_write_end(png, info);
+  } catch (...) {
+    png_destroy_write_struct(&png, &info);
+    throw;
+  }
+  png_destroy_write_struct(&png, &info);
+  // fclose reports what the last flush could not write (a full disk, /dev/full).
+  if (std::fclose(file.release()) != 0) {
+    throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
+  }
 }
 
 Image readPng(const std::string& path) {

@@ -151,6 +151,11 @@ std::vector<Variant> parseVariants(const std::string& text, const std::string& p
       if (!(words >> name) || !words.eof())
         fail(path, line, "expected \"variant NAME\" with a name without spaces");
       blockStart = variants.size();
+      if (sanitise(name).empty())
+        fail(path, line,
+             "variant name \"" + name +
+                 "\" keeps no character in a file name (letters A-Z and a-z, digits, '-', '_' "
+                 "and '.' are kept, the rest dropped); name it with some of those");
       variants.push_back({sanitise(name), line, {}});
       inBlock = true;
     } else if (keyword == "sweep") {
@@ -180,6 +185,20 @@ std::vector<Variant> parseVariants(const std::string& text, const std::string& p
       fail(path, variant.line,
            "variant name of " + std::to_string(variant.name.size()) + " characters; at most " +
                std::to_string(kMaxVariantName) + ", since it names the output files");
+    // The sweep's own files share the variants' directories (docs/VARIANTS.md): its list of
+    // variants is manifests/plan.json beside their NAME.json (compared without case, for
+    // file systems that ignore it), and its scratch files and temporaries are hidden ones
+    // beginning ".NAME.", which a hidden variant's picture could match and lose.
+    std::string lower = variant.name;
+    for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "plan")
+      fail(path, variant.line,
+           "variant name \"" + variant.name +
+               "\" is taken by the sweep's own manifests/plan.json; choose another");
+    if (!variant.name.empty() && variant.name[0] == '.')
+      fail(path, variant.line,
+           "variant name \"" + variant.name +
+               "\" begins with '.', as the sweep's scratch files do; choose another");
   }
   return variants;
 }

@@ -3,12 +3,16 @@
 #include "callbacks/ShaderConstants.h"
 #include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
+#include "image/ImageFile.h"
 #include "image/ImageSize.h"
+#include "image/OutputFiles.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 #include "viewer/MapInspector.h"
+#include "viewer/QtImage.h"
 #include "viewer/ScriptedDrag.h"
 #include "viewer/ShadowPanel.h"
 #include "viewer/ViewerWindow.h"
@@ -26,6 +30,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -68,6 +73,20 @@ InspectRequest parseInspect(const std::string& text) {
   return request;
 }
 
+// Runs `body`; what it throws is printed: 2 for bad input (InputError), 1 for anything else.
+int withViewerExitStatus(const std::function<void()>& body) {
+  try {
+    body();
+    return 0;
+  } catch (const InputError& error) {
+    std::cerr << error.what() << '\n';
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << error.what() << '\n';
+    return 1;
+  }
+}
+
 // Everything a scripted run can get wrong in its options, found before any window opens or
 // any file is written.
 std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) {
@@ -86,6 +105,21 @@ std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) 
     throw InputError("ivshadow: error: --inspect-out needs --inspect");
   }
   if (!options.inspect.empty()) parseInspect(options.inspect);
+  // --save-scene over the scene it read is refused too: a scripted edit in place would lose
+  // the file's comments and `File` includes for good (the window's Save Scene As dialog asks
+  // before it replaces a file).
+  CommandPaths()
+      .input("scene", options.scene)
+      .output("--screenshot", options.screenshot)
+      .output("--save-scene", options.saveScene)
+      .output("--figures", options.figures)
+      .output("--window-shot", options.windowShot)
+      .output("--inspect-out", options.inspectOut)
+      .check();
+  // Every picture follows its name's format, as `ivshadow render` does (a .jpg screenshot
+  // was PNG data under that name).
+  for (const std::string* picture : {&options.screenshot, &options.windowShot, &options.inspectOut})
+    if (!picture->empty()) imageFormatFor(*picture);
   if (!options.screenshot.empty()) AtomicFile::checkWritable(options.screenshot, "the screenshot");
   if (!options.saveScene.empty()) AtomicFile::checkWritable(options.saveScene, "the scene");
   if (!options.figures.empty()) AtomicFile::checkWritable(options.figures, "the figures");
@@ -200,6 +234,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
 
   if (scripted) {
     int status = 1;
+    Image screenshot;
     // The screenshot is a frame drawn after the first one: should the first still go to a
     // drawable of a stale size (docs/KNOWN_ISSUES.md), the next is right.
     auto* waitForFirstFrame = new QTimer(&window);
@@ -235,13 +270,12 @@ int runViewer(const ViewerOptions& options, const char* programName) {
         return;
       }
       waitForFirstFrame->stop();
-      window.saveScreenshot(QString::fromStdString(options.screenshot),
-                            [&status](const std::string& error) {
-                              if (!error.empty()) std::cerr << error << '\n';
-                              status = error.empty() ? 0 : 1;
-                              // Quit after the frame is complete, so its figures are known.
-                              QTimer::singleShot(0, qApp, [] { qApp->quit(); });
-                            });
+      window.captureScreenshot([&status, &screenshot](const Image& image) {
+        screenshot = image;
+        status = 0;
+        // Quit after the frame is complete, so its figures are known.
+        QTimer::singleShot(0, qApp, [] { qApp->quit(); });
+      });
     });
     waitForFirstFrame->start(100);
     // A window that never draws (a broken GLX) must not hang scripts and tests.
@@ -250,45 +284,36 @@ int runViewer(const ViewerOptions& options, const char* programName) {
       qApp->quit();
     });
     application.exec();
-    if (status == 0) std::cout << "wrote " << options.screenshot << '\n';
-    if (status == 0 && inspecting) {
-      MapInspector& inspector = window.inspector();
-      std::cout << "inspector: " << inspector.status().toStdString() << '\n';
-      if (!options.inspectOut.empty()) {
-        AtomicFile file(options.inspectOut);
-        if (inspector.picture().save(QString::fromStdString(file.temporaryPath()), "PNG")) {
-          file.commit();
-          std::cout << "wrote " << options.inspectOut << '\n';
-        } else {
-          std::cerr << options.inspectOut << ": error: cannot write the inspector's picture\n";
-          status = 1;
-        }
+    if (status != 0) return status;
+    // Every output together or none (image/OutputFiles): a figures file that cannot be
+    // written takes the screenshot with it.
+    status = withViewerExitStatus([&] {
+      OutputFiles outputs;
+      outputs.addImage(options.screenshot, screenshot);
+      Image inspectorPicture;
+      if (inspecting && !options.inspectOut.empty()) {
+        inspectorPicture = imageFromQt(window.inspector().picture());
+        outputs.addImage(options.inspectOut, inspectorPicture);
       }
-    }
-    if (status == 0) status = saveScene();
-    if (status == 0 && !options.figures.empty()) {
-      try {
+      if (!options.saveScene.empty()) window.addScene(outputs, options.saveScene);
+      if (!options.figures.empty()) {
         nlohmann::json figures = nlohmann::json::parse(window.figures().json());
         if (drag) figures["drag"] = nlohmann::json::parse(drag->json());
-        writeTextFileAtomically(options.figures, figures.dump() + "\n");
-        std::cout << "wrote " << options.figures << '\n';
-      } catch (const std::exception& error) {
-        std::cerr << error.what() << '\n';
-        status = 1;
+        outputs.addText(options.figures, figures.dump() + "\n");
       }
-    }
-    if (status == 0 && !options.windowShot.empty()) {
-      // Read back from the X server: the GL area as last swapped, and the widgets around it.
-      const QImage shot = window.screen()->grabWindow(window.winId()).toImage();
-      AtomicFile file(options.windowShot);
-      if (shot.save(QString::fromStdString(file.temporaryPath()), "PNG")) {
-        file.commit();
-        std::cout << "wrote " << options.windowShot << '\n';
-      } else {
-        std::cerr << options.windowShot << ": error: cannot write the window picture\n";
-        status = 1;
+      Image windowPicture;
+      if (!options.windowShot.empty()) {
+        // Read back from the X server: the GL area as last swapped, and the widgets around it.
+        windowPicture = imageFromQt(window.screen()->grabWindow(window.winId()).toImage());
+        outputs.addImage(options.windowShot, windowPicture);
       }
-    }
+      outputs.commit();
+    });
+    if (status != 0) return status;
+    if (inspecting) std::cout << "inspector: " << window.inspector().status().toStdString() << '\n';
+    for (const std::string* written : {&options.screenshot, &options.inspectOut, &options.saveScene,
+                                       &options.figures, &options.windowShot})
+      if (!written->empty()) std::cout << "wrote " << *written << '\n';
     return status;
   }
   return application.exec();

@@ -1,7 +1,8 @@
 #include "viewer/ViewerWindow.h"
 
 #include "image/AtomicFile.h"
-#include "image/PngFile.h"
+#include "image/ImageFile.h"
+#include "image/OutputFiles.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
@@ -271,17 +272,31 @@ void ViewerWindow::saveScreenshot(const QString& path,
                                   std::function<void(const std::string&)> done) {
   try {
     AtomicFile::checkWritable(path.toStdString(), "the screenshot");
+    imageFormatFor(path.toStdString());
   } catch (const InputError& error) {
     done(error.what());
     return;
   }
   viewer_->captureNextFrame([path, done](const Image& image) {
     try {
-      writePng(path.toStdString(), image);
+      writeImage(path.toStdString(), image);
       done({});
     } catch (const std::exception& error) {
       done(error.what());
     }
+  });
+}
+
+void ViewerWindow::captureScreenshot(std::function<void(const Image&)> done) {
+  viewer_->captureNextFrame(std::move(done));
+}
+
+void ViewerWindow::addScene(OutputFiles& outputs, const std::string& path) {
+  outputs.add(path, [this, path](const std::string& file) {
+    if (!scene_) throw InputError("ivshadow: error: no scene to save");
+    const LightDragger::Hidden noDragger(dragger_);
+    const MapInspector::Hidden noProbe(*inspector_);
+    writeSceneTo(scene_.get(), file, path);
   });
 }
 
@@ -396,8 +411,8 @@ void ViewerWindow::chooseAndSaveScene() {
 }
 
 void ViewerWindow::chooseAndSaveScreenshot() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, "Save screenshot", "screenshot.png", "PNG (*.png)");
+  const QString path = QFileDialog::getSaveFileName(this, "Save screenshot", "screenshot.png",
+                                                    "Images (*.png *.jpg *.jpeg)");
   if (path.isEmpty()) return;
   saveScreenshot(path, [this, path](const std::string& error) {
     if (error.empty()) {

@@ -23,7 +23,9 @@ class SoSeparator;
 
 namespace ivshadow {
 
+class Image;
 class MapInspector;
+class OutputFiles;
 class ShadowPanel;
 class TimedExaminerViewer;
 
@@ -44,11 +46,16 @@ class ViewerWindow : public QMainWindow {
   // when interactive) and returns the message; returns an empty string on success.
   std::string openScene(const QString& path);
   void reload();
-  // Saves the next frame to `path`; `done` gets an empty string or the error.
+  // Saves the next frame to `path`, in the format its name asks for; `done` gets an empty
+  // string or the error.
   void saveScreenshot(const QString& path, std::function<void(const std::string&)> done);
+  // Gives the next frame to `done`, for a scripted run that writes it with its other outputs.
+  void captureScreenshot(std::function<void(const Image&)> done);
   // Writes the scene as loaded and edited (not the viewer's camera, headlight or dragger).
   // Returns an empty string or the error.
   std::string saveSceneAs(const QString& path);
+  // Adds that scene to `outputs` as `path`; the window must live until they are committed.
+  void addScene(OutputFiles& outputs, const std::string& path);
   // What the panel's button does: puts a scene without deep shadow nodes into a shadow group
   // with a deep shadow light. Returns an empty string or why it cannot.
   std::string addDeepShadowLight();

@@ -98,8 +98,8 @@ TEST(ReferenceCommand, BounceSaysWhenNoGroupBounces) {
   // lit_plane.iv's group has bounce FALSE: --bounce changes nothing, and says so.
   const std::string dir = test::outputDir();
   const test::ProcessResult result =
-      run({test::ivshadowExe(), "reference", scene("lit_plane.iv"), "-o", dir + "/a.png",
-           "--size", "16x16", "--bounce", "16"});
+      run({test::ivshadowExe(), "reference", scene("lit_plane.iv"), "-o", dir + "/a.png", "--size",
+           "16x16", "--bounce", "16"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_NE(result.err.find("--bounce: no active TransparentShadowGroup has bounce TRUE"),
             std::string::npos)
@@ -127,6 +127,20 @@ TEST(ReferenceCommand, CtrlCStopsWithoutAPartialFile) {
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_FALSE(test::fileExists(out));
   EXPECT_FALSE(test::fileExists(dir + "/big.pfm"));
+}
+
+// Ctrl-C after the trace's last row, while the files were written, was ignored: both files
+// were kept with exit 0. Now the writes finish and neither is kept.
+TEST(ReferenceCommand, CtrlCDuringTheWriteLeavesNoFile) {
+  const std::string dir = test::outputDir();
+  const std::string fifo = dir + "/exact.pfm";
+  const int status =
+      test::interruptWhileWriting({test::ivshadowExe(), "reference", scene("lit_plane.iv"), "-o",
+                                   dir + "/exact.png", "--size", "32x24", "--pfm", fifo},
+                                  dir, fifo, SIGINT);
+  EXPECT_EQ(status, 130);
+  EXPECT_EQ(test::filesIn(dir),
+            (std::vector<std::string>{"exact.pfm", "exact.pfm.stderr", "exact.pfm.stdout"}));
 }
 
 // Scenes without deep shadows whose camera view Coin composites in depth order

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <csignal>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -435,10 +437,130 @@ TEST(RenderCommand, OutputsNamingTheInputSceneAreRefusedAndTheSceneIsKept) {
   const test::ProcessResult result = run({test::ivshadowExe(), "render", copy, "-o",
                                           dir + "/out.png", "--stats", dir + "/./scene.iv"});
   EXPECT_EQ(result.exitCode, 2);
-  EXPECT_NE(result.err.find("cannot write statistics over the input file"), std::string::npos)
-      << result.err;
+  EXPECT_NE(result.err.find("--stats names the input scene"), std::string::npos) << result.err;
   EXPECT_EQ(std::filesystem::file_size(copy), before);
   EXPECT_FALSE(test::fileExists(dir + "/out.png"));
+}
+
+std::string bytesOf(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Every command's outputs are checked against its inputs and against each other in one place
+// (image/CommandPaths): `compare A B --diff B` replaced the candidate with its own heat map,
+// `render -o X.png --stats X.png` left only the statistics, both with exit 0, and the viewer
+// wrote a screenshot over its scene, through a link too.
+TEST(Ivshadow, NoCommandWritesOverAnInputOrTwoOutputsToOneFile) {
+  const std::string dir = test::outputDir();
+  const std::string scenePath = dir + "/S.iv", a = dir + "/A.png", b = dir + "/B.png";
+  std::filesystem::copy_file(scene("lit_plane.iv"), scenePath);
+  std::filesystem::create_symlink("S.iv", dir + "/link.iv");
+  Image picture(4, 3);
+  writePng(a, picture);
+  writePng(b, picture);
+  const std::string x = dir + "/X.png", shot = dir + "/shot.png";
+  const std::map<std::string, std::string> before = {
+      {scenePath, bytesOf(scenePath)}, {a, bytesOf(a)}, {b, bytesOf(b)}};
+  const std::vector<BadArguments> cases = {
+      {{"view", scenePath, "--screenshot", scenePath}, "--screenshot names the input scene"},
+      {{"view", scenePath, "--screenshot", dir + "/link.iv"}, "--screenshot names the input scene"},
+      {{"view", dir + "/link.iv", "--screenshot", scenePath}, "--screenshot names the input scene"},
+      {{"view", scenePath, "--screenshot", shot, "--window-shot", scenePath},
+       "--window-shot names the input scene"},
+      {{"view", scenePath, "--screenshot", shot, "--figures", dir + "/./S.iv"},
+       "--figures names the input scene"},
+      {{"view", scenePath, "--screenshot", shot, "--figures", shot},
+       "--screenshot and --figures name the same file"},
+      {{"compare", a, b, "--diff", b}, "--diff names the input candidate (" + b + ")"},
+      {{"compare", a, b, "--json", b}, "--json names the input candidate"},
+      {{"compare", a, b, "--json", a}, "--json names the input reference"},
+      {{"render", scenePath, "-o", x, "--stats", x}, "-o and --stats name the same file"},
+      {{"render", scenePath, "-o", x, "--stats", dir + "/./X.png"},
+       "-o and --stats name the same file"},
+      {{"reference", scenePath, "--pfm", x, "-o", x}, "-o and --pfm name the same file"},
+  };
+  for (const BadArguments& c : cases) {
+    std::vector<std::string> arguments = {test::ivshadowExe()};
+    arguments.insert(arguments.end(), c.arguments.begin(), c.arguments.end());
+    // Without a display the viewer would stop (exit 3) after its checks, never drawing.
+    const test::ProcessResult result = run(arguments, {"DISPLAY="});
+    EXPECT_EQ(result.exitCode, 2) << c.expected << "\n" << result.err;
+    const std::vector<std::string> errors = test::lines(result.err);
+    ASSERT_EQ(errors.size(), 1u) << c.expected << "\n" << result.err;
+    EXPECT_NE(errors[0].find(c.expected), std::string::npos) << errors[0];
+    for (const auto& [path, bytes] : before) EXPECT_EQ(bytesOf(path), bytes) << path;
+    EXPECT_TRUE(std::filesystem::is_symlink(dir + "/link.iv"));
+    EXPECT_FALSE(test::fileExists(x));
+    EXPECT_FALSE(test::fileExists(shot));
+  }
+}
+
+// `render --stats /dev/full` exited 1 and left the picture: a command that fails writes
+// none of its outputs, and an older file of that name is kept as it was.
+TEST(Ivshadow, AnOutputThatCannotBeWrittenTakesTheOthersWithIt) {
+  const std::string dir = test::outputDir();
+  const std::string out = dir + "/out.png", a = dir + "/A.png", b = dir + "/B.png";
+  writePng(a, Image(4, 3));
+  Image other(4, 3);
+  other.pixel(1, 1)[0] = 200;
+  writePng(b, other);
+  std::ofstream(out) << "an earlier picture";
+  const std::vector<std::vector<std::string>> commands = {
+      {"render", scene("lit_plane.iv"), "-o", out, "--size", "40x30", "--stats", "/dev/full"},
+      {"reference", scene("lit_plane.iv"), "-o", out, "--size", "40x30", "--pfm", "/dev/full"},
+      {"compare", a, b, "--diff", out, "--json", "/dev/full"},
+  };
+  for (const std::vector<std::string>& command : commands) {
+    std::vector<std::string> arguments = {test::ivshadowExe()};
+    arguments.insert(arguments.end(), command.begin(), command.end());
+    const test::ProcessResult result = run(arguments);
+    EXPECT_EQ(result.exitCode, 1) << command[0] << ": " << result.err;
+    EXPECT_NE(result.err.find("/dev/full"), std::string::npos) << result.err;
+    EXPECT_EQ(bytesOf(out), "an earlier picture") << command[0];
+    EXPECT_EQ(test::filesIn(dir), (std::vector<std::string>{"A.png", "B.png", "out.png"}))
+        << command[0] << ": no temporary left";
+  }
+}
+
+// SIGTERM, SIGINT or SIGHUP while `render` wrote left `.out.png.tmpPID` (or the picture
+// without its statistics): the write finishes under the signal, then nothing is kept, and
+// the status is the shell's for the signal.
+TEST(RenderCommand, ASignalDuringTheWriteLeavesNoFile) {
+  for (const int signal : {SIGTERM, SIGINT, SIGHUP}) {
+    const std::string dir = test::outputDir() + "/" + std::to_string(signal);
+    std::filesystem::create_directories(dir);
+    const std::string fifo = dir + "/stats";
+    const int status =
+        test::interruptWhileWriting({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o",
+                                     dir + "/out.png", "--size", "40x30", "--stats", fifo},
+                                    dir, fifo, signal);
+    EXPECT_EQ(status, 128 + signal) << bytesOf(fifo + ".stderr");
+    EXPECT_EQ(test::filesIn(dir),
+              (std::vector<std::string>{"stats", "stats.stderr", "stats.stdout"}))
+        << "signal " << signal;
+  }
+}
+
+// `-o /dev/null` was refused for its name although devices are written in place; an output
+// the user may not write (a read-only file) is refused before the work, and kept.
+TEST(RenderCommand, DevicesAreWrittenAndReadOnlyFilesAreKept) {
+  const std::string dir = test::outputDir();
+  const test::ProcessResult null = run(
+      {test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", "/dev/null", "--size", "40x30"});
+  EXPECT_EQ(null.exitCode, 0) << null.err;
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  const std::string locked = dir + "/locked.png";
+  std::ofstream(locked) << "kept";
+  std::filesystem::permissions(locked, std::filesystem::perms::owner_read |
+                                           std::filesystem::perms::group_read |
+                                           std::filesystem::perms::others_read);
+  const test::ProcessResult refused =
+      run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", locked, "--size", "40x30"});
+  EXPECT_EQ(refused.exitCode, 2) << refused.err;
+  EXPECT_NE(refused.err.find("the file is read-only (mode 0444"), std::string::npos) << refused.err;
+  EXPECT_EQ(bytesOf(locked), "kept");
+  EXPECT_EQ(test::filesIn(dir), std::vector<std::string>{"locked.png"});
 }
 
 TEST(RenderCommand, VersionAndHelp) {

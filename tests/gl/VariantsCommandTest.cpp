@@ -250,6 +250,73 @@ TEST(VariantsCommand, AnInterruptedRunLeavesNoScratchFilesAndNoReport) {
   EXPECT_LT(pictures, 10) << "the run was not interrupted";
 }
 
+// A manifest cut short, empty or wrongly typed was "not rendered yet" to variants-merge, or
+// a raw json.exception: the merge (and --status) now names the file and what is wrong, exit
+// 2, and writes no report; a run that renders takes it as not rendered and replaces it.
+TEST(VariantsCommand, ABrokenManifestIsNamedByTheMergeAndRenderedAgainByARun) {
+  const std::string dir = test::outputDir();
+  const std::string file = dir + "/two.variants", out = dir + "/out";
+  std::ofstream(file) << "variant a\n  Lamp.intensity = 0.5\nvariant b\n";
+  const std::vector<std::string> sweep = {test::ivshadowExe(),
+                                          "variants",
+                                          test::scenesDir() + "/lit_plane.iv",
+                                          file,
+                                          "-o",
+                                          out,
+                                          "--size",
+                                          "16x12"};
+  ASSERT_EQ(test::run(sweep).exitCode, 0);
+  const std::string manifest = out + "/manifests/a.json";
+  const std::string good = readText(manifest);
+  std::string typed = good;
+  typed.replace(typed.find("\"exit_code\": 0"), 14, "\"exit_code\": \"0\"");
+  std::string other = good;
+  other.replace(other.find("\"variant\": \"a\""), 14, "\"variant\": \"b\"");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {good.substr(0, good.size() / 2),
+       "the manifest of variant a is not valid JSON (cut short?): "
+       "parse error at line"},
+      {"", "the manifest of variant a is empty"},
+      {typed, "field \"exit_code\" is a string; expected a whole number"},
+      {"[1, 2]\n", "the manifest of variant a must be a JSON object; found an array"},
+      {other, "the manifest names the variant \"b\", not \"a\""},
+  };
+  for (const auto& [text, expected] : cases) {
+    std::filesystem::remove(out + "/variants.csv");
+    std::ofstream(manifest, std::ios::binary | std::ios::trunc) << text;
+    for (const bool status : {false, true}) {
+      std::vector<std::string> merge = {test::ivshadowExe(), "variants-merge", out};
+      if (status) merge.insert(merge.begin() + 2, "--status");
+      const test::ProcessResult result = test::run(merge);
+      EXPECT_EQ(result.exitCode, 2) << expected << "\n" << result.err;
+      EXPECT_EQ(result.err.rfind(manifest + ": error: " + expected, 0), 0u) << result.err;
+      EXPECT_EQ(test::lines(result.err).size(), 1u) << result.err;
+      EXPECT_FALSE(test::fileExists(out + "/variants.csv"));
+    }
+  }
+  // A run renders the variant again and writes a good manifest over the broken one.
+  const test::ProcessResult again = test::run(sweep);
+  EXPECT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.out.find("1 kept from an earlier run"), std::string::npos) << again.out;
+  EXPECT_EQ(test::run({test::ivshadowExe(), "variants-merge", out}).exitCode, 0);
+}
+
+// A variant named "plan" overwrote manifests/plan.json and broke the merge: such names are
+// refused at their line before anything is written.
+TEST(VariantsCommand, AVariantNamedLikeTheSweepsOwnFilesIsRefusedAtItsLine) {
+  const std::string dir = test::outputDir();
+  const std::string file = dir + "/plan.variants", out = dir + "/out";
+  std::ofstream(file) << "variant a\nvariant plan\n  Lamp.intensity = 0.5\n";
+  const test::ProcessResult result =
+      test::run({test::ivshadowExe(), "variants", test::scenesDir() + "/lit_plane.iv", file, "-o",
+                 out, "--size", "16x12"});
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_EQ(result.err, file +
+                            ":2: error: variant name \"plan\" is taken by the sweep's own "
+                            "manifests/plan.json; choose another\n");
+  EXPECT_FALSE(test::fileExists(out));
+}
+
 TEST(VariantsCommand, ABadVariantsFileStopsBeforeRendering) {
   const std::string dir = test::outputDir() + "/out";
   const std::string file = test::outputDir() + "/bad.variants";

@@ -1,3 +1,4 @@
+#include "image/ImageFile.h"
 #include "image/PngFile.h"
 #include "tests/gl/ViewerTestSupport.h"
 #include "tests/support/TestSupport.h"
@@ -94,6 +95,37 @@ TEST(ViewerSmoke, BadSceneInScreenshotModeExitsTwoWithoutScreenshot) {
   EXPECT_EQ(result.exitCode, 2) << result.err;
   EXPECT_NE(result.err.find("unknown_node.iv:6: error:"), std::string::npos) << result.err;
   EXPECT_FALSE(test::fileExists(out));
+}
+
+// `view --screenshot x.jpg` wrote PNG bytes under a .jpg name: the screenshot and the window
+// follow their names' formats as `ivshadow render` does, and an output that cannot be
+// written (the figures to /dev/full) takes the others with it.
+TEST(ViewerSmoke, EveryPictureFollowsItsNamesFormatAndAFailedOutputLeavesNone) {
+  const std::string dir = test::outputDir();
+  const std::string shot = dir + "/shot.jpg", window = dir + "/window.JPEG";
+  const std::string scene = test::scenesDir() + "/no_camera.iv";
+  const test::ProcessResult result =
+      runOnTestDisplay({test::ivshadowExe(), "view", scene, "--screenshot", shot, "--size",
+                        "160x120", "--window-shot", window});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  for (const std::string& path : {shot, window})
+    EXPECT_EQ(test::readText(path).substr(0, 3), std::string("\xFF\xD8\xFF", 3))
+        << path << ": JPEG data, not PNG";
+  const Image decoded = readImage(shot);
+  EXPECT_EQ(decoded.width(), 160);
+  EXPECT_EQ(decoded.height(), 120);
+
+  const std::string lost = dir + "/lost.png";
+  const test::ProcessResult failed =
+      runOnTestDisplay({test::ivshadowExe(), "view", scene, "--screenshot", lost, "--size",
+                        "160x120", "--figures", "/dev/full"});
+  EXPECT_EQ(failed.exitCode, 1) << failed.err;
+  EXPECT_NE(failed.err.find("/dev/full"), std::string::npos) << failed.err;
+  EXPECT_FALSE(test::fileExists(lost));
+  const test::ProcessResult bmp =
+      runOnTestDisplay({test::ivshadowExe(), "view", scene, "--screenshot", dir + "/shot.bmp"});
+  EXPECT_EQ(bmp.exitCode, 2);
+  EXPECT_NE(bmp.err.find("cannot write images of type '.bmp'"), std::string::npos) << bmp.err;
 }
 
 TEST(ViewerSmoke, ViewWithoutDisplayExitsThreeWithAdvice) {

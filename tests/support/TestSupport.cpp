@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 extern char** environ;
 
@@ -126,6 +129,36 @@ std::string inputErrorOf(const std::function<void()>& body) {
 
 bool fileExists(const std::string& path) {
   return std::filesystem::exists(path);
+}
+
+int interruptWhileWriting(const std::vector<std::string>& arguments, const std::string& dir,
+                          const std::string& fifo, int signal) {
+  if (::mkfifo(fifo.c_str(), 0600) != 0) return -1;
+  const int pid = startProcess(arguments, {}, fifo + ".stdout", fifo + ".stderr");
+  if (pid <= 0) return -1;
+  const auto temporary = [&] {
+    for (const std::string& name : filesIn(dir))
+      if (name[0] == '.') return true;
+    return false;
+  };
+  // A poll, not a timing: the temporary exists until the FIFO has a reader.
+  for (int i = 0; i < 1500 && !temporary(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ::kill(pid, signal);
+  // Non-blocking: should the command be gone, nothing waits for a writer that never comes.
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  const int status = waitForProcess(pid);
+  if (reader >= 0) ::close(reader);
+  return status;
+}
+
+std::vector<std::string> filesIn(const std::string& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 std::vector<std::string> lines(const std::string& text) {

@@ -38,6 +38,18 @@ int waitForProcess(int pid);
 
 bool fileExists(const std::string& path);
 
+// Interrupts a command while it writes its outputs: `arguments` name the FIFO `fifo` as an
+// output, which the command writes in place after its other outputs' temporaries, and whose
+// opening blocks until a reader comes. Once a file whose name starts with `.` appears in
+// `dir` (a temporary; 30 s at most), `signal` is sent; then the FIFO is opened for reading so
+// that the command can go on. Returns its exit status as waitForProcess does; its stdout and
+// stderr are left in `fifo`.stdout and `fifo`.stderr.
+int interruptWhileWriting(const std::vector<std::string>& arguments, const std::string& dir,
+                          const std::string& fifo, int signal);
+
+// Names of the files in `dir`, sorted.
+std::vector<std::string> filesIn(const std::string& dir);
+
 // The message of the InputError `body` throws, or empty when it throws none (any other
 // exception propagates).
 std::string inputErrorOf(const std::function<void()>& body);

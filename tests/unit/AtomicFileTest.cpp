@@ -1,8 +1,10 @@
 #include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "scene/InputError.h"
 #include "tests/support/TestSupport.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -64,21 +66,89 @@ TEST(AtomicFile, DevicesAreWrittenInPlaceNeverReplaced) {
   EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
-TEST(AtomicFile, TheInputIsNeverAnOutputWhateverTheSpelling) {
+// Rendering over a read-only file owned by someone else replaced it, with a new owner and
+// mode 0644: the directory allowed the rename. A file the user could not write in place is
+// refused (for root, who may write anything, one without any write bit), and a file that is
+// replaced keeps its mode, and for root its owner.
+TEST(AtomicFile, AFileThatMayNotBeWrittenIsRefusedAndAReplacedOneKeepsItsOwnerAndMode) {
+  const std::string dir = test::outputDir();
+  const std::string locked = dir + "/locked.png";
+  std::ofstream(locked) << "reference picture";
+  ASSERT_EQ(::chmod(locked.c_str(), 0444), 0);
+  const std::string error =
+      test::inputErrorOf([&] { AtomicFile::checkWritable(locked, "the image"); });
+  EXPECT_EQ(
+      error.rfind(locked + ": error: cannot write the image: the file is read-only (mode 0444", 0),
+      0u)
+      << error;
+  EXPECT_EQ(contents(locked), "reference picture");
+  // Through a link too.
+  fs::create_symlink("locked.png", dir + "/link.png");
+  EXPECT_NE(test::inputErrorOf([&] { AtomicFile::checkWritable(dir + "/link.png", "the image"); }),
+            "");
+
+  const std::string shared = dir + "/shared.png";
+  std::ofstream(shared) << "old";
+  ASSERT_EQ(::chmod(shared.c_str(), 0640), 0);
+  const bool root = ::geteuid() == 0;
+  // As root the file is given to another user first (65534: nobody), whose file root writes.
+  if (root) ASSERT_EQ(::chown(shared.c_str(), 65534, 65534), 0);
+  EXPECT_EQ(test::inputErrorOf([&] { AtomicFile::checkWritable(shared, "the image"); }), "");
+  writeTextFileAtomically(shared, "new");
+  EXPECT_EQ(contents(shared), "new");
+  struct stat info {};
+  ASSERT_EQ(::stat(shared.c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 07777, 0640u);
+  if (root) {
+    EXPECT_EQ(info.st_uid, 65534u);
+    EXPECT_EQ(info.st_gid, 65534u);
+  }
+}
+
+TEST(CommandPaths, TheInputIsNeverAnOutputWhateverTheSpelling) {
   const std::string dir = test::outputDir();
   std::ofstream(dir + "/scene.iv") << "#Inventor V2.1 ascii\n";
   fs::create_symlink("scene.iv", dir + "/alias.iv");
-  for (const std::string output : {dir + "/scene.iv", dir + "/./scene.iv", dir + "/alias.iv"}) {
-    try {
-      AtomicFile::checkNotInput(output, dir + "/scene.iv", "the image");
-      ADD_FAILURE() << output << " was accepted as an output";
-    } catch (const InputError& error) {
-      EXPECT_EQ(
-          std::string(error.what()),
-          output + ": error: cannot write the image over the input file " + dir + "/scene.iv");
-    }
+  fs::create_symlink(dir + "/missing.png", dir + "/dangling.png");
+  for (const std::string output :
+       {dir + "/scene.iv", dir + "/./scene.iv", dir + "/alias.iv",
+        dir + "/../" + fs::path(dir).filename().string() + "/scene.iv"}) {
+    const std::string error = test::inputErrorOf(
+        [&] { CommandPaths().input("scene", dir + "/scene.iv").output("-o", output).check(); });
+    EXPECT_EQ(error, output + ": error: -o names the input scene (" + dir +
+                         "/scene.iv); an output never replaces an input");
   }
-  AtomicFile::checkNotInput(dir + "/other.png", dir + "/scene.iv", "the image");
+  // Files not there yet compare by their names, a dangling link by the file it would make.
+  EXPECT_TRUE(CommandPaths::sameFile(dir + "/new.png", dir + "/sub/../new.png"));
+  EXPECT_TRUE(CommandPaths::sameFile(dir + "/dangling.png", dir + "/missing.png"));
+  EXPECT_FALSE(CommandPaths::sameFile(dir + "/new.png", dir + "/New.png"));
+  EXPECT_EQ(test::inputErrorOf([&] {
+              CommandPaths()
+                  .input("scene", dir + "/scene.iv")
+                  .output("-o", dir + "/other.png")
+                  .output("--stats", "")
+                  .check();
+            }),
+            "");
+}
+
+TEST(CommandPaths, TwoOutputsNeverShareAFileButMayShareADevice) {
+  const std::string dir = test::outputDir();
+  const std::string error = test::inputErrorOf([&] {
+    CommandPaths().output("-o", dir + "/x.png").output("--stats", dir + "/./x.png").check();
+  });
+  EXPECT_EQ(error, dir + "/./x.png: error: -o and --stats name the same file (" + dir +
+                       "/x.png); each output needs a file of its own");
+  fs::create_symlink("x.png", dir + "/y.png");
+  EXPECT_NE(test::inputErrorOf([&] {
+              CommandPaths().output("-o", dir + "/y.png").output("--pfm", dir + "/x.png").check();
+            }),
+            "")
+      << "through a link not there yet";
+  EXPECT_EQ(test::inputErrorOf([&] {
+              CommandPaths().output("-o", "/dev/null").output("--stats", "/dev/null").check();
+            }),
+            "");
 }
 
 }  // namespace

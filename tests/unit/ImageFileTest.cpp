@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <thread>
 
 namespace ivshadow {
 namespace {
@@ -28,6 +31,27 @@ TEST(ImageFile, FormatFollowsTheExtensionInAnyCase) {
   EXPECT_EQ(imageFormatFor("dir.v2/OUT.PNG"), ImageFormat::Png);
   EXPECT_EQ(imageFormatFor("a.jpg"), ImageFormat::Jpeg);
   EXPECT_EQ(imageFormatFor("a.JPEG"), ImageFormat::Jpeg);
+}
+
+// `-o /dev/null` was refused ("cannot write images of type '(no extension)'") although
+// devices are written in place: a device or pipe of another name gets PNG, and the picture
+// reaches the reader of a pipe.
+TEST(ImageFile, DevicesAndPipesOfAnyNameArePng) {
+  EXPECT_EQ(imageFormatFor("/dev/null"), ImageFormat::Png);
+  writeImage("/dev/null", Image(3, 2));
+  const std::string fifo = test::outputDir() + "/pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(imageFormatFor(fifo), ImageFormat::Png);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    received.assign(std::istreambuf_iterator<char>(in), {});
+  });
+  writeImage(fifo, Image(3, 2));
+  reader.join();
+  EXPECT_EQ(received.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  // A file of that name not yet there is no device: its name must say the format.
+  EXPECT_NE(formatError(test::outputDir() + "/picture"), "");
 }
 
 TEST(ImageFile, OtherExtensionsAreRefusedNamingTheSupportedOnes) {

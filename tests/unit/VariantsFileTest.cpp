@@ -47,6 +47,29 @@ TEST(VariantsFile, ANameTooLongForAnOutputFileIsRefusedWithItsLine) {
       << error;
 }
 
+// A variant named "plan" wrote its manifest over the sweep's manifests/plan.json, and a name
+// of non-Latin letters was sanitised to "" and then refused as an image type: both are
+// refused at their line, as is a hidden name, which the sweep's scratch files could match.
+TEST(VariantsFile, NamesTheSweepNeedsOrThatKeepNothingAreRefusedWithTheirLine) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"variant a\nvariant plan\n",
+       "v:2: error: variant name \"plan\" is taken by the sweep's own manifests/plan.json"},
+      {"variant PLAN\n", "v:1: error: variant name \"PLAN\" is taken"},
+      {"\nvariant .hidden\n", "v:2: error: variant name \".hidden\" begins with '.'"},
+      {"sweep .s Lamp.on = TRUE\n", "v:1: error: variant name \".s-TRUE\" begins with '.'"},
+      {"variant стекло\n",
+       "v:1: error: variant name \"стекло\" keeps no character in a "
+       "file name"},
+      {"variant ***\n", "v:1: error: variant name \"***\" keeps no character"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string error = test::inputErrorOf([&] { parseVariants(text, "v"); });
+    EXPECT_EQ(error.rfind(expected, 0), 0u) << text << "\n" << error;
+  }
+  // Names that only contain such words are the variants' own.
+  EXPECT_EQ(parseVariants("variant plan2\nvariant my.plan\nvariant стекло2\n", "v").size(), 3u);
+}
+
 TEST(VariantsFile, ListSweepWithSharedAssignments) {
   const auto variants = parseVariants(
       "sweep colour Glass.diffuseColor = 1 0 0 | 0 1 0\n"

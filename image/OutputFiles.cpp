@@ -1,0 +1,43 @@
+#include "image/OutputFiles.h"
+
+#include "image/AtomicFile.h"
+#include "image/ImageFile.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+namespace ivshadow {
+
+void OutputFiles::add(const std::string& path, Writer write) {
+  outputs_.push_back({path, std::move(write)});
+}
+
+void OutputFiles::addImage(const std::string& path, const Image& image) {
+  add(path, [path, &image](const std::string& file) { writeImageTo(file, path, image); });
+}
+
+void OutputFiles::addText(const std::string& path, std::string text) {
+  add(path, [path, text = std::move(text)](const std::string& file) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error(path + ": error: cannot write: " + std::strerror(errno));
+  });
+}
+
+bool OutputFiles::commit(const std::atomic<bool>* cancel) {
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  for (const Output& output : outputs_) files.push_back(std::make_unique<AtomicFile>(output.path));
+  for (bool inPlace : {false, true})
+    for (std::size_t i = 0; i < outputs_.size(); ++i)
+      if (files[i]->inPlace() == inPlace) outputs_[i].write(files[i]->temporaryPath());
+  // The files not committed are removed with their AtomicFile.
+  if (cancel != nullptr && cancel->load()) return false;
+  for (const std::unique_ptr<AtomicFile>& file : files) file->commit();
+  return true;
+}
+
+}  // namespace ivshadow
