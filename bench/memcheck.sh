@@ -22,7 +22,7 @@ check() {
   else
     local status=$?
     echo "$name: exit $status"
-    grep -A30 "^==[0-9]*== [A-Z]" "$out/$name.log" | head -60
+    grep -A30 "^==[0-9]*== [A-Z]" "$out/$name.log" | head -60 || true
     failed=1
   fi
 }
