@@ -14,7 +14,8 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   CXX=clang++ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIVSHADOW_FUZZ=ON \
     -DBUILD_TESTING=OFF >/dev/null
 fi
-all=(SceneReaderFuzzer SceneRenderFuzzer FieldAssignmentFuzzer VariantsFileFuzzer ImageReaderFuzzer)
+all=(SceneReaderFuzzer SceneRenderFuzzer FieldAssignmentFuzzer VariantsFileFuzzer ImageReaderFuzzer
+     CommandLineFuzzer)
 harnesses=("${@:2}")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
 for harness in "${harnesses[@]}"; do
@@ -37,6 +38,22 @@ seed() {
                   "Group.isActive=FALSE" "Peel.maxPasses=8" "Glass.transparency=[0.5, 1]" \
                   "Lamp.color=1 0 0"; do
         printf '%s' "$text" >"$dir/seed$((i++))"
+      done ;;
+    CommandLineFuzzer)
+      # One argument per line, in the scratch folder's names (fuzz/CommandLineFuzzer.cpp).
+      local i=0
+      for line in "render a.iv -o out.png --size 32x24" \
+                  "render a.iv -o a.iv --size 8x8" \
+                  "render a.iv -o out.jpg --stats out.jpg --size 8x8" \
+                  "render a.iv -o out.png --size 16x16 --set Lamp.method=MAP --frames 2" \
+                  "render a.iv -o out.png --size 16x16 --set Glass.transparency=1e39" \
+                  "reference a.iv -o ref.png --pfm ref.pfm --size 16x12 --bounce 1" \
+                  "compare b.png c.png --diff c.png --json d.json" \
+                  "compare b.png c.png --diff diff.jpg --scale 4" \
+                  "variants-merge --status sweep" "view a.iv --screenshot a.png" \
+                  "trade a.iv -o t --layers 1,2 --method map,tracer" \
+                  "variants a.iv v.variants -o out --shard 1/3 --list"; do
+        printf '%s' "$line" | tr ' ' '\n' >"$dir/seed$((i++))"
       done ;;
     VariantsFileFuzzer)
       cp iv_scenes/*.variants tests/variants/*.variants "$dir"/ ;;
