@@ -53,7 +53,8 @@ seed() {
                   "variants-merge --status sweep" "view a.iv --screenshot a.png" \
                   "trade a.iv -o t --layers 1,2 --method map,tracer" \
                   "variants a.iv v.variants -o out --shard 1/3 --list"; do
-        printf '%s' "$line" | tr ' ' '\n' >"$dir/seed$((i++))"
+        local name=$dir/seed$((i++))
+        printf '%s' "$line" | tr ' ' '\n' >"$name"
       done ;;
     VariantsFileFuzzer)
       cp iv_scenes/*.variants tests/variants/*.variants "$dir"/ ;;
@@ -72,7 +73,8 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/
 table="| harness | seconds | runs | findings |
 |---|---|---|---|"
 for harness in "${harnesses[@]}"; do
-  corpus=$build/corpus/$harness findings=$build/findings/$harness
+  # Absolute: CommandLineFuzzer works in a scratch folder of its own.
+  corpus=$PWD/$build/corpus/$harness findings=$PWD/$build/findings/$harness
   seed "$harness" "$corpus"
   # The last run's findings move aside (findings/HARNESS.previous), kept until the next run.
   rm -rf "$findings.previous"

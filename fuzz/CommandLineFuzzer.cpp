@@ -51,11 +51,12 @@ void enterScratch() {
   ivshadow::writePng("b.png", picture);
   picture.pixel(1, 1)[0] = 200;
   ivshadow::writePng("c.png", picture);
-  std::ofstream("c.png", std::ios::binary).write(reinterpret_cast<const char*>(kRed), sizeof kRed);
 }
 
-// Whether a run of this command line stays small and inside the scratch folder.
-bool quickAndLocal(const std::vector<std::string>& arguments) {
+// Whether a run of this command line stays small and inside the scratch folder (a command
+// that draws must name a small --size: its default is 800 x 600).
+bool quickAndLocal(const std::vector<std::string>& arguments, bool draws) {
+  bool sized = false;
   static const std::regex size(R"((\d+)\s*[xX]\s*(\d+))");
   for (std::size_t i = 0; i < arguments.size(); ++i) {
     const std::string& a = arguments[i];
@@ -64,12 +65,13 @@ bool quickAndLocal(const std::vector<std::string>& arguments) {
     if (std::regex_search(a, m, size) &&
         (m[1].length() > 3 || m[2].length() > 3 || std::stoi(m[1]) * std::stoi(m[2]) > 64 * 64))
       return false;
+    sized = sized || (a == "--size" && i + 1 < arguments.size());
     const bool count = a == "--frames" || a == "--bounce" || a == "--threads";
     if (count && i + 1 < arguments.size() &&
         (arguments[i + 1].size() > 2 || std::atoi(arguments[i + 1].c_str()) > 4))
       return false;
   }
-  return true;
+  return sized || !draws;
 }
 
 }  // namespace
@@ -98,7 +100,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string command = commandLine.command();
   const bool runs = command == "render" || command == "reference" || command == "compare" ||
                     command == "variants-merge";
-  if (runs && quickAndLocal(arguments)) {
+  if (runs && quickAndLocal(arguments, command == "render" || command == "reference")) {
     const int status = commandLine.run(argv[0]);
     // The contract: success, bad input or no GL; anything else (1) is a finding to look at,
     // printed rather than stopped at (a device full or a signal are 1 by design).
