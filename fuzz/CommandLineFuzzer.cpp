@@ -44,7 +44,8 @@ void enterScratch() {
     if (::chdir(made.c_str()) != 0) std::abort();
     return made;
   }();
-  (void)dir;
+  // What the last input wrote goes: the folder holds only these files at each start.
+  for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
   std::ofstream("a.iv") << kScene;
   // Two pictures to compare, a pixel apart.
   ivshadow::Image picture(2, 2);
@@ -57,18 +58,26 @@ void enterScratch() {
 // that draws must name a small --size: its default is 800 x 600).
 bool quickAndLocal(const std::vector<std::string>& arguments, bool draws) {
   bool sized = false;
-  static const std::regex size(R"((\d+)\s*[xX]\s*(\d+))");
-  for (std::size_t i = 0; i < arguments.size(); ++i) {
-    const std::string& a = arguments[i];
+  static const std::regex size(R"((\d+)\D*[xX]\D*(\d+))");
+  // "--bounce=65536" is "--bounce" "65536" to CLI11.
+  std::vector<std::string> split;
+  for (const std::string& argument : arguments) {
+    const std::size_t equals =
+        argument.rfind("--", 0) == 0 ? argument.find('=') : std::string::npos;
+    split.push_back(argument.substr(0, equals));
+    if (equals != std::string::npos) split.push_back(argument.substr(equals + 1));
+  }
+  for (std::size_t i = 0; i < split.size(); ++i) {
+    const std::string& a = split[i];
     if (a.find('/') != std::string::npos || a.find("..") != std::string::npos) return false;
     std::smatch m;
     if (std::regex_search(a, m, size) &&
         (m[1].length() > 3 || m[2].length() > 3 || std::stoi(m[1]) * std::stoi(m[2]) > 64 * 64))
       return false;
-    sized = sized || (a == "--size" && i + 1 < arguments.size());
+    sized = sized || (a == "--size" && i + 1 < split.size());
     const bool count = a == "--frames" || a == "--bounce" || a == "--threads";
-    if (count && i + 1 < arguments.size() &&
-        (arguments[i + 1].size() > 2 || std::atoi(arguments[i + 1].c_str()) > 4))
+    if (count && i + 1 < split.size() &&
+        (split[i + 1].size() > 2 || std::atoi(split[i + 1].c_str()) > 4))
       return false;
   }
   return sized || !draws;

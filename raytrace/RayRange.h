@@ -10,9 +10,10 @@ namespace ivshadow {
 
 // Whether Embree takes a ray from `origin` along `direction`: both finite and within
 // kLargestTracedCoordinate in every component (Embree's ray.valid() assertion aborts the
-// process otherwise). Shapes past that range are left out where scenes are loaded and
-// extracted; this guards what reaches Embree from elsewhere (a camera placed that far, a
-// capture texel a driver left undefined) so that such a ray is not traced instead.
+// process otherwise). Shapes reaching past that range in world coordinates are left out where
+// scenes are loaded and extracted; this guards everything else that reaches Embree (a group's
+// own coordinates, which may lie farther than the world's under a scale, a camera placed that
+// far, a capture texel a driver left undefined): such a ray is not traced.
 inline bool embreeTakesRay(const glm::vec3& origin, const glm::vec3& direction) {
   for (int i = 0; i < 3; ++i)
     if (!(std::fabs(origin[i]) <= kLargestTracedCoordinate) ||

@@ -12,6 +12,7 @@ IndexRuns IndexRuns::of(const SoMFInt32& indices) {
       result.shortest = length;
       result.shortestAt = result.runs;
     }
+    result.longest = std::max(result.longest, length);
     ++result.runs;
     result.segments += std::max(length - 1, 0L);
     result.triangles += std::max(length - 2, 0L);
@@ -29,7 +30,15 @@ IndexRuns IndexRuns::of(const SoMFInt32& indices) {
   return result;
 }
 
+bool indexGiven(const SoMFInt32& indices) {
+  return indices.getNum() > 0 && indices[0] >= 0;
+}
+
 namespace {
+std::string entries(long count) {
+  return std::to_string(count) + (count == 1 ? " entry" : " entries");
+}
+
 std::string outside(const char* name, long at, long index, long count, const char* what) {
   return std::string(name) + "[" + std::to_string(at) + "] " + std::to_string(index) +
          " is outside the " + std::to_string(count) + " " + what;
@@ -49,8 +58,8 @@ std::string indicesPerVertex(const SoMFInt32& coordIndex, const SoMFInt32& indic
   for (int i = 0; i < coordIndex.getNum(); ++i) {
     if (coordIndex[i] < 0) continue;
     if (i >= indices.getNum())
-      return std::string(name) + " holds " + std::to_string(indices.getNum()) +
-             " entries; coordIndex reads one at each of its " + std::to_string(coordIndex.getNum());
+      return std::string(name) + " holds " + entries(indices.getNum()) +
+             "; coordIndex reads one at each of its " + std::to_string(coordIndex.getNum());
     if (indices[i] < 0 || indices[i] >= count) return outside(name, i, indices[i], count, what);
   }
   return {};
@@ -59,8 +68,8 @@ std::string indicesPerVertex(const SoMFInt32& coordIndex, const SoMFInt32& indic
 std::string indicesPerUnit(const SoMFInt32& indices, const char* name, long units, const char* unit,
                            long count, const char* what) {
   if (indices.getNum() < units)
-    return std::string(name) + " holds " + std::to_string(indices.getNum()) +
-           " entries; one is read per " + unit + ", " + std::to_string(units) + " in all";
+    return std::string(name) + " holds " + entries(indices.getNum()) + "; one is read per " + unit +
+           ", " + std::to_string(units) + " in all";
   for (long i = 0; i < units; ++i)
     if (indices[int(i)] < 0 || indices[int(i)] >= count)
       return outside(name, i, indices[int(i)], count, what);

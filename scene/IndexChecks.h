@@ -14,10 +14,15 @@ struct IndexRuns {
   long segments = 0;     // sum over runs of (length - 1): line segments
   long triangles = 0;    // sum over runs of (length - 2): a strip's triangles
   long shortest = -1;    // the shortest run's length (-1: no run)
+  long longest = -1;     // the longest run's length (-1: no run)
   long shortestAt = -1;  // its number
 
   static IndexRuns of(const SoMFInt32& indices);
 };
+
+// Whether an index field is given as Coin reads it: not empty and not starting with -1 (Coin
+// then reads coordIndex, or the values in order, in its place).
+bool indexGiven(const SoMFInt32& indices);
 
 // Each entry of `indices` other than -1 inside 0..count-1, or what is not: "NAME[I] V is
 // outside the COUNT WHAT".
@@ -33,8 +38,8 @@ std::string indicesPerVertex(const SoMFInt32& coordIndex, const SoMFInt32& indic
 std::string indicesPerUnit(const SoMFInt32& indices, const char* name, long units, const char* unit,
                            long count, const char* what);
 
-// `count` values of WHAT read one per UNIT: "WHAT: BINDING reads one per UNIT, N in all; there
-// are COUNT", or empty when count >= units.
+// `count` values of WHAT read one per UNIT: "BINDING reads one of the WHAT per UNIT, N in all;
+// there are COUNT", or empty when count >= units.
 std::string valuesPerUnit(const char* what, const char* binding, const char* unit, long units,
                           long count);
 

@@ -87,20 +87,34 @@ class Tokenizer {
 // VRMLInline, which Coin reads as a file) are read and checked in turn; a '%' in a name Coin
 // cannot find is taken as printf's format in its message (SoInput::pushFile, Coin 4.0), and
 // SoTexture3 does the same with every name it fails to read. Coin 4.0 reports the other
-// names through "%s".
+// names through "%s". VRML97 nodes are named here as Inventor files spell them; a VRML97
+// file spells them without "VRML" (Coin adds it).
 struct FileField {
   const char* node;
   const char* field;
   bool scene;         // read as Inventor or VRML, checked in turn
   bool percentKills;  // a '%' crashes Coin whether or not the file is there
+  bool firstOnly;     // Coin reads only the first name of the list (url[0])
 };
 constexpr FileField kFileFields[] = {
-    {"File", "name", true, false},
-    {"VRMLInline", "url", true, false},
-    {"Texture2", "filename", false, false},
-    {"Texture3", "filenames", false, true},
-    {"VRMLImageTexture", "url", false, false},
-    {"Image", "filename", false, false},
+    {"File", "name", true, false, false},
+    {"VRMLInline", "url", true, false, true},
+    {"Texture2", "filename", false, false, false},
+    {"Texture3", "filenames", false, true, false},
+    {"BumpMap", "filename", false, false, false},
+    {"TextureCubeMap", "filenames", false, false, false},
+    {"Image", "filename", false, false, false},
+    // Shader sources name a file unless they hold the program itself, which names none.
+    {"VertexShader", "sourceProgram", false, false, false},
+    {"FragmentShader", "sourceProgram", false, false, false},
+    {"GeometryShader", "sourceProgram", false, false, false},
+    {"VRMLImageTexture", "url", false, false, true},
+    {"VRMLBackground", "backUrl", false, false, true},
+    {"VRMLBackground", "bottomUrl", false, false, true},
+    {"VRMLBackground", "frontUrl", false, false, true},
+    {"VRMLBackground", "leftUrl", false, false, true},
+    {"VRMLBackground", "rightUrl", false, false, true},
+    {"VRMLBackground", "topUrl", false, false, true},
 };
 
 // Fields holding an image inline: its size, then one value per pixel (SoSFImage, SoSFImage3).
@@ -112,9 +126,21 @@ struct ImageField {
 constexpr ImageField kImageFields[] = {
     {"Texture2", "image", 2},
     {"Image", "image", 2},
+    {"BumpMap", "image", 2},
     {"VRMLPixelTexture", "image", 2},
     {"Texture3", "images", 3},
+    {"TextureCubeMap", "imagePosX", 2},
+    {"TextureCubeMap", "imageNegX", 2},
+    {"TextureCubeMap", "imagePosY", 2},
+    {"TextureCubeMap", "imageNegY", 2},
+    {"TextureCubeMap", "imagePosZ", 2},
+    {"TextureCubeMap", "imageNegZ", 2},
 };
+
+// Whether a node of type `type` (as the file spells it) is `node` of the tables above.
+bool sameNode(const std::string& type, const char* node, bool vrml97) {
+  return type == node || (vrml97 && "VRML" + type == node);
+}
 
 std::string canonicalPath(const std::filesystem::path& path) {
   std::error_code ec;
@@ -147,6 +173,7 @@ class Checker {
     const bool ascii = header.rfind("#Inventor", 0) == 0 ? header.find("ascii") != std::string::npos
                                                          : header.rfind("#VRML", 0) == 0;
     if (!ascii) return;
+    const bool vrml97 = header.rfind("#VRML V2.0", 0) == 0;
     open_.push_back(canonicalPath(path));
 
     // Per open brace: the DEF name of the node it opens ("" for none). Per DEF name: the
@@ -161,28 +188,49 @@ class Checker {
     // The file-naming field whose value comes next, and whether that is a list in brackets.
     const FileField* fileField = nullptr;
     bool inList = false;
+    int listIndex = 0;
     // The inline image whose size comes next: its field, and the numbers read so far.
     const ImageField* imageField = nullptr;
     std::vector<long long> imageSize;
     bool useNext = false;
     Tokenizer tokenizer(text, path);
     for (Token token; tokenizer.next(token);) {
+      // A file name or an image size is read only while the tokens are what the field holds:
+      // anything else (a brace, IS, a connection) ends it and is read as usual.
+      bool consumed = false;
       if (fileField != nullptr) {
-        if (!inList && token.is("[")) {
-          inList = true;
+        if (!token.quoted && (token.is("{") || token.is("}") || (!inList && token.is("]")))) {
+          fileField = nullptr;
+          inList = false;
+        } else if (!inList && token.is("[")) {
+          consumed = inList = true;
+          listIndex = 0;
         } else if (inList && token.is("]")) {
+          consumed = true;
           fileField = nullptr;
           inList = false;
         } else {
-          checkNamedFile(path, *fileField, token, nesting + int(braces.size()));
+          consumed = true;
+          if (!fileField->firstOnly || listIndex++ == 0)
+            checkNamedFile(path, *fileField, token, nesting + int(braces.size()));
           if (!inList) fileField = nullptr;
         }
       } else if (imageField != nullptr) {
-        imageSize.push_back(std::atoll(token.text.c_str()));
-        if (int(imageSize.size()) == imageField->dimensions + 1) {
-          checkImageSize(path, *imageField, imageSize, token.line, tokenizer.remaining());
+        char* end = nullptr;
+        const long long value = std::strtoll(token.text.c_str(), &end, 0);
+        if (token.quoted || token.text.empty() || *end != '\0') {
           imageField = nullptr;
+        } else {
+          consumed = true;
+          imageSize.push_back(value);
+          if (int(imageSize.size()) == imageField->dimensions + 1) {
+            checkImageSize(path, *imageField, imageSize, token.line, tokenizer.remaining());
+            imageField = nullptr;
+          }
         }
+      }
+      if (consumed) {
+        // The field's value, checked above.
       } else if (useNext) {
         useNext = false;
         const auto found = newest.find(token.text);
@@ -209,9 +257,10 @@ class Checker {
         useNext = true;
       } else if (!types.empty() && !token.quoted) {
         for (const FileField& field : kFileFields)
-          if (types.back() == field.node && token.text == field.field) fileField = &field;
+          if (sameNode(types.back(), field.node, vrml97) && token.text == field.field)
+            fileField = &field;
         for (const ImageField& field : kImageFields)
-          if (types.back() == field.node && token.text == field.field) {
+          if (sameNode(types.back(), field.node, vrml97) && token.text == field.field) {
             imageField = &field;
             imageSize.clear();
           }
@@ -251,8 +300,7 @@ class Checker {
     const std::string canonical = canonicalPath(resolved);
     for (const std::string& file : open_)
       if (file == canonical)
-        throw InputError(locationPrefix(path, name.line) + "error: " + field.node + " " +
-                         name.text + " includes " +
+        throw InputError(where + "includes " +
                          (file == open_.back() ? "itself" : "a file that includes it") +
                          " (the scene would never end)");
     checkFile(resolved.string(), nesting);

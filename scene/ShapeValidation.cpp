@@ -1,5 +1,6 @@
 #include "scene/ShapeValidation.h"
 
+#include "scene/CoinRef.h"
 #include "scene/IndexChecks.h"
 #include "scene/SceneTriangles.h"
 #include "scene/VrmlShapeValidation.h"
@@ -34,6 +35,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -75,6 +77,16 @@ int materialBinding(SoState* state, const SoVertexShape* shape) {
       property->orderedRGBA.getNum() > 0)
     return property->materialBinding.getValue();
   return SoMaterialBindingElement::get(state);
+}
+
+// The normal binding the shape draws with: its own SoVertexProperty's where that holds
+// normals, otherwise the element in force.
+int normalBinding(SoState* state, const SoVertexShape* shape) {
+  if (const auto* property = static_cast<const SoVertexProperty*>(shape->vertexProperty.getValue());
+      property != nullptr && property->isOfType(SoVertexProperty::getClassTypeId()) &&
+      property->normal.getNum() > 0)
+    return property->normalBinding.getValue();
+  return SoNormalBindingElement::get(state);
 }
 
 std::string needMore(const std::string& what, long need, long start, long have) {
@@ -141,12 +153,6 @@ std::string nonIndexedDefect(const SoNonIndexedShape* shape, const Counts& count
   return {};
 }
 
-bool boundIndexed(int binding) {
-  return binding == SoMaterialBindingElement::PER_PART_INDEXED ||
-         binding == SoMaterialBindingElement::PER_FACE_INDEXED ||
-         binding == SoMaterialBindingElement::PER_VERTEX_INDEXED;
-}
-
 // What PER_PART and PER_FACE bind to on each of Inventor's indexed shapes, and how many of
 // them its coordIndex holds (Coin 4.0's SoIndexedFaceSet, SoIndexedLineSet and
 // SoIndexedTriangleStripSet); other indexed shapes are checked per index only.
@@ -167,49 +173,73 @@ Parts partsOf(const SoIndexedShape* shape, const IndexRuns& runs) {
   return {};
 }
 
-// The materials an indexed shape reads under `binding`: one per vertex, part or face, in order
-// or through materialIndex (coordIndex in its place for PER_VERTEX_INDEXED; for the other
-// indexed bindings Coin's generatePrimitives or GL rendering dereferences null without one).
-std::string materialDefect(const SoIndexedShape* shape, int binding, const IndexRuns& runs,
-                           long materials) {
+// What a binding names in messages: "materialBinding", "materialIndex", "materials".
+struct Bound {
+  const char* bindingField;
+  const char* indexField;
+  const char* what;
+};
+constexpr Bound kMaterials{"materialBinding", "materialIndex", "materials"};
+constexpr Bound kNormals{"normalBinding", "normalIndex", "normals"};
+
+const char* bindingName(int binding) {
+  using B = SoMaterialBindingElement;  // SoNormalBindingElement's values are the same
+  switch (binding) {
+    case B::PER_PART:
+      return "PER_PART";
+    case B::PER_PART_INDEXED:
+      return "PER_PART_INDEXED";
+    case B::PER_FACE:
+      return "PER_FACE";
+    case B::PER_FACE_INDEXED:
+      return "PER_FACE_INDEXED";
+    case B::PER_VERTEX:
+      return "PER_VERTEX";
+    case B::PER_VERTEX_INDEXED:
+      return "PER_VERTEX_INDEXED";
+    default:
+      return "OVERALL";
+  }
+}
+
+// The `count` values (materials or normals) an indexed shape reads under `binding`: one per
+// vertex, part or face, in order or through `indices` (coordIndex in their place for
+// PER_VERTEX_INDEXED; for the other indexed bindings Coin's generatePrimitives or GL
+// rendering dereferences null without them).
+std::string boundDefect(const SoIndexedShape* shape, int binding, const IndexRuns& runs, long count,
+                        const SoMFInt32& indices, const Bound& bound) {
   using B = SoMaterialBindingElement;
   const Parts parts = partsOf(shape, runs);
-  const SoMFInt32& indices = shape->materialIndex;
-  const bool given = indices.getNum() > 0 && indices[0] >= 0;
+  const bool given = indexGiven(indices);
+  const std::string named = std::string(bound.bindingField) + " " + bindingName(binding);
   switch (binding) {
     case B::PER_VERTEX:
-      return valuesPerUnit("materials", "materialBinding PER_VERTEX", "vertex", runs.vertices,
-                           materials);
+      return valuesPerUnit(bound.what, named.c_str(), "vertex", runs.vertices, count);
     case B::PER_VERTEX_INDEXED:
       if (!given) {
-        std::string defect = indicesInside(shape->coordIndex, "coordIndex", materials, "materials");
+        std::string defect = indicesInside(shape->coordIndex, "coordIndex", count, bound.what);
         return defect.empty() ? defect
-                              : defect +
-                                    " (materialBinding PER_VERTEX_INDEXED without a "
-                                    "materialIndex indexes the materials by coordIndex)";
+                              : defect + " (" + named + " without a " + bound.indexField +
+                                    " indexes the " + bound.what + " by coordIndex)";
       }
-      return indicesPerVertex(shape->coordIndex, indices, "materialIndex", materials, "materials");
+      return indicesPerVertex(shape->coordIndex, indices, bound.indexField, count, bound.what);
     case B::PER_PART:
     case B::PER_FACE: {
       const bool part = binding == B::PER_PART;
       const char* unit = part ? parts.partUnit : parts.faceUnit;
       if (unit == nullptr) return {};
-      return valuesPerUnit("materials",
-                           part ? "materialBinding PER_PART" : "materialBinding PER_FACE", unit,
-                           part ? parts.parts : parts.faces, materials);
+      return valuesPerUnit(bound.what, named.c_str(), unit, part ? parts.parts : parts.faces,
+                           count);
     }
     case B::PER_PART_INDEXED:
     case B::PER_FACE_INDEXED: {
       const bool part = binding == B::PER_PART_INDEXED;
       const char* unit = part ? parts.partUnit : parts.faceUnit;
       if (unit == nullptr)
-        return given ? indicesInside(indices, "materialIndex", materials, "materials")
-                     : std::string();
-      if (!given)
-        return std::string("materialBinding ") + (part ? "PER_PART_INDEXED" : "PER_FACE_INDEXED") +
-               " without a materialIndex (one index per " + unit + ")";
-      return indicesPerUnit(indices, "materialIndex", part ? parts.parts : parts.faces, unit,
-                            materials, "materials");
+        return given ? indicesInside(indices, bound.indexField, count, bound.what) : std::string();
+      if (!given) return named + " without a " + bound.indexField + " (one index per " + unit + ")";
+      return indicesPerUnit(indices, bound.indexField, part ? parts.parts : parts.faces, unit,
+                            count, bound.what);
     }
     default:
       return {};
@@ -224,24 +254,31 @@ std::string indexedDefect(SoCallbackAction* action, const SoIndexedShape* shape,
     return defect;
   SoState* state = action->getState();
   const IndexRuns runs = IndexRuns::of(shape->coordIndex);
+  // Coin's strips and polylines take their first three (two) indices before looking at any:
+  // a shorter one reads coordinate -1 (SoIndexedTriangleStripSet, SoIndexedLineSet).
+  const bool strips = shape->isOfType(SoIndexedTriangleStripSet::getClassTypeId());
+  const bool lines = shape->isOfType(SoIndexedLineSet::getClassTypeId());
+  const long shortest = strips ? 3 : lines ? 2 : 0;
+  if (runs.runs > 0 && runs.shortest < shortest)
+    return std::string(strips ? "strip " : "polyline ") + std::to_string(runs.shortestAt) +
+           " of coordIndex has " + std::to_string(runs.shortest) + " vertices; " +
+           (strips ? "a strip needs at least 3" : "a polyline needs at least 2");
   // Under PER_VERTEX Coin reads one material per vertex, in coordIndex order, whatever the
   // materials in force hold (SGI's indexedTriangleMesh.iv draws its mesh again under a single
   // BaseColor: the colours came from whatever memory followed it, different on each run).
-  if (std::string defect =
-          materialDefect(shape, materialBinding(state, shape), runs, counts.materials);
+  if (std::string defect = boundDefect(shape, materialBinding(state, shape), runs, counts.materials,
+                                       shape->materialIndex, kMaterials);
       !defect.empty())
     return defect;
-  // Normals and texture coordinates are only read under an indexed binding, and only when the
-  // shape gives them values (otherwise Coin uses coordIndex, or generates normals itself).
-  const bool explicitNormals = shape->normalIndex.getNum() > 0 && shape->normalIndex[0] != -1;
-  if (boundIndexed(SoNormalBindingElement::get(state)) && explicitNormals && counts.normals > 0)
-    if (std::string defect =
-            indicesInside(shape->normalIndex, "normalIndex", counts.normals, "normals");
+  // Normals in force are read as bound (without any, Coin generates its own and binds them
+  // itself).
+  if (counts.normals > 0)
+    if (std::string defect = boundDefect(shape, normalBinding(state, shape), runs, counts.normals,
+                                         shape->normalIndex, kNormals);
         !defect.empty())
       return defect;
-  const bool explicitTexture =
-      shape->textureCoordIndex.getNum() > 0 && shape->textureCoordIndex[0] != -1;
-  if (explicitTexture && counts.textureCoordinates > 0)
+  // Texture coordinates given are read per vertex, through textureCoordIndex or coordIndex.
+  if (indexGiven(shape->textureCoordIndex) && counts.textureCoordinates > 0)
     if (std::string defect = indicesInside(shape->textureCoordIndex, "textureCoordIndex",
                                            counts.textureCoordinates, "texture coordinates");
         !defect.empty())
@@ -420,11 +457,16 @@ SoCallbackAction::Response skipDefectiveShape(void*, SoCallbackAction* action, c
 }
 
 std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& file) {
-  struct Found {
-    // The path to where the shape is drawn (for a VRML97 geometry Coin's path ends at its
-    // VRMLShape), the shape, its defect.
-    std::vector<std::tuple<SoPath*, const SoNode*, std::string>> shapes;
-  } found;
+  // Per defective shape found: the node drawn (the shape, or for a VRML97 geometry its
+  // VRMLShape, where Coin's path ends), its parent, the shape and its defect, all held (paths
+  // would be truncated, and the nodes freed, by the first removal).
+  struct Defective {
+    CoinRef<SoNode> drawn;
+    CoinRef<SoNode> parent;
+    CoinRef<SoNode> shape;
+    std::string defect;
+  };
+  std::vector<Defective> found;
   SoCallbackAction action;
   // No primitive callbacks are registered, so Coin generates no primitives while looking.
   action.addPreCallback(
@@ -432,9 +474,11 @@ std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& 
       [](void* data, SoCallbackAction* action, const SoNode* node) {
         std::string defect = shapeDefect(action, static_cast<const SoShape*>(node));
         if (!defect.empty()) {
-          auto* path = action->getCurPath()->copy();
-          path->ref();
-          static_cast<Found*>(data)->shapes.emplace_back(path, node, std::move(defect));
+          const SoPath* path = action->getCurPath();
+          SoNode* parent = path->getLength() >= 2 ? path->getNodeFromTail(1) : nullptr;
+          static_cast<std::vector<Defective>*>(data)->push_back(
+              {CoinRef<SoNode>(path->getTail()), CoinRef<SoNode>(parent),
+               CoinRef<SoNode>(const_cast<SoNode*>(node)), std::move(defect)});
         }
         return SoCallbackAction::CONTINUE;
       },
@@ -442,19 +486,22 @@ std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& 
   action.apply(root);
 
   std::vector<std::string> warnings;
-  // Latest first, so that the child indices of paths found earlier stay valid.
-  for (auto it = found.shapes.rbegin(); it != found.shapes.rend(); ++it) {
-    auto& [path, shape, defect] = *it;
-    SoNode* parent = path->getLength() >= 2 ? path->getNodeFromTail(1) : nullptr;
-    std::string line = file + ": warning: " + describeNode(shape) + ": " + defect;
+  // A shape under a group that is used twice is found once per path, at the same child of the
+  // same parent: it is removed where it still is (findChild), and named once.
+  std::set<const SoNode*> named;
+  for (const Defective& defective : found) {
+    std::string line =
+        file + ": warning: " + describeNode(defective.shape.get()) + ": " + defective.defect;
+    SoNode* parent = defective.parent.get();
     if (parent != nullptr && parent->isOfType(SoGroup::getClassTypeId())) {
-      static_cast<SoGroup*>(parent)->removeChild(path->getIndexFromTail(0));
+      auto* group = static_cast<SoGroup*>(parent);
+      const int child = group->findChild(defective.drawn.get());
+      if (child >= 0) group->removeChild(child);
       line += "; the shape is left out";
     } else {
       line += "; it casts no shadow";
     }
-    warnings.insert(warnings.begin(), line);
-    path->unref();
+    if (named.insert(defective.shape.get()).second) warnings.push_back(line);
   }
   return warnings;
 }

@@ -38,12 +38,6 @@ Values valuesOf(const SoSFNode& field, const char* fieldName, Field Node::*value
   return result;
 }
 
-// An index field as Coin reads it: absent when empty or starting with -1 (Coin then reads
-// coordIndex, or the face's number, in its place).
-bool given(const SoMFInt32& indices) {
-  return indices.getNum() > 0 && indices[0] >= 0;
-}
-
 // Values read per vertex or per face (polyline) through `indices` where given, otherwise
 // through coordIndex (per vertex) or by the face's number (per face).
 std::string boundValuesDefect(const SoMFInt32& coordIndex, const IndexRuns& runs, bool perVertex,
@@ -65,6 +59,8 @@ std::string faceSetDefect(const SoVRMLIndexedFaceSet* set) {
   const Values coords = valuesOf(set->coord, "coord", &SoVRMLCoordinate::point);
   if (!coords.wrongType.empty()) return coords.wrongType;
   const IndexRuns runs = IndexRuns::of(set->coordIndex);
+  if (coords.count < 0 && set->coordIndex.getNum() > 0)
+    return "coordIndex indexes coordinates, but the shape has no coord node";
   if (std::string defect =
           indicesInside(set->coordIndex, "coordIndex", std::max(coords.count, 0L), "coordinates");
       !defect.empty())
@@ -79,17 +75,19 @@ std::string faceSetDefect(const SoVRMLIndexedFaceSet* set) {
   if (colours.count >= 0) {
     const bool perVertex = set->colorPerVertex.getValue();
     if (std::string defect = boundValuesDefect(set->coordIndex, runs, perVertex, "colorPerVertex",
-                                               given(set->colorIndex), set->colorIndex,
+                                               indexGiven(set->colorIndex), set->colorIndex,
                                                "colorIndex", colours.count, "colours", "face");
         !defect.empty())
       return defect;
     // Coin tessellates a non-convex face through a cache that reads texCoordIndex in place
     // of the colours' coordIndex (SoVRMLIndexedFaceSet, Coin 4.0).
-    if (perVertex && !given(set->colorIndex) && !set->convex.getValue() &&
-        given(set->texCoordIndex))
-      if (std::string defect = indicesInside(set->texCoordIndex, "texCoordIndex", colours.count,
-                                             "colours (Coin reads them through texCoordIndex "
-                                             "for a face that is not convex)");
+    if (perVertex && !indexGiven(set->colorIndex) && !set->convex.getValue() && runs.longest > 3 &&
+        indexGiven(set->texCoordIndex))
+      if (std::string defect =
+              indicesPerVertex(set->coordIndex, set->texCoordIndex, "texCoordIndex", colours.count,
+                               "colours (Coin reads them through texCoordIndex "
+                               "where a face of more than 3 vertices is not "
+                               "convex)");
           !defect.empty())
         return defect;
   }
@@ -98,14 +96,14 @@ std::string faceSetDefect(const SoVRMLIndexedFaceSet* set) {
   if (normals.count > 0)  // none: Coin generates them and ignores normalIndex
     if (std::string defect =
             boundValuesDefect(set->coordIndex, runs, set->normalPerVertex.getValue(),
-                              "normalPerVertex", given(set->normalIndex), set->normalIndex,
+                              "normalPerVertex", indexGiven(set->normalIndex), set->normalIndex,
                               "normalIndex", normals.count, "normals", "face");
         !defect.empty())
       return defect;
   const Values texture = valuesOf(set->texCoord, "texCoord", &SoVRMLTextureCoordinate::point);
   if (!texture.wrongType.empty()) return texture.wrongType;
   if (texture.count > 0)
-    return boundValuesDefect(set->coordIndex, runs, true, "", given(set->texCoordIndex),
+    return boundValuesDefect(set->coordIndex, runs, true, "", indexGiven(set->texCoordIndex),
                              set->texCoordIndex, "texCoordIndex", texture.count,
                              "texture coordinates", "face");
   return {};
@@ -115,6 +113,8 @@ std::string lineSetDefect(const SoVRMLIndexedLineSet* set) {
   const Values coords = valuesOf(set->coord, "coord", &SoVRMLCoordinate::point);
   if (!coords.wrongType.empty()) return coords.wrongType;
   const IndexRuns runs = IndexRuns::of(set->coordIndex);
+  if (coords.count < 0 && set->coordIndex.getNum() > 0)
+    return "coordIndex indexes coordinates, but the shape has no coord node";
   if (std::string defect =
           indicesInside(set->coordIndex, "coordIndex", std::max(coords.count, 0L), "coordinates");
       !defect.empty())
@@ -144,9 +144,6 @@ std::string pointSetDefect(const SoVRMLPointSet* set) {
 
 std::string elevationGridDefect(const SoVRMLElevationGrid* grid) {
   const long x = grid->xDimension.getValue(), z = grid->zDimension.getValue();
-  if (x < 0 || z < 0)
-    return "xDimension " + std::to_string(x) + " x zDimension " + std::to_string(z) +
-           " is negative";
   if (x < 2 || z < 2) return {};  // Coin draws nothing
   const long vertices = x * z, quads = (x - 1) * (z - 1);
   if (std::string defect = valuesPerUnit("heights", "xDimension x zDimension", "vertex", vertices,
@@ -159,8 +156,10 @@ std::string elevationGridDefect(const SoVRMLElevationGrid* grid) {
   // so a grid reads as many colours as vertices either way.
   if (colours.count >= 0)
     if (std::string defect =
-            valuesPerUnit("colours", "an elevation grid (Coin reads them by vertex)", "vertex",
-                          vertices, colours.count);
+            valuesPerUnit("colours",
+                          "Coin's GL rendering of an elevation grid (by vertex, even with "
+                          "colorPerVertex FALSE)",
+                          "vertex", vertices, colours.count);
         !defect.empty())
       return defect;
   const Values normals = valuesOf(grid->normal, "normal", &SoVRMLNormal::vector);

@@ -112,8 +112,8 @@ TEST(SceneFileCheck, FilesIncludingThemselvesDirectlyOrThroughOthersAreRefused) 
       "a.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"b.iv\" }\n}\n");
   const std::string b = test::writeOutputFile(
       "b.iv", "#Inventor V2.1 ascii\nSeparator {\n\n  File { name \"a.iv\" }\n}\n");
-  EXPECT_EQ(checkError(a), b + ":4: error: File a.iv includes a file that includes it (the scene "
-                               "would never end)");
+  EXPECT_EQ(checkError(a), b + ":4: error: File name a.iv: includes a file that includes it "
+                               "(the scene would never end)");
   const std::string twice =
       test::writeOutputFile("twice.iv",
                             "#Inventor V2.1 ascii\nSeparator {\n  File { name \"leaf.iv\" }\n"
@@ -195,7 +195,7 @@ TEST(SceneFileCheck, AVrmlInlineOfItselfIsRefusedAsAFileOfItselfIs) {
   const std::string path = test::writeOutputFile(
       "inline_self.iv", "#Inventor V2.1 ascii\nVRMLInline { url [ \"inline_self.iv\" ] }\n");
   EXPECT_EQ(checkError(path), path +
-                                  ":2: error: VRMLInline inline_self.iv includes itself (the "
+                                  ":2: error: VRMLInline url inline_self.iv: includes itself (the "
                                   "scene would never end)");
 }
 
@@ -251,6 +251,64 @@ TEST(SceneFileCheck, InlineImagesLargerThanTheFileAreRefusedBeforeCoinAllocatesT
       "Cube { }\n");
   EXPECT_EQ(checkError(fits), "");
   EXPECT_TRUE(static_cast<bool>(loadScene(fits).root));
+}
+
+// Review of issue 35: a VRML97 file spells the nodes without "VRML" (Coin adds it), and every
+// check above was passed by. Only url[0] is read, so a fallback name is not refused.
+TEST(SceneFileCheck, VrmlFilesAreCheckedUnderTheirOwnNodeNames) {
+  const std::string inlined =
+      test::writeOutputFile("inline.wrl", "#VRML V2.0 utf8\nInline { url [ \"%s%n.wrl\" ] }\n");
+  EXPECT_EQ(checkError(inlined), inlined +
+                                     ":2: error: VRMLInline url %s%n.wrl: no such file beside "
+                                     "inline.wrl, and Coin cannot report a name holding '%' "
+                                     "(rename the file)");
+  const std::string self =
+      test::writeOutputFile("self.wrl", "#VRML V2.0 utf8\nInline { url \"self.wrl\" }\n");
+  EXPECT_NE(checkError(self).find("includes itself"), std::string::npos);
+  const std::string device = test::writeOutputFile(
+      "device.wrl",
+      "#VRML V2.0 utf8\nShape { appearance Appearance { texture ImageTexture { "
+      "url \"/dev/zero\" } } geometry Box { } }\n");
+  EXPECT_NE(checkError(device).find("ImageTexture url /dev/zero: not a regular file"),
+            std::string::npos)
+      << checkError(device);
+  const std::string pixels = test::writeOutputFile(
+      "pixels.wrl",
+      "#VRML V2.0 utf8\nShape { appearance Appearance { texture PixelTexture { "
+      "image 50000 50000 3 0xff } } geometry Box { } }\n");
+  EXPECT_NE(checkError(pixels).find("VRMLPixelTexture image declares 50000 x 50000 pixels"),
+            std::string::npos)
+      << checkError(pixels);
+  const std::string fallback = test::writeOutputFile(
+      "fallback.wrl", "#VRML V2.0 utf8\nInline { url [ \"fallback_part.wrl\", \"%s.wrl\" ] }\n");
+  EXPECT_EQ(checkError(fallback), "");
+}
+
+// The size is read only while the tokens are numbers (hexadecimal too); anything else ends it
+// and is read as usual, so braces and DEF names stay in step.
+TEST(SceneFileCheck, AnInlineImageSizeEndsWhereItsNumbersEnd) {
+  const std::string hex = test::writeOutputFile(
+      "hex.iv", "#Inventor V2.1 ascii\nTexture2 { image 0x10000 0x10000 3 0xff }\n");
+  EXPECT_NE(checkError(hex).find("declares 65536 x 65536 pixels"), std::string::npos)
+      << checkError(hex);
+  const std::string connected =
+      test::writeOutputFile("connected.iv",
+                            "#Inventor V2.1 ascii\nDEF A Separator {\n  Texture2 { image 1 }\n}\n"
+                            "DEF B Separator { USE A }\n");
+  EXPECT_EQ(checkError(connected), "");
+}
+
+// More of the nodes that name files: a bump map, a cube map, shader sources.
+TEST(SceneFileCheck, BumpMapsCubeMapsAndShaderSourcesNameOnlyRegularFiles) {
+  for (const std::string node :
+       {"BumpMap { filename \"/dev/zero\" }", "TextureCubeMap { filenames [ \"/dev/zero\" ] }",
+        "ShaderProgram { shaderObject [ FragmentShader { sourceProgram \"/dev/zero\" } ] }"}) {
+    SCOPED_TRACE(node);
+    const std::string path =
+        test::writeOutputFile("named.iv", "#Inventor V2.1 ascii\n" + node + "\n");
+    EXPECT_NE(checkError(path).find("/dev/zero: not a regular file"), std::string::npos)
+        << checkError(path);
+  }
 }
 
 }  // namespace

@@ -102,7 +102,7 @@ const Case kCases[] = {
     {"indexed_per_face_indexed_short",
      "Material { diffuseColor [ 1 0 0, 0 1 0 ] } MaterialBinding { value PER_FACE_INDEXED } "
      "IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 2, 1 ] materialIndex [ 1 ] }",
-     "IndexedFaceSet: materialIndex holds 1 entries; one is read per face, 2 in all"},
+     "IndexedFaceSet: materialIndex holds 1 entry; one is read per face, 2 in all"},
     {"indexed_line_per_part",
      "MaterialBinding { value PER_PART } IndexedLineSet { coordIndex [ 0, 1, 2 ] }",
      "IndexedLineSet: materialBinding PER_PART reads one of the materials per segment, 2 in all; "
@@ -112,6 +112,26 @@ const Case kCases[] = {
      "1, 0 ] }",
      "IndexedTriangleStripSet: materialBinding PER_FACE reads one of the materials per "
      "triangle, 2 in all; there are 1"},
+    // Normals in force are read as bound, as materials are (review of issue 35: under
+    // PER_FACE_INDEXED without a normalIndex Coin's generatePrimitives dereferences null).
+    {"normals_per_face_indexed_without_index",
+     "Normal { vector [ 0 0 1 ] } NormalBinding { value PER_FACE_INDEXED } IndexedFaceSet { "
+     "coordIndex [ 0, 1, 2, -1 ] }",
+     "IndexedFaceSet: normalBinding PER_FACE_INDEXED without a normalIndex (one index per face)"},
+    {"normals_by_coordinates",
+     "Normal { vector [ 0 0 1, 0 0 1 ] } IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }",
+     "IndexedFaceSet: coordIndex[2] 2 is outside the 2 normals (normalBinding "
+     "PER_VERTEX_INDEXED without a normalIndex indexes the normals by coordIndex)"},
+    {"normals_per_face",
+     "Normal { vector [ 0 0 1 ] } NormalBinding { value PER_FACE } IndexedFaceSet { coordIndex [ "
+     "0, 1, 2, -1, 0, 2, 1 ] }",
+     "IndexedFaceSet: normalBinding PER_FACE reads one of the normals per face, 2 in all; there "
+     "are 1"},
+    // Strips and polylines shorter than Coin takes before looking (it reads coordinate -1).
+    {"indexed_strip_short", "IndexedTriangleStripSet { coordIndex [ 0, 1, 2, -1, 0, 1 ] }",
+     "IndexedTriangleStripSet: strip 1 of coordIndex has 2 vertices; a strip needs at least 3"},
+    {"indexed_line_short", "IndexedLineSet { coordIndex [ 0, 1, -1, 2, -1 ] }",
+     "IndexedLineSet: polyline 1 of coordIndex has 1 vertices; a polyline needs at least 2"},
     // VRML97 shapes (issue 35: every command segfaulted in Coin's generatePrimitives,
     // getMaterial or computeBBox).
     {"vrml_face_coordinates",
@@ -120,7 +140,7 @@ const Case kCases[] = {
      "VRMLIndexedFaceSet: coordIndex[6] 9 is outside the 3 coordinates"},
     {"vrml_face_without_coord",
      "VRMLShape { geometry VRMLIndexedFaceSet { coordIndex [ 0, 1, 2 ] } }",
-     "VRMLIndexedFaceSet: coordIndex[0] 0 is outside the 0 coordinates"},
+     "VRMLIndexedFaceSet: coordIndex indexes coordinates, but the shape has no coord node"},
     {"vrml_face_short",
      "VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 "
      "1 0 ] } coordIndex [ 0, 1, 2, -1, 0, 1, -1 ] } }",
@@ -177,9 +197,6 @@ const Case kCases[] = {
      "} }",
      "VRMLElevationGrid: xDimension x zDimension reads one of the heights per vertex, 9 in all; "
      "there are 4"},
-    {"vrml_elevation_negative",
-     "VRMLShape { geometry VRMLElevationGrid { xDimension -2 zDimension 3 } }",
-     "VRMLElevationGrid: xDimension -2 x zDimension 3 is negative"},
     {"vrml_extrusion_one_point", "VRMLShape { geometry VRMLExtrusion { spine [ 0 0 0 ] } }",
      "VRMLExtrusion: spine holds 1 point; an extrusion needs at least 2"},
     // Past the coordinates Embree traces (issue 35: ray.valid() aborted the reference and
@@ -316,11 +333,35 @@ TEST(ShapeValidation, ValidVrmlShapesUsingEveryIndexAreKept) {
       << "VRMLShape { geometry VRMLElevationGrid { xDimension 2 zDimension 2 height [ 0, 1, 0, 1 ] "
          "color VRMLColor { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] } } }\n"
       << "VRMLShape { geometry VRMLExtrusion { } }\n"
+      // Not convex, but no face of more than 3 vertices: Coin reads the colours through
+      // coordIndex, not texCoordIndex (review of issue 35: this mesh was dropped).
+      << "VRMLShape { geometry VRMLIndexedFaceSet { " << coords
+      << "convex FALSE color VRMLColor { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] } "
+         "texCoord VRMLTextureCoordinate { point [ 0 0, 1 0, 0 1, 1 1, 0.5 0.5, 0.2 0.2 ] } "
+         "texCoordIndex [ 5, 4, 3, -1, 2, 1, 0, -1 ] coordIndex [ 0, 1, 2, -1, 1, 3, 2, -1 ] } }\n"
       // Far, but within what Embree traces.
       << "Separator { Translation { translation 1e18 0 0 } Cube { } }\n}\n";
   const LoadedScene scene = loadScene(path);
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
-  EXPECT_EQ(countShapes(scene.root.get()), 7);
+  EXPECT_EQ(countShapes(scene.root.get()), 8);
+}
+
+// A defective shape inside a group used twice is found once per path at the same child: it is
+// removed once, named once, and its valid sibling stays (review of issue 35: the second
+// removal took the sibling).
+TEST(ShapeValidation, ADefectiveShapeInAGroupUsedTwiceIsRemovedOnceAndItsSiblingStays) {
+  init();
+  const std::string path = test::outputDir() + "/shared.iv";
+  std::ofstream(path)
+      << "#Inventor V2.1 ascii\nSeparator {\n"
+         "  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+         "  DEF Shared Group { FaceSet { numVertices 7 } FaceSet { numVertices 3 } }\n"
+         "  Translation { translation 2 0 0 }\n  USE Shared\n}\n";
+  const LoadedScene scene = loadScene(path);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  // The valid face, drawn twice through the shared group.
+  EXPECT_EQ(countShapes(scene.root.get()), 2);
+  EXPECT_EQ(extractShadowCasters(scene.root.get()).triangleCount(), 2u);
 }
 
 // Applications hand the group graphs that never went through loadScene: the casters'
