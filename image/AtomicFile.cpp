@@ -7,11 +7,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 
 namespace ivshadow {
 namespace {
@@ -69,10 +71,26 @@ void checkReplaceable(const std::string& path, const std::filesystem::path& targ
 AtomicFile::AtomicFile(std::string path) : path_(followLinks(path).string()) {
   writeThrough_ = writesThrough(path_);
   temporary_ = writeThrough_ ? path_ : temporaryNameFor(path_);
+  // Opening a FIFO for writing waits for a reader, and open() restarts after a signal
+  // handler: with none, the command hung for good, deaf to SIGTERM. Opened without waiting,
+  // it is tried for kFifoReaderWait (a reader started beside the command may open it a little
+  // later), then refused; once open it is held until the writes are done, so that the reader
+  // sees no end of file between this probe and the writer's own open().
+  struct stat status {};
+  if (writeThrough_ && ::stat(path_.c_str(), &status) == 0 && S_ISFIFO(status.st_mode)) {
+    const auto until = std::chrono::steady_clock::now() + kFifoReaderWait;
+    while ((fifoHold_ = ::open(path_.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC)) < 0 &&
+           errno == ENXIO && std::chrono::steady_clock::now() < until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (fifoHold_ < 0 && errno == ENXIO)
+      throw InputError(path + ": error: a FIFO that no process opened for reading within " +
+                       std::to_string(kFifoReaderWait.count()) + " s");
+  }
 }
 
 AtomicFile::~AtomicFile() {
   if (!committed_ && !writeThrough_) std::remove(temporary_.c_str());
+  if (fifoHold_ >= 0) ::close(fifoHold_);
 }
 
 void AtomicFile::commit() {

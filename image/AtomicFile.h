@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <string>
 
 namespace ivshadow {
@@ -9,9 +10,13 @@ namespace ivshadow {
 // error, an exception, Ctrl-C handled by the caller) is removed, so no partial output is ever
 // left under the final name. A symbolic link is followed and its
 // target replaced; a device, pipe or socket (`/dev/null`, `/dev/stdout`) is written to in
-// place, since replacing it (as root) would destroy it.
+// place, since replacing it (as root) would destroy it; a FIFO that no process opens for
+// reading within kFifoReaderWait is refused (InputError) rather than waited on for good.
 class AtomicFile {
  public:
+  // How long a FIFO output is waited on for a reader before it is refused.
+  static constexpr std::chrono::seconds kFifoReaderWait{5};
+
   explicit AtomicFile(std::string path);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
@@ -37,6 +42,7 @@ class AtomicFile {
   std::string temporary_;
   bool committed_ = false;
   bool writeThrough_ = false;
+  int fifoHold_ = -1;  // a FIFO output held open while it is written (see the constructor)
 };
 
 // Writes `text` to `path` through an AtomicFile.

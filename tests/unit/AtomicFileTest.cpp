@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <thread>
 
 namespace ivshadow {
@@ -103,6 +105,25 @@ TEST(AtomicFile, AFileThatMayNotBeWrittenIsRefusedAndAReplacedOneKeepsItsOwnerAn
     EXPECT_EQ(info.st_uid, 65534u);
     EXPECT_EQ(info.st_gid, 65534u);
   }
+}
+
+// Issue 35: an output that is a FIFO with no reader blocked the command forever (and SIGTERM
+// with it: open() restarts after the handler). Refused after kFifoReaderWait; with a reader
+// (here one that opens it a moment later), written whole, the reader seeing no end of file
+// before the writer is done.
+TEST(AtomicFile, AFifoNobodyReadsIsRefusedAndOneBeingReadIsWrittenWhole) {
+  const std::string fifo = test::outputDir() + "/out.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THROW(writeTextFileAtomically(fifo, "lost"), InputError);
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    received.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  });
+  const std::string text(100000, 'x');
+  writeTextFileAtomically(fifo, text);
+  reader.join();
+  EXPECT_EQ(received.size(), text.size());
 }
 
 TEST(CommandPaths, TheInputIsNeverAnOutputWhateverTheSpelling) {
