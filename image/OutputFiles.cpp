@@ -29,11 +29,15 @@ void OutputFiles::addText(const std::string& path, std::string text) {
 }
 
 bool OutputFiles::commit(const std::atomic<bool>* cancel) {
-  std::vector<std::unique_ptr<AtomicFile>> files;
-  for (const Output& output : outputs_) files.push_back(std::make_unique<AtomicFile>(output.path));
+  std::vector<std::unique_ptr<AtomicFile>> files(outputs_.size());
+  // Each output's AtomicFile is made just before it is written: a FIFO waits there for its
+  // reader, after the temporaries are on disk.
   for (bool inPlace : {false, true})
-    for (std::size_t i = 0; i < outputs_.size(); ++i)
-      if (files[i]->inPlace() == inPlace) outputs_[i].write(files[i]->temporaryPath());
+    for (std::size_t i = 0; i < outputs_.size(); ++i) {
+      if (AtomicFile::writesInPlace(outputs_[i].path) != inPlace) continue;
+      files[i] = std::make_unique<AtomicFile>(outputs_[i].path);
+      outputs_[i].write(files[i]->temporaryPath());
+    }
   // The files not committed are removed with their AtomicFile.
   if (cancel != nullptr && cancel->load()) return false;
   for (const std::unique_ptr<AtomicFile>& file : files) file->commit();

@@ -34,6 +34,13 @@ bool indexGiven(const SoMFInt32& indices) {
   return indices.getNum() > 0 && indices[0] >= 0;
 }
 
+std::string shortRun(const IndexRuns& runs, long shortest, const char* run) {
+  if (runs.runs == 0 || runs.shortest >= shortest) return {};
+  return std::string(run) + " " + std::to_string(runs.shortestAt) + " of coordIndex has " +
+         std::to_string(runs.shortest) + " vertices; a " + run + " needs at least " +
+         std::to_string(shortest);
+}
+
 namespace {
 std::string entries(long count) {
   return std::to_string(count) + (count == 1 ? " entry" : " entries");

@@ -24,6 +24,10 @@ struct IndexRuns {
 // then reads coordIndex, or the values in order, in its place).
 bool indexGiven(const SoMFInt32& indices);
 
+// A run of `runs` shorter than `shortest` indices: "RUN N of coordIndex has K vertices; a RUN
+// needs at least SHORTEST", or empty.
+std::string shortRun(const IndexRuns& runs, long shortest, const char* run);
+
 // Each entry of `indices` other than -1 inside 0..count-1, or what is not: "NAME[I] V is
 // outside the COUNT WHAT".
 std::string indicesInside(const SoMFInt32& indices, const char* name, long count, const char* what);

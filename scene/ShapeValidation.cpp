@@ -258,11 +258,13 @@ std::string indexedDefect(SoCallbackAction* action, const SoIndexedShape* shape,
   // a shorter one reads coordinate -1 (SoIndexedTriangleStripSet, SoIndexedLineSet).
   const bool strips = shape->isOfType(SoIndexedTriangleStripSet::getClassTypeId());
   const bool lines = shape->isOfType(SoIndexedLineSet::getClassTypeId());
-  const long shortest = strips ? 3 : lines ? 2 : 0;
-  if (runs.runs > 0 && runs.shortest < shortest)
-    return std::string(strips ? "strip " : "polyline ") + std::to_string(runs.shortestAt) +
-           " of coordIndex has " + std::to_string(runs.shortest) + " vertices; " +
-           (strips ? "a strip needs at least 3" : "a polyline needs at least 2");
+  if (std::string defect = shortRun(runs,
+                                    strips  ? 3
+                                    : lines ? 2
+                                            : 0,
+                                    strips ? "strip" : "polyline");
+      !defect.empty())
+    return defect;
   // Under PER_VERTEX Coin reads one material per vertex, in coordIndex order, whatever the
   // materials in force hold (SGI's indexedTriangleMesh.iv draws its mesh again under a single
   // BaseColor: the colours came from whatever memory followed it, different on each run).
@@ -463,6 +465,7 @@ std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& 
   struct Defective {
     CoinRef<SoNode> drawn;
     CoinRef<SoNode> parent;
+    int child = -1;  // drawn's index in parent
     CoinRef<SoNode> shape;
     std::string defect;
   };
@@ -477,7 +480,7 @@ std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& 
           const SoPath* path = action->getCurPath();
           SoNode* parent = path->getLength() >= 2 ? path->getNodeFromTail(1) : nullptr;
           static_cast<std::vector<Defective>*>(data)->push_back(
-              {CoinRef<SoNode>(path->getTail()), CoinRef<SoNode>(parent),
+              {CoinRef<SoNode>(path->getTail()), CoinRef<SoNode>(parent), path->getIndexFromTail(0),
                CoinRef<SoNode>(const_cast<SoNode*>(node)), std::move(defect)});
         }
         return SoCallbackAction::CONTINUE;
@@ -486,22 +489,26 @@ std::vector<std::string> removeDefectiveShapes(SoNode* root, const std::string& 
   action.apply(root);
 
   std::vector<std::string> warnings;
-  // A shape under a group that is used twice is found once per path, at the same child of the
-  // same parent: it is removed where it still is (findChild), and named once.
+  // Latest first, so that the child indices found earlier stay valid. A shape under a group
+  // that is used twice is found once per path at the same child of the same parent: removed
+  // the first time, its place then holds a sibling, which stays. A shape used twice in one
+  // group, valid in one place only, is removed only where it is defective. Each is named once.
   std::set<const SoNode*> named;
-  for (const Defective& defective : found) {
+  for (auto it = found.rbegin(); it != found.rend(); ++it) {
+    const Defective& defective = *it;
     std::string line =
         file + ": warning: " + describeNode(defective.shape.get()) + ": " + defective.defect;
     SoNode* parent = defective.parent.get();
     if (parent != nullptr && parent->isOfType(SoGroup::getClassTypeId())) {
       auto* group = static_cast<SoGroup*>(parent);
-      const int child = group->findChild(defective.drawn.get());
-      if (child >= 0) group->removeChild(child);
+      if (defective.child < group->getNumChildren() &&
+          group->getChild(defective.child) == defective.drawn.get())
+        group->removeChild(defective.child);
       line += "; the shape is left out";
     } else {
       line += "; it casts no shadow";
     }
-    if (named.insert(defective.shape.get()).second) warnings.push_back(line);
+    if (named.insert(defective.shape.get()).second) warnings.insert(warnings.begin(), line);
   }
   return warnings;
 }

@@ -55,20 +55,27 @@ std::string boundValuesDefect(const SoMFInt32& coordIndex, const IndexRuns& runs
                        unit, runs.runs, count);
 }
 
-std::string faceSetDefect(const SoVRMLIndexedFaceSet* set) {
+// The coordinates an indexed VRML97 shape reads: its coord node's points, through coordIndex,
+// in runs (faces, polylines) of at least `shortest` indices.
+// (The face set and the line set declare the same fields on different bases.)
+template <typename Set>
+std::string coordinatesDefect(const Set* set, const IndexRuns& runs, long shortest,
+                              const char* run) {
   const Values coords = valuesOf(set->coord, "coord", &SoVRMLCoordinate::point);
   if (!coords.wrongType.empty()) return coords.wrongType;
-  const IndexRuns runs = IndexRuns::of(set->coordIndex);
   if (coords.count < 0 && set->coordIndex.getNum() > 0)
     return "coordIndex indexes coordinates, but the shape has no coord node";
   if (std::string defect =
           indicesInside(set->coordIndex, "coordIndex", std::max(coords.count, 0L), "coordinates");
       !defect.empty())
     return defect;
+  return shortRun(runs, shortest, run);
+}
+
+std::string faceSetDefect(const SoVRMLIndexedFaceSet* set) {
+  const IndexRuns runs = IndexRuns::of(set->coordIndex);
   // generatePrimitives takes three indices of every face before looking at any.
-  if (runs.runs > 0 && runs.shortest < 3)
-    return "face " + std::to_string(runs.shortestAt) + " of coordIndex has " +
-           std::to_string(runs.shortest) + " vertices; a face needs at least 3";
+  if (std::string defect = coordinatesDefect(set, runs, 3, "face"); !defect.empty()) return defect;
 
   const Values colours = valuesOf(set->color, "color", &SoVRMLColor::color);
   if (!colours.wrongType.empty()) return colours.wrongType;
@@ -110,18 +117,9 @@ std::string faceSetDefect(const SoVRMLIndexedFaceSet* set) {
 }
 
 std::string lineSetDefect(const SoVRMLIndexedLineSet* set) {
-  const Values coords = valuesOf(set->coord, "coord", &SoVRMLCoordinate::point);
-  if (!coords.wrongType.empty()) return coords.wrongType;
   const IndexRuns runs = IndexRuns::of(set->coordIndex);
-  if (coords.count < 0 && set->coordIndex.getNum() > 0)
-    return "coordIndex indexes coordinates, but the shape has no coord node";
-  if (std::string defect =
-          indicesInside(set->coordIndex, "coordIndex", std::max(coords.count, 0L), "coordinates");
-      !defect.empty())
+  if (std::string defect = coordinatesDefect(set, runs, 2, "polyline"); !defect.empty())
     return defect;
-  if (runs.runs > 0 && runs.shortest < 2)
-    return "polyline " + std::to_string(runs.shortestAt) + " of coordIndex has " +
-           std::to_string(runs.shortest) + " vertices; a polyline needs at least 2";
   const Values colours = valuesOf(set->color, "color", &SoVRMLColor::color);
   if (!colours.wrongType.empty()) return colours.wrongType;
   if (colours.count < 0) return {};
