@@ -31,10 +31,10 @@ void GroupBounce::place(const BounceSettings& settings, const GroupContents& con
   const auto start = std::chrono::steady_clock::now();
   // Coin sends these to every GL light it turns on (SoEnvironmentElement): constant, linear,
   // quadratic in reverse order. An environment inside the group is traversed after this.
+  const CoinRef<SoPath> environment = contents.environmentPath();
   const SbVec3f attenuation =
-      contents.environmentPath()
-          ? static_cast<const SoEnvironment*>(contents.environmentPath()->getTail())
-                ->attenuation.getValue()
+      environment
+          ? static_cast<const SoEnvironment*>(environment->getTail())->attenuation.getValue()
           : SoEnvironmentElement::getLightAttenuation(state);
   std::vector<BounceSource> sources;
   for (std::size_t slot = 0; slot < std::min(maps.size(), contents.lights().size()); ++slot) {
@@ -58,14 +58,16 @@ void GroupBounce::place(const BounceSettings& settings, const GroupContents& con
   for (const BounceLight& light : lights_.lights) {
     packed_.insert(packed_.end(), {light.position.x, light.position.y, light.position.z, 0.0f});
     packed_.insert(packed_.end(), {light.normal.x, light.normal.y, light.normal.z, 0.0f});
-    packed_.insert(packed_.end(), {light.flux.x, light.flux.y, light.flux.z, light.discRadiusSquared});
+    packed_.insert(packed_.end(),
+                   {light.flux.x, light.flux.y, light.flux.z, light.discRadiusSquared});
   }
   if (pointsCastersVersion_ != castersVersion || points_.empty()) {
     points_ = opaquePointPool(casters, kIsmPointPool);
     pointsCastersVersion_ = castersVersion;
   }
   const SbBox3f& bounds = casters.triangles().bounds;
-  lift_ = bounds.isEmpty() ? 0.0f : kBounceLiftFraction * (bounds.getMax() - bounds.getMin()).length();
+  lift_ =
+      bounds.isEmpty() ? 0.0f : kBounceLiftFraction * (bounds.getMax() - bounds.getMin()).length();
   ++version_;
   statistics.bounceLights = int(lights_.lights.size());
   statistics.bounceSamples = lights_.samples;

@@ -20,13 +20,13 @@
 namespace ivshadow {
 namespace {
 
-// A copy of the path to the last node of `type` under `root` that a traversal reaches.
-CoinRef<SoPath> lastPathTo(SoNode* root, SoType type) {
+// The way to the last node of `type` under `root` that a traversal reaches.
+PathBelow lastPathTo(SoNode* root, SoType type) {
   SoSearchAction search;
   search.setType(type);
   search.setInterest(SoSearchAction::LAST);
   search.apply(root);
-  return CoinRef<SoPath>(search.getPath() ? search.getPath()->copy() : nullptr);
+  return PathBelow(search.getPath());
 }
 
 }  // namespace
@@ -88,7 +88,7 @@ void GroupContents::findLights() {
       return;
     }
     Light entry;
-    entry.path = CoinRef<SoPath>(path.copy());
+    entry.path = PathBelow(&path);
     entry.light = light;
     if (light->isOfType(SoDeepShadowLight::getClassTypeId()))
       entry.deep = static_cast<SoDeepShadowLight*>(light);

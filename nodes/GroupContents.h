@@ -1,8 +1,11 @@
 #pragma once
 
+#include "nodes/PathBelow.h"
 #include "scene/CoinRef.h"
 #include "scene/InheritedState.h"
 #include "scene/SceneTriangles.h"
+
+#include <Inventor/nodes/SoSeparator.h>
 
 #include <cstdint>
 #include <vector>
@@ -12,7 +15,6 @@ class SoDeepShadowLight;
 class SoLight;
 class SoNotList;
 class SoPath;
-class SoSeparator;
 
 namespace ivshadow {
 
@@ -33,7 +35,7 @@ namespace ivshadow {
 class GroupContents {
  public:
   struct Light {
-    CoinRef<SoPath> path;  // from the group to the light
+    PathBelow path;  // from the group to the light (lightPath() makes it)
     SoLight* light = nullptr;
     SoDeepShadowLight* deep = nullptr;  // the light, when it is a deep shadow light
   };
@@ -50,8 +52,12 @@ class GroupContents {
 
   const std::vector<Light>& lights() const { return lights_; }
   int lightsOn() const { return subgraphLightsOn_; }
-  SoPath* cameraPath() const { return cameraPath_.get(); }
-  SoPath* environmentPath() const { return environmentPath_.get(); }
+  // Paths from the group, made when asked (nodes/PathBelow.h says why none is kept): to a
+  // light, to the last camera and to the last SoEnvironment inside the group (null: none).
+  CoinRef<SoPath> lightPath(const Light& light) const { return light.path.from(owner_); }
+  CoinRef<SoPath> cameraPath() const { return cameraPath_.from(owner_); }
+  bool hasCamera() const { return bool(cameraPath_); }
+  CoinRef<SoPath> environmentPath() const { return environmentPath_.from(owner_); }
   const SceneTriangles& casters() const { return casters_; }
   // Counts the changes of the shapes below, or of the state they inherit, that made the
   // casters be taken again (without deep shadows, that would have).
@@ -66,8 +72,8 @@ class GroupContents {
   bool deepShadows_;
   bool lightsValid_ = false;
   std::vector<Light> lights_;
-  CoinRef<SoPath> cameraPath_;       // the last camera inside the group, if any
-  CoinRef<SoPath> environmentPath_;  // the last SoEnvironment inside the group, if any
+  PathBelow cameraPath_;       // the last camera inside the group, if any
+  PathBelow environmentPath_;  // the last SoEnvironment inside the group, if any
   int subgraphLightsOn_ = 0;
   bool castersValid_ = false;
   InheritedState inherited_;  // what the casters were taken in

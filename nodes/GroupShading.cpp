@@ -69,7 +69,8 @@ void GroupShading::syncTexGen(SoState* state, bool generated) {
 }
 
 void GroupShading::findView(SoState* state) {
-  if (!contents_.cameraPath()) {
+  const CoinRef<SoPath> cameraPath = contents_.cameraPath();
+  if (!cameraPath) {
     localToEye_ = SoModelMatrixElement::get(state) * SoViewingMatrixElement::get(state);
     projection_ = SoProjectionMatrixElement::get(state);
     return;
@@ -91,16 +92,15 @@ void GroupShading::findView(SoState* state) {
         return SoCallbackAction::CONTINUE;
       },
       &view);
-  action.apply(contents_.cameraPath());
+  action.apply(cameraPath.get());
   localToEye_ = view.viewing;
   projection_ = view.projection;
 }
 
 int GroupShading::fogType(SoState* state) const {
   // Like a camera, an environment inside the group is traversed after the uniforms are set.
-  if (contents_.environmentPath())
-    return static_cast<const SoEnvironment*>(contents_.environmentPath()->getTail())
-        ->fogType.getValue();
+  if (const CoinRef<SoPath> path = contents_.environmentPath())
+    return static_cast<const SoEnvironment*>(path->getTail())->fogType.getValue();
   return int(SoEnvironmentElement::getFogType(state));
 }
 

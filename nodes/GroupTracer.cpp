@@ -113,8 +113,8 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
   // camera inside the group was read with the viewport's aspect.
   const bool shapesKept =
       scene_ && castersVersion_ == contents.castersVersion() &&
-      (contents.cameraPath() == nullptr || readSize_ == size) &&
-      viewVersion_ == contents.viewVersion() && shadingNow_ == shadingAbove_ &&
+      (!contents.hasCamera() || readSize_ == size) && viewVersion_ == contents.viewVersion() &&
+      shadingNow_ == shadingAbove_ &&
       ((sceneViewing_ == viewing && sceneProjection_ == projection) || !scene_->viewDependent());
   if (shapesKept && mapsVersion_ == contents.mapsVersion() && sceneViewing_ == viewing &&
       lightsNow_ == lightsAbove_)
@@ -191,7 +191,7 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const std::array<int, 4> viewport{origin[0], origin[1], size[0], size[1]};
   // A camera inside the group views its children, as GL would draw them (the one read with
   // the shapes); else the camera in force where the group is traversed.
-  const bool cameraInside = contents.cameraPath() != nullptr && scene_->haveCamera();
+  const bool cameraInside = contents.hasCamera() && scene_->haveCamera();
   const SbMatrix& viewing = cameraInside ? scene_->viewing() : SoViewingMatrixElement::get(state);
   const SbMatrix& projection =
       cameraInside ? scene_->projection() : SoProjectionMatrixElement::get(state);
@@ -271,9 +271,10 @@ void GroupTracer::drawUntraced(SoGLRenderAction* action) {
   // and the transforms on the way are traversed again, and every group on them renders as a
   // plain separator.
   SoPathList paths;
-  for (const SoPath* below : scene_->untracedPaths()) {
+  for (const std::vector<int>& below : scene_->untracedPaths()) {
     SoPath* path = action->getCurPath()->copy();
-    for (int i = readPathLength_; i < below->getLength(); ++i) path->append(below->getIndex(i));
+    for (std::size_t i = std::size_t(readPathLength_); i < below.size(); ++i)
+      path->append(below[i]);
     paths.append(path);
   }
   SoGLRenderAction nested(SoViewportRegionElement::get(state));

@@ -187,7 +187,9 @@ void notTriangles(SoCallbackAction* action, Extraction& data) {
   // once.
   if (data.untracedShape == data.shape) return;
   data.untracedShape = data.shape;
-  data.untracedPaths.emplace_back(action->getCurPath()->copy());
+  const SoPath* path = action->getCurPath();
+  std::vector<int>& indices = data.untracedPaths.emplace_back(std::size_t(path->getLength()), 0);
+  for (int i = 1; i < path->getLength(); ++i) indices[std::size_t(i)] = path->getIndex(i);
   const SoNode* node = action->getCurPathTail();
   if (data.skipped.count(node) != 0) return;
   data.skipped.emplace(node, describeNode(node));
@@ -363,8 +365,6 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
     action.addPointCallback(SoShape::getClassTypeId(), point, &data);
     apply(action);
   }
-  for (const CoinRef<SoPath>& path : data.untracedPaths)
-    result->untracedPaths.push_back(path.get());
   placeLights(data);
 
   std::string error;
@@ -381,6 +381,7 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
     }
     group.casters = CasterScene::build(result->device.get(), std::move(casters), error);
     if (!group.casters) throw std::runtime_error(error);
+    group.path = CoinRef<SoPath>();
   }
 
   result->scene = buildTriangleScene(

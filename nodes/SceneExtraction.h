@@ -53,7 +53,10 @@ struct Light {
 struct Group {
   SbMatrix toWorld;
   const SoNode* node = nullptr;
-  CoinRef<SoPath> path;  // from the root: its casters are taken in the state in force there
+  // From the root: its casters are taken in the state in force there. Released once they are
+  // (a path holds a reference to every node on it, the group's ancestors included, and this
+  // extraction is kept by the group's own tracer: the scene would never be freed).
+  CoinRef<SoPath> path;
   std::vector<int> outsideLights;  // lit the group from outside (SoLightElement at entry)
   std::vector<int> lights;         // every light turned on in the group's subgraph
   std::vector<int> casting;        // those that cast (nodes/CastingLight.h), as many as GL's
@@ -117,8 +120,11 @@ struct Extraction {
   int peelingDepth = 0;                          // SoPeelingSeparators being traversed
   std::map<const SoNode*, std::string> skipped;  // shapes without triangles
   std::vector<std::string> untracedShapes;       // their names, in traversal order
-  std::vector<CoinRef<SoPath>> untracedPaths;    // and the paths to every instance
-  std::uint32_t untracedShape = ~0u;             // the instance (shape) a path was kept for
+  // And the way to every instance: the child index at each level of its path (index 0, the
+  // head's, unused). Indices, not SoPaths: a path holds a reference to every node on it, and
+  // this extraction is kept by the group's tracer, so the scene would never be freed.
+  std::vector<std::vector<int>> untracedPaths;
+  std::uint32_t untracedShape = ~0u;  // the instance (shape) a path was kept for
   SbMatrix viewing = SbMatrix::identity();
   SbMatrix projection = SbMatrix::identity();
   bool haveCamera = false;
@@ -143,7 +149,6 @@ struct SceneTracer::Data {
   EmbreeDevice device;
   EmbreeScene scene;
   int packetWidth = 1;  // the device's native packet width (nativePacketWidth)
-  std::vector<const SoPath*> untracedPaths;
   int width = 0;
   int height = 0;
 };

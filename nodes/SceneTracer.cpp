@@ -614,8 +614,8 @@ std::size_t SceneTracer::triangles() const {
 const std::vector<std::string>& SceneTracer::untracedShapes() const {
   return data_->extraction.untracedShapes;
 }
-const std::vector<const SoPath*>& SceneTracer::untracedPaths() const {
-  return data_->untracedPaths;
+const std::vector<std::vector<int>>& SceneTracer::untracedPaths() const {
+  return data_->extraction.untracedPaths;
 }
 
 bool SceneTracer::trace(const TraceOptions& options, TracedPixels& out) const {

@@ -105,9 +105,10 @@ class IVSHADOW_INTERNAL SceneTracer {
   const SbMatrix& projection() const;
   std::size_t triangles() const;
   // The shapes drawn with lines, points or screen-aligned pixels, which are not traced: as
-  // described for a message, and as paths from the root traced (for GL to draw them).
+  // described for a message, and as the child indices of their paths from the root traced (for
+  // GL to draw them; index 0, the root's, unused).
   const std::vector<std::string>& untracedShapes() const;
-  const std::vector<const SoPath*>& untracedPaths() const;
+  const std::vector<std::vector<int>>& untracedPaths() const;
 
   // Traces the picture seen through `viewing` and `projection` (world to eye, eye to clip).
   // `depthLimit` (width x height window depths, rows bottom to top as GL reads them; may be

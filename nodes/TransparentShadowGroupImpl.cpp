@@ -117,7 +117,7 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
   map = MapState{};
   map.settings = castingSettings(*entry.light, group, pass.maxTextureSize());
   SoGetMatrixAction matrixAction(action->getViewportRegion());
-  matrixAction.apply(entry.path.get());
+  if (const CoinRef<SoPath> path = contents_.lightPath(entry)) matrixAction.apply(path.get());
   CastingLight where;
   castingLight(*entry.light, group, matrixAction.getMatrix(), where);
   map.kind = where.kind;
@@ -222,7 +222,8 @@ void TransparentShadowGroupImpl::finishBuild(SoGLRenderAction* action, Context& 
 
 ViewCorners TransparentShadowGroupImpl::view(SoGLRenderAction* action) const {
   SoState* state = action->getState();
-  if (!contents_.cameraPath())
+  const CoinRef<SoPath> cameraPath = contents_.cameraPath();
+  if (!cameraPath)
     return viewCorners(SoViewVolumeElement::get(state), SoModelMatrixElement::get(state));
   // The camera's view volume in the coordinates of its path's head, the group.
   SbViewVolume volume = SoViewVolumeElement::get(state);
@@ -234,7 +235,7 @@ ViewCorners TransparentShadowGroupImpl::view(SoGLRenderAction* action) const {
         return SoCallbackAction::CONTINUE;
       },
       &volume);
-  camera.apply(contents_.cameraPath());
+  camera.apply(cameraPath.get());
   return viewCorners(volume, SbMatrix::identity());
 }
 
