@@ -199,7 +199,9 @@ class Checker {
       // anything else (a brace, IS, a connection) ends it and is read as usual.
       bool consumed = false;
       if (fileField != nullptr) {
-        if (!token.quoted && (token.is("{") || token.is("}") || (!inList && token.is("]")))) {
+        // Inside brackets Coin reads names up to ']', braces included (found by
+        // SceneReaderFuzzer: a list holding "the}" and later "1.37%" was left at the brace).
+        if (!inList && !token.quoted && (token.is("{") || token.is("}") || token.is("]"))) {
           fileField = nullptr;
           inList = false;
         } else if (!inList && token.is("[")) {

@@ -284,6 +284,19 @@ TEST(SceneFileCheck, VrmlFilesAreCheckedUnderTheirOwnNodeNames) {
   EXPECT_EQ(checkError(fallback), "");
 }
 
+// Found by SceneReaderFuzzer: a Texture3 list of bare words holding a brace, and later a
+// "1.37%": the check stopped at the brace, Coin read on, and printed "1.37%" as a format
+// (a 25 GB string, the process hung).
+TEST(SceneFileCheck, AFileListIsReadUpToItsBracketAsCoinReadsIt) {
+  const std::string path = test::writeOutputFile(
+      "brace_in_list.iv",
+      "#Inventor V2.1 ascii\nTexture3 { filenames [ a the} b 1.37% ] }\nCube { }\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":2: error: Texture3 filenames 1.37%: no such file beside "
+                                  "brace_in_list.iv, and Coin cannot report a name holding '%' "
+                                  "(rename the file)");
+}
+
 // The size is read only while the tokens are numbers (hexadecimal too); anything else ends it
 // and is read as usual, so braces and DEF names stay in step.
 TEST(SceneFileCheck, AnInlineImageSizeEndsWhereItsNumbersEnd) {
