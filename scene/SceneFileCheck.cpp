@@ -259,8 +259,10 @@ class Checker {
         useNext = true;
       } else if (!types.empty() && !token.quoted) {
         for (const FileField& field : kFileFields)
-          if (sameNode(types.back(), field.node, vrml97) && token.text == field.field)
+          if (sameNode(types.back(), field.node, vrml97) && token.text == field.field) {
             fileField = &field;
+            listIndex = 0;
+          }
         for (const ImageField& field : kImageFields)
           if (sameNode(types.back(), field.node, vrml97) && token.text == field.field) {
             imageField = &field;

@@ -297,6 +297,18 @@ TEST(SceneFileCheck, AFileListIsReadUpToItsBracketAsCoinReadsIt) {
                                   "(rename the file)");
 }
 
+// Found by SceneReaderFuzzer: a second VRMLInline was not checked (the count of names read,
+// which limits an Inline to its first, was not reset for the next node), and its '%' reached
+// Coin's format printing.
+TEST(SceneFileCheck, EveryInlineIsCheckedNotOnlyTheFirst) {
+  const std::string path =
+      test::writeOutputFile("two_inlines.iv",
+                            "#Inventor V2.1 ascii\nVRMLInline { url \"first.wrl\" }\n"
+                            "VRMLInline { url \"%s%n.wrl\" }\n");
+  EXPECT_NE(checkError(path).find(":3: error: VRMLInline url %s%n.wrl"), std::string::npos)
+      << checkError(path);
+}
+
 // The size is read only while the tokens are numbers (hexadecimal too); anything else ends it
 // and is read as usual, so braces and DEF names stay in step.
 TEST(SceneFileCheck, AnInlineImageSizeEndsWhereItsNumbersEnd) {
