@@ -258,11 +258,24 @@ class Checker {
       } else if (token.is("USE")) {
         useNext = true;
       } else if (!types.empty() && !token.quoted) {
-        for (const FileField& field : kFileFields)
-          if (sameNode(types.back(), field.node, vrml97) && token.text == field.field) {
-            fileField = &field;
-            listIndex = 0;
+        for (const FileField& field : kFileFields) {
+          // Coin reads a field's name as an identifier: "name%x.iv" is the field name and a
+          // value (found by SceneReaderFuzzer: File { name%no_such_file.iv" }).
+          const std::size_t length = std::strlen(field.field);
+          const std::string& text = token.text;
+          if (!sameNode(types.back(), field.node, vrml97) ||
+              text.compare(0, length, field.field) != 0 ||
+              (text.size() > length &&
+               (std::isalnum(static_cast<unsigned char>(text[length])) || text[length] == '_')))
+            continue;
+          fileField = &field;
+          listIndex = 0;
+          if (text.size() > length) {
+            checkNamedFile(path, field, Token{text.substr(length), token.line, false},
+                           nesting + int(braces.size()));
+            fileField = nullptr;
           }
+        }
         for (const ImageField& field : kImageFields)
           if (sameNode(types.back(), field.node, vrml97) && token.text == field.field) {
             imageField = &field;

@@ -309,6 +309,15 @@ TEST(SceneFileCheck, EveryInlineIsCheckedNotOnlyTheFirst) {
       << checkError(path);
 }
 
+// Found by SceneReaderFuzzer: Coin reads "name%x.iv" as the field name and a value; the check
+// took it for one word and let the '%' through to Coin's format printing.
+TEST(SceneFileCheck, AValueJoinedToItsFieldNameIsCheckedToo) {
+  const std::string path =
+      test::writeOutputFile("joined.iv", "#Inventor V2.1 ascii\nFile { name%no_such_file.iv\" }\n");
+  EXPECT_NE(checkError(path).find(":2: error: File name %no_such_file.iv"), std::string::npos)
+      << checkError(path);
+}
+
 // The size is read only while the tokens are numbers (hexadecimal too); anything else ends it
 // and is read as usual, so braces and DEF names stay in step.
 TEST(SceneFileCheck, AnInlineImageSizeEndsWhereItsNumbersEnd) {
