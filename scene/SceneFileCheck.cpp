@@ -142,6 +142,15 @@ bool sameNode(const std::string& type, const char* node, bool vrml97) {
   return type == node || (vrml97 && "VRML" + type == node);
 }
 
+// Whether `token` is the type of a node whose file names Coin prints as a format.
+bool printsNamesAsFormat(const Token& token, bool vrml97) {
+  if (token.quoted) return false;
+  for (const FileField& field : kFileFields)
+    if ((field.scene || field.percentKills) && sameNode(token.text, field.node, vrml97))
+      return true;
+  return false;
+}
+
 std::string canonicalPath(const std::filesystem::path& path) {
   std::error_code ec;
   const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
@@ -193,8 +202,14 @@ class Checker {
     const ImageField* imageField = nullptr;
     std::vector<long long> imageSize;
     bool useNext = false;
+    // The first '%' anywhere in the file's names and values, and the first node that names a
+    // file Coin may print as a format: the backstop below.
+    Token percent;
+    Token printsNames;
     Tokenizer tokenizer(text, path);
     for (Token token; tokenizer.next(token);) {
+      if (percent.line == 0 && token.text.find('%') != std::string::npos) percent = token;
+      if (printsNames.line == 0 && printsNamesAsFormat(token, vrml97)) printsNames = token;
       // A file name or an image size is read only while the tokens are what the field holds:
       // anything else (a brace, IS, a connection) ends it and is read as usual.
       bool consumed = false;
@@ -284,6 +299,15 @@ class Checker {
       }
       before = {before[1], before[2], token};
     }
+    // The checks above follow Coin's reader field by field, and each way they fell short of it
+    // let a '%' through to a crash (a second Inline, a list holding a brace, a value joined
+    // to its field's name). Whatever the file's structure, a '%' in a file with such a node
+    // is refused, naming both.
+    if (percent.line != 0 && printsNames.line != 0)
+      throw InputError(locationPrefix(path, percent.line) + "error: '" + percent.text +
+                       "' holds a '%' in a file holding " + printsNames.text + " (line " +
+                       std::to_string(printsNames.line) +
+                       "), a node whose file names Coin may print as a format; remove the '%'");
     open_.pop_back();
   }
 
