@@ -11,9 +11,6 @@ namespace ivshadow {
 // composeShader() prepends them to every shader as #defines (shaderConstantDefines()), so a
 // shader says IVSHADOW_MAX_LIGHTS where it needs the light limit and cannot drift from C++.
 
-// GL lights Coin uses (GL_LIGHT0..7), and so deep shadow map slots per group.
-inline constexpr int kMaxGlLights = 8;
-
 // Peeled layers per cube face a deep shadow map may hold (SoDeepShadowLight::maxLayers).
 inline constexpr int kMaxMapLayers = 64;
 

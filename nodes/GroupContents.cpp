@@ -1,6 +1,6 @@
 #include "nodes/GroupContents.h"
 
-#include "callbacks/ShaderConstants.h"
+#include "scene/ShadowTypes.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
@@ -78,15 +78,8 @@ void GroupContents::findLights() {
     if (!castingLight(*light, *static_cast<SoTransparentShadowGroup*>(owner_), SbMatrix::identity(),
                       where))
       return;
-    if (int(lights_.size()) >= kMaxGlLights) {
-      if (firstWarning(light, "too many lights"))
-        SoDebugError::postWarning(
-            "SoTransparentShadowGroup",
-            "light %s lights without a shadow: at most %d lights of a group cast",
-            light->getName().getLength() ? light->getName().getString() : "(unnamed)",
-            kMaxGlLights);
-      return;
-    }
+    // Past GL's lights a light lights nothing (nodes/LightLimit.h says so once).
+    if (int(lights_.size()) >= kMaxGlLights) return;
     Light entry;
     entry.path = PathBelow(&path);
     entry.light = light;

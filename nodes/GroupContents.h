@@ -50,6 +50,7 @@ class GroupContents {
   // at the group).
   void update(SoAction* action);
 
+  const SoSeparator* owner() const { return owner_; }
   const std::vector<Light>& lights() const { return lights_; }
   int lightsOn() const { return subgraphLightsOn_; }
   // Paths from the group, made when asked (nodes/PathBelow.h says why none is kept): to a

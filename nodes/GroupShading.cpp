@@ -2,6 +2,7 @@
 
 #include "callbacks/ShadingUniforms.h"
 #include "nodes/GroupContents.h"
+#include "nodes/LightLimit.h"
 #include "nodes/TexGenWatchElement.h"
 
 #include <Inventor/SoPath.h>
@@ -32,6 +33,7 @@ ShadingUniforms* GroupShading::begin(SoGLRenderAction* action, int textureUnits,
   uniforms_ = ShadingUniforms{};
   uniforms_.textureUnits = textureUnits;
   outsideLights_ = SoLightElement::getLights(state).getLength();
+  warnLightsPastGlLimit(contents_.owner(), outsideLights_ + contents_.lightsOn());
   uniforms_.lightCount =
       std::min(ShadingUniforms::kMaxLights, outsideLights_ + contents_.lightsOn());
   findView(state);

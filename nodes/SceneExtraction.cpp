@@ -1,9 +1,10 @@
 #include "nodes/SceneExtraction.h"
 
-#include "callbacks/ShaderConstants.h"
+#include "scene/ShadowTypes.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
+#include "nodes/LightLimit.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
 #include "scene/CoinRef.h"
@@ -328,8 +329,12 @@ void placeLights(Extraction& data) {
       light.spotDirection = toGlm(v);
     }
   }
+  for (const std::vector<int>& set : data.lightSets)
+    if (set.size() > std::size_t(kMaxGlLights))
+      warnLightsPastGlLimit(data.lights[std::size_t(set[kMaxGlLights])].node, int(set.size()));
   for (Group& group : data.groups) {
     const auto& node = *static_cast<const SoTransparentShadowGroup*>(group.node);
+    warnLightsPastGlLimit(group.node, int(group.outsideLights.size() + group.lights.size()));
     group.casting.clear();
     for (int index : group.lights) {
       CastingLight where;

@@ -9,6 +9,7 @@
 #include "raytrace/ParallelRows.h"
 #include "raytrace/RayRange.h"
 #include "raytrace/SurfaceOptics.h"
+#include "scene/ShadowTypes.h"
 #include "scene/SceneTriangles.h"
 
 #include <Inventor/SbMatrix.h>
@@ -409,11 +410,16 @@ class Tracer {
     } else {
       sets[0] = &data_.lightSets[std::size_t(tri.lightSet)];
     }
+    // GL lights with the first kMaxGlLights lights in force (Coin drops the others), the
+    // group's outside lights first as GL numbers them.
+    int inForce = 0;
     for (const std::vector<int>* set : sets) {
       if (set == nullptr) continue;
-      for (int index : *set)
+      for (int index : *set) {
+        if (inForce++ >= kMaxGlLights) break;
         lit += contribution(data_.lights[std::size_t(index)], tri, group, normal, position, diffuse,
                             material, rays, row);
+      }
     }
     if (group != nullptr && group->bounce && options_.bounceSamples > 0)
       lit += diffuse * indirect(*group, tri, normal, position, rays);

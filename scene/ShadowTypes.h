@@ -15,6 +15,10 @@ enum class ShadowColourModel : int { Monochrome = 0, Saturate = 1, Power = 2 };
 // The kinds of light that cast (nodes/CastingLight.h) and bounce (raytrace/BounceLights.h).
 enum class LightKind { Point, Spot, Directional };
 
+// GL lights Coin uses (GL_LIGHT0..7; it drops the lights in force past them), and so deep
+// shadow map slots per group. Every path lights with the first kMaxGlLights, as Coin draws.
+inline constexpr int kMaxGlLights = 8;
+
 // Opacity from which a surface counts as opaque: within half an 8-bit step of 1, since Coin
 // sends colours as 8-bit values and interpolating a constant alpha of 1 across a triangle can
 // give 0.99999994. The shaders receive it with the other constants.
