@@ -13,6 +13,8 @@
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/nodes/SoNode.h>
 
+#include <glm/gtc/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -135,6 +137,17 @@ ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld
   return corners;
 }
 
+bool castersCone(const MapState& map, const SbBox3f& casterBounds, SbVec3f& axis, float& angle) {
+  if (map.kind == LightKind::Directional || casterBounds.isEmpty()) return false;
+  axis = casterBounds.getCenter() - map.position;
+  const float distance = axis.length();
+  const float radius = 0.5f * (casterBounds.getMax() - casterBounds.getMin()).length();
+  if (!(distance > radius)) return false;
+  axis /= distance;
+  angle = std::asin(radius / distance);
+  return true;
+}
+
 void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view) {
   if (map.kind == LightKind::Directional) {
     fitDirectional(map, casterBounds, view);
@@ -143,12 +156,28 @@ void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& 
   float nearest = 0.0f, nearestAxial = 0.0f, farthest = 1.0f;
   if (!casterBounds.isEmpty())
     distanceRange(casterBounds, map.position, nearest, nearestAxial, farthest);
-  const bool oneFace = map.kind == LightKind::Spot && map.cutOffAngle <= kMaxSpotFaceHalfAngle;
-  // The near plane clips by depth along the face's axis. A point in a spot light's cone lies
-  // at least cos(cutOffAngle) of its distance along the axis; a cube face's depth of a point
-  // is its largest coordinate from the light, which over the box is at least the largest gap
+  // One face over a spot light's cone, or over the cone the casters fill seen from the light,
+  // whichever is narrower: a light outside its casters' bounding sphere sees them within
+  // asin(radius / distance) of the way to its centre. A cube spends its texels on all
+  // directions: a light 1000 units from a glass of 0.6 gave it less than a texel of the cube,
+  // and its shadow vanished (issue 36). Beside the face no caster lies towards the light.
+  bool oneFace = map.kind == LightKind::Spot && map.cutOffAngle <= kMaxSpotFaceHalfAngle;
+  float coneAngle = oneFace ? map.cutOffAngle : 0.0f;
+  glm::vec3 axis = toGlm(map.axis);
+  SbVec3f castersAxis;
+  float castersAngle = 0.0f;
+  // Wider than a cube face (45 degrees), the face's texels would be coarser than the cube's.
+  if (castersCone(map, casterBounds, castersAxis, castersAngle) &&
+      castersAngle < glm::quarter_pi<float>() && (!oneFace || castersAngle < coneAngle)) {
+    oneFace = true;
+    coneAngle = castersAngle;
+    axis = toGlm(castersAxis);
+  }
+  // The near plane clips by depth along the face's axis. A point in the face's cone lies at
+  // least cos(coneAngle) of its distance along the axis; a cube face's depth of a point is
+  // its largest coordinate from the light, which over the box is at least the largest gap
   // along an axis (a box corner seen diagonally lies 1/sqrt(3) of its distance along each).
-  nearest = oneFace ? nearest * std::cos(map.cutOffAngle) : nearestAxial;
+  nearest = oneFace ? nearest * std::cos(coneAngle) : nearestAxial;
   // The map must reach past the farthest caster; the near plane may not cut off any of
   // them, and reversed floating-point depth keeps a 1e5 ratio precise.
   const float far = farthest > 0.0f ? farthest * 1.01f : 1.0f;
@@ -159,9 +188,9 @@ void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& 
   if (oneFace) {
     // One percent wider than the cone, so that the cone's rim and the filter's taps there
     // fall inside the face.
-    const float halfAngle = std::atan(std::tan(map.cutOffAngle) * 1.01f);
-    map.frame = perspectiveFrame(toGlm(map.position), toGlm(map.axis), halfAngle, map.nearRadius,
-                                 map.farRadius);
+    const float halfAngle = std::atan(std::tan(coneAngle) * 1.01f);
+    map.frame =
+        perspectiveFrame(toGlm(map.position), axis, halfAngle, map.nearRadius, map.farRadius);
   } else {
     map.frame = cubeFrame(toGlm(map.position), map.nearRadius, map.farRadius);
   }

@@ -24,12 +24,22 @@ struct MapState;
 using ViewCorners = std::array<SbVec3f, 8>;
 ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld);
 
-// Sets the map's frame (MapFrame) and depth range for its light: a point light's cube, a
-// spot light's one perspective face over its cone (a cone wider than kMaxSpotFaceHalfAngle:
-// the cube), a directional light's orthographic face over the casters' bounds clipped to
+// Sets the map's frame (MapFrame) and depth range for its light: one perspective face over a
+// spot light's cone (at most kMaxSpotFaceHalfAngle) or over the casters' cone (castersCone;
+// narrower than a cube face), the narrower, else the cube; a directional light's orthographic face over the casters' bounds clipped to
 // `view`. The range comes from the light's settings or, where they are not set, from the
 // casters' bounds.
 void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view);
+
+// The cone a point or spot light sees its casters within: the way to the centre of their
+// bounding sphere and asin(radius / distance). False for a directional light, for no casters
+// and for a light inside the sphere.
+bool castersCone(const MapState& map, const SbBox3f& casterBounds, SbVec3f& axis, float& angle);
+
+// Below this cone angle a map cannot tell its casters' depths apart in floats (a light 1e5
+// from a glass of 0.4 blurred an opacity map's shadow, at 1e9 the deep map's too): the light
+// traces its shadow rays instead, saying so once.
+inline constexpr float kMinMapConeAngle = 1e-4f;
 
 // An opacity map's sliced distances (MapState::sliceNear, sliceFar), after fitMapFrame: the
 // transparent casters' distances along the map's axes, within its depth range. Opaque casters

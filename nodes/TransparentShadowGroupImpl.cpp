@@ -145,6 +145,19 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
                              "light %s: method AUTO uses %s on %s", lightName(*entry.light).c_str(),
                              methodName(method), context.renderer.c_str());
   }
+  SbVec3f castersAxis;
+  float castersAngle = 0.0f;
+  if ((method == SoDeepShadowLight::MAP || method == SoDeepShadowLight::OPACITY_MAP) &&
+      castersCone(map, casters.bounds, castersAxis, castersAngle) &&
+      castersAngle < kMinMapConeAngle) {
+    if (firstWarning(entry.light, "too far for a map"))
+      SoDebugError::postWarning(entry.deep ? "SoDeepShadowLight" : "SoTransparentShadowGroup",
+                                "light %s: its casters fill %g radians seen from it, too little "
+                                "for a map to tell their depths apart in floats; it traces "
+                                "shadow rays instead",
+                                lightName(*entry.light).c_str(), double(castersAngle));
+    method = SoDeepShadowLight::RAYS;
+  }
   if (method == SoDeepShadowLight::VOLUMES) {
     if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
     std::string whyNot;

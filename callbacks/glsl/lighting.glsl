@@ -267,6 +267,10 @@ vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColou
   } else {
     vec3 v = light.position.xyz / light.position.w - vEyePosition;
     float distance = length(v);
+    // Past float's range (a light about 2e19 away) the distance is infinite and the light
+    // reaches nothing, as in Coin's fixed-function GL and the tracer; 0 x inf in the
+    // attenuation would make the whole pixel NaN (black).
+    if (isinf(distance)) return vec3(0.0);
     toLight = v / distance;
     attenuation = 1.0 / (light.constantAttenuation + light.linearAttenuation * distance +
                          light.quadraticAttenuation * distance * distance);
