@@ -12,7 +12,10 @@
 #include "scene/ShadowTypes.h"
 #include "scene/SceneTriangles.h"
 
+#include <Inventor/SbDPMatrix.h>
 #include <Inventor/SbMatrix.h>
+#include <Inventor/SbVec3d.h>
+#include <Inventor/SbVec4d.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
 
@@ -114,8 +117,18 @@ class Tracer {
         packetWidth_(std::min(packetWidth, kMaxPacket)),
         options_(options),
         viewing_(viewing) {
-    worldToClip_ = viewing * projection;
+    // In doubles: a near plane at 1e-11 or a far plane 1e12 times as far lose the rays in a
+    // float inverse (the picture was black where GL draws it).
+    worldToClip_ = SbDPMatrix(viewing) * SbDPMatrix(projection);
     clipToWorld_ = worldToClip_.inverse();
+    // Farther than every triangle from the camera, with room: where a camera ray may end.
+    SbVec3f camera;
+    viewing.inverse().multVecMatrix(SbVec3f(0.0f, 0.0f, 0.0f), camera);
+    const SbVec3d eye(camera);
+    double farthest = 0.0;
+    for (const glm::vec3& p : data.positions)
+      farthest = std::max(farthest, (SbVec3d(p.x, p.y, p.z) - eye).length());
+    reach_ = 2.0 * farthest + 1.0;
     SbVec3f back;
     viewing.inverse().multDirMatrix(SbVec3f(0.0f, 0.0f, 1.0f), back);
     back.normalize();
@@ -133,22 +146,61 @@ class Tracer {
     }
   }
 
-  // A pixel's ray: from the near plane (t = 0) to the far plane (t = 1).
+  // A pixel's ray: from the near plane (t = 0) to the far plane (t = 1), of which GL draws
+  // what lies in [first, last].
   struct CameraRay {
     float nx, ny;  // the pixel's centre in normalised device coordinates
     glm::vec3 origin;
     glm::vec3 direction;
+    float first = 0.0f;
+    float last = 1.0f;
   };
   CameraRay cameraRay(int x, int y) const {
     CameraRay ray;
     ray.nx = (float(x) + 0.5f) / float(options_.width) * 2.0f - 1.0f;
     ray.ny = 1.0f - (float(y) + 0.5f) / float(options_.height) * 2.0f;
-    SbVec3f nearPoint, farPoint;
-    clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, -1.0f), nearPoint);
-    clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, 1.0f), farPoint);
-    ray.origin = toGlm(nearPoint);
-    ray.direction = toGlm(farPoint) - ray.origin;
+    SbVec4d nearPoint, farPoint;
+    clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, -1.0, 1.0), nearPoint);
+    clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, 1.0, 1.0), farPoint);
+    SbVec3d origin, end;
+    nearPoint.getReal(origin);
+    // A far plane over about 1e7 times the near one rounds to infinity in the float projection
+    // Coin gives GL (a near plane at 1e-11, or a far one at 1e12), and GL then draws out to
+    // infinity: the ray ends past everything in the scene instead.
+    const SbVec3d towardsFar = SbVec3d(farPoint[0], farPoint[1], farPoint[2]) - origin * farPoint[3];
+    end = origin + towardsFar * (reach_ / std::max(towardsFar.length(), 1e-300));
+    if (farPoint[3] > 0.0) {
+      SbVec3d farEnd;
+      farPoint.getReal(farEnd);
+      if ((farEnd - origin).length() < reach_) end = farEnd;
+    }
+    ray.origin = glm::vec3(origin[0], origin[1], origin[2]);
+    ray.direction = glm::vec3(end[0] - origin[0], end[1] - origin[1], end[2] - origin[2]);
+    clipped(ray, origin, end);
     return ray;
+  }
+
+  // GL draws a point whose clip coordinates have w > 0 and -w <= z <= w. Along the ray they
+  // are linear in t: each condition keeps an interval of it. Any camera's near plane gives
+  // [0, 1]; a perspective camera with a negative nearDistance keeps nothing in front of it,
+  // as GL (and so Coin) draws nothing.
+  void clipped(CameraRay& ray, const SbVec3d& origin, const SbVec3d& end) const {
+    SbVec4d a, b;
+    worldToClip_.multVecMatrix(SbVec4d(origin[0], origin[1], origin[2], 1.0), a);
+    worldToClip_.multVecMatrix(SbVec4d(end[0], end[1], end[2], 1.0), b);
+    double first = 0.0, last = 1.0;
+    // value(t) = p + t (q - p) >= 0, within a rounding slack of the clip volume's size.
+    const auto keep = [&](double p, double q) {
+      const double slack = 1e-6 * (std::fabs(p) + std::fabs(q));
+      if (q - p > 0.0) first = std::max(first, (-slack - p) / (q - p));
+      else if (q - p < 0.0) last = std::min(last, (-slack - p) / (q - p));
+      else if (p < -slack) last = -1.0;
+    };
+    keep(a[3], b[3]);
+    keep(a[3] + a[2], b[3] + b[2]);
+    keep(a[3] - a[2], b[3] - b[2]);
+    ray.first = float(first);
+    ray.last = float(last);
   }
 
   // The surfaces along `count` (at most kMaxPacket) neighbouring camera rays, rays[i]'s into
@@ -175,7 +227,7 @@ class Tracer {
         for (int i = 0; i < count; ++i) {
           const CameraRay& ray = rays[i];
           const bool opaque =
-              surfacesAlong(ray.origin, ray.direction, 0.0f, rayEnd(ray, limits[i]), hits[i]);
+              surfacesAlong(ray.origin, ray.direction, ray.first, rayEnd(ray, limits[i]), hits[i]);
           depths[i] = opaque ? windowDepth(ray, hits[i].back().t) : limits[i];
         }
     }
@@ -217,20 +269,20 @@ class Tracer {
  private:
   // Where a camera ray ending at window depth `limit` ends: its parameter (the far plane: 1).
   float rayEnd(const CameraRay& ray, float limit) const {
-    if (!(limit < 1.0f)) return 1.0f;  // the far plane clips as in GL
+    if (!(limit < 1.0f)) return ray.last;  // the far plane clips as in GL
     // The limit's point on this ray: its parameter, as the ray is linear in the world.
-    SbVec3f end;
-    clipToWorld_.multVecMatrix(SbVec3f(ray.nx, ray.ny, 2.0f * limit - 1.0f), end);
-    return glm::dot(toGlm(end) - ray.origin, ray.direction) /
-           glm::dot(ray.direction, ray.direction);
+    SbVec3d end;
+    clipToWorld_.multVecMatrix(SbVec3d(ray.nx, ray.ny, 2.0 * limit - 1.0), end);
+    const glm::vec3 toEnd = glm::vec3(end[0], end[1], end[2]) - ray.origin;
+    return std::min(ray.last, glm::dot(toEnd, ray.direction) / glm::dot(ray.direction, ray.direction));
   }
 
   // The window depth of the point at parameter `t` along a camera ray.
   float windowDepth(const CameraRay& ray, float t) const {
-    SbVec3f clip;
+    SbVec3d clip;
     const glm::vec3 p = ray.origin + t * ray.direction;
-    worldToClip_.multVecMatrix(SbVec3f(p.x, p.y, p.z), clip);
-    return glm::clamp(0.5f * clip[2] + 0.5f, 0.0f, 1.0f);
+    worldToClip_.multVecMatrix(SbVec3d(p.x, p.y, p.z), clip);
+    return glm::clamp(float(0.5 * clip[2] + 0.5), 0.0f, 1.0f);
   }
 
   template <int Width, typename Packet>
@@ -253,12 +305,15 @@ class Tracer {
       packet.ray.dir_x[i] = rays[i].direction.x;
       packet.ray.dir_y[i] = rays[i].direction.y;
       packet.ray.dir_z[i] = rays[i].direction.z;
-      packet.ray.tnear[i] = 0.0f;
+      packet.ray.tnear[i] = rays[i].first;
       packet.ray.tfar[i] = rayEnd(rays[i], limits[i]);
       packet.ray.mask[i] = 0xFFFFFFFFu;
       packet.ray.id[i] = unsigned(i);
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-      valid[i] = embreeTakesRay(rays[i].origin, rays[i].direction) ? -1 : 0;
+      valid[i] = embreeTakesRay(rays[i].origin, rays[i].direction) &&
+                         packet.ray.tnear[i] <= packet.ray.tfar[i]
+                     ? -1
+                     : 0;
     }
     intersect(valid, scene_, &context, &packet);
     for (int i = 0; i < count; ++i) {
@@ -301,7 +356,8 @@ class Tracer {
     rayHit.ray.tfar = tfar;
     rayHit.ray.mask = 0xFFFFFFFFu;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    if (embreeTakesRay(origin, direction)) rtcIntersect1(scene_, &context, &rayHit);
+    if (embreeTakesRay(origin, direction) && tnear <= tfar)
+      rtcIntersect1(scene_, &context, &rayHit);
     const bool opaque = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     inDepthOrder(hits, opaque, Hit{rayHit.ray.tfar, rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v});
     return opaque;
@@ -577,8 +633,9 @@ class Tracer {
   int packetWidth_;  // camera rays traced together
   const TraceOptions& options_;
   SbMatrix viewing_;
-  SbMatrix worldToClip_;
-  SbMatrix clipToWorld_;
+  SbDPMatrix worldToClip_;
+  SbDPMatrix clipToWorld_;
+  double reach_ = 1.0;
   glm::vec3 viewDirection_{0.0f, 0.0f, 1.0f};
   static constexpr int kNotCasting = -1;
   std::vector<int> casting_;  // groups x lights: castingModel()
