@@ -26,9 +26,9 @@ ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld
 
 // Sets the map's frame (MapFrame) and depth range for its light: one perspective face over a
 // spot light's cone (at most kMaxSpotFaceHalfAngle) or over the casters' cone (castersCone;
-// narrower than a cube face), the narrower, else the cube; a directional light's orthographic face over the casters' bounds clipped to
-// `view`. The range comes from the light's settings or, where they are not set, from the
-// casters' bounds.
+// narrower than a cube face), the narrower, else the cube; a directional light's orthographic face
+// over the casters' bounds clipped to `view`. The range comes from the light's settings or, where
+// they are not set, from the casters' bounds.
 void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view);
 
 // The cone a point or spot light sees its casters within: the way to the centre of their

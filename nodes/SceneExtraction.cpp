@@ -1,6 +1,5 @@
 #include "nodes/SceneExtraction.h"
 
-#include "scene/ShadowTypes.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
@@ -10,6 +9,7 @@
 #include "scene/CoinRef.h"
 #include "scene/EnvironmentValues.h"
 #include "scene/SceneTriangles.h"
+#include "scene/ShadowTypes.h"
 #include "scene/ShapeValidation.h"
 
 #include <Inventor/SbMatrix.h>

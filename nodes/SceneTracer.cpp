@@ -1,6 +1,7 @@
 #include "nodes/SceneTracer.h"
 
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/CameraRays.h"
 #include "nodes/CastingLight.h"
 #include "nodes/RowShading.h"
 #include "nodes/SceneExtraction.h"
@@ -9,13 +10,10 @@
 #include "raytrace/ParallelRows.h"
 #include "raytrace/RayRange.h"
 #include "raytrace/SurfaceOptics.h"
-#include "scene/ShadowTypes.h"
 #include "scene/SceneTriangles.h"
+#include "scene/ShadowTypes.h"
 
-#include <Inventor/SbDPMatrix.h>
 #include <Inventor/SbMatrix.h>
-#include <Inventor/SbVec3d.h>
-#include <Inventor/SbVec4d.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
 
@@ -116,19 +114,8 @@ class Tracer {
         scene_(scene),
         packetWidth_(std::min(packetWidth, kMaxPacket)),
         options_(options),
-        viewing_(viewing) {
-    // In doubles: a near plane at 1e-11 or a far plane 1e12 times as far lose the rays in a
-    // float inverse (the picture was black where GL draws it).
-    worldToClip_ = SbDPMatrix(viewing) * SbDPMatrix(projection);
-    clipToWorld_ = worldToClip_.inverse();
-    // Farther than every triangle from the camera, with room: where a camera ray may end.
-    SbVec3f camera;
-    viewing.inverse().multVecMatrix(SbVec3f(0.0f, 0.0f, 0.0f), camera);
-    const SbVec3d eye(camera);
-    double farthest = 0.0;
-    for (const glm::vec3& p : data.positions)
-      farthest = std::max(farthest, (SbVec3d(p.x, p.y, p.z) - eye).length());
-    reach_ = 2.0 * farthest + 1.0;
+        viewing_(viewing),
+        cameraRays_(viewing, projection, options.width, options.height, data.positions) {
     SbVec3f back;
     viewing.inverse().multDirMatrix(SbVec3f(0.0f, 0.0f, 1.0f), back);
     back.normalize();
@@ -146,62 +133,7 @@ class Tracer {
     }
   }
 
-  // A pixel's ray: from the near plane (t = 0) to the far plane (t = 1), of which GL draws
-  // what lies in [first, last].
-  struct CameraRay {
-    float nx, ny;  // the pixel's centre in normalised device coordinates
-    glm::vec3 origin;
-    glm::vec3 direction;
-    float first = 0.0f;
-    float last = 1.0f;
-  };
-  CameraRay cameraRay(int x, int y) const {
-    CameraRay ray;
-    ray.nx = (float(x) + 0.5f) / float(options_.width) * 2.0f - 1.0f;
-    ray.ny = 1.0f - (float(y) + 0.5f) / float(options_.height) * 2.0f;
-    SbVec4d nearPoint, farPoint;
-    clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, -1.0, 1.0), nearPoint);
-    clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, 1.0, 1.0), farPoint);
-    SbVec3d origin, end;
-    nearPoint.getReal(origin);
-    // A far plane over about 1e7 times the near one rounds to infinity in the float projection
-    // Coin gives GL (a near plane at 1e-11, or a far one at 1e12), and GL then draws out to
-    // infinity: the ray ends past everything in the scene instead.
-    const SbVec3d towardsFar = SbVec3d(farPoint[0], farPoint[1], farPoint[2]) - origin * farPoint[3];
-    end = origin + towardsFar * (reach_ / std::max(towardsFar.length(), 1e-300));
-    if (farPoint[3] > 0.0) {
-      SbVec3d farEnd;
-      farPoint.getReal(farEnd);
-      if ((farEnd - origin).length() < reach_) end = farEnd;
-    }
-    ray.origin = glm::vec3(origin[0], origin[1], origin[2]);
-    ray.direction = glm::vec3(end[0] - origin[0], end[1] - origin[1], end[2] - origin[2]);
-    clipped(ray, origin, end);
-    return ray;
-  }
-
-  // GL draws a point whose clip coordinates have w > 0 and -w <= z <= w. Along the ray they
-  // are linear in t: each condition keeps an interval of it. Any camera's near plane gives
-  // [0, 1]; a perspective camera with a negative nearDistance keeps nothing in front of it,
-  // as GL (and so Coin) draws nothing.
-  void clipped(CameraRay& ray, const SbVec3d& origin, const SbVec3d& end) const {
-    SbVec4d a, b;
-    worldToClip_.multVecMatrix(SbVec4d(origin[0], origin[1], origin[2], 1.0), a);
-    worldToClip_.multVecMatrix(SbVec4d(end[0], end[1], end[2], 1.0), b);
-    double first = 0.0, last = 1.0;
-    // value(t) = p + t (q - p) >= 0, within a rounding slack of the clip volume's size.
-    const auto keep = [&](double p, double q) {
-      const double slack = 1e-6 * (std::fabs(p) + std::fabs(q));
-      if (q - p > 0.0) first = std::max(first, (-slack - p) / (q - p));
-      else if (q - p < 0.0) last = std::min(last, (-slack - p) / (q - p));
-      else if (p < -slack) last = -1.0;
-    };
-    keep(a[3], b[3]);
-    keep(a[3] + a[2], b[3] + b[2]);
-    keep(a[3] - a[2], b[3] - b[2]);
-    ray.first = float(first);
-    ray.last = float(last);
-  }
+  const CameraRays& cameraRays() const { return cameraRays_; }
 
   // The surfaces along `count` (at most kMaxPacket) neighbouring camera rays, rays[i]'s into
   // hits[i] in exact depth order, ending at limits[i], the window depth where the ray ends (1:
@@ -226,9 +158,9 @@ class Tracer {
       default:
         for (int i = 0; i < count; ++i) {
           const CameraRay& ray = rays[i];
-          const bool opaque =
-              surfacesAlong(ray.origin, ray.direction, ray.first, rayEnd(ray, limits[i]), hits[i]);
-          depths[i] = opaque ? windowDepth(ray, hits[i].back().t) : limits[i];
+          const bool opaque = surfacesAlong(ray.origin, ray.direction, ray.first,
+                                            cameraRays_.end(ray, limits[i]), hits[i]);
+          depths[i] = opaque ? cameraRays_.windowDepth(ray, hits[i].back().t) : limits[i];
         }
     }
   }
@@ -267,24 +199,6 @@ class Tracer {
   }
 
  private:
-  // Where a camera ray ending at window depth `limit` ends: its parameter (the far plane: 1).
-  float rayEnd(const CameraRay& ray, float limit) const {
-    if (!(limit < 1.0f)) return ray.last;  // the far plane clips as in GL
-    // The limit's point on this ray: its parameter, as the ray is linear in the world.
-    SbVec3d end;
-    clipToWorld_.multVecMatrix(SbVec3d(ray.nx, ray.ny, 2.0 * limit - 1.0), end);
-    const glm::vec3 toEnd = glm::vec3(end[0], end[1], end[2]) - ray.origin;
-    return std::min(ray.last, glm::dot(toEnd, ray.direction) / glm::dot(ray.direction, ray.direction));
-  }
-
-  // The window depth of the point at parameter `t` along a camera ray.
-  float windowDepth(const CameraRay& ray, float t) const {
-    SbVec3d clip;
-    const glm::vec3 p = ray.origin + t * ray.direction;
-    worldToClip_.multVecMatrix(SbVec3d(p.x, p.y, p.z), clip);
-    return glm::clamp(float(0.5 * clip[2] + 0.5), 0.0f, 1.0f);
-  }
-
   template <int Width, typename Packet>
   void visibleTogether(const CameraRay* rays, const float* limits, int count,
                        std::vector<Hit>* hits, float* depths,
@@ -306,7 +220,7 @@ class Tracer {
       packet.ray.dir_y[i] = rays[i].direction.y;
       packet.ray.dir_z[i] = rays[i].direction.z;
       packet.ray.tnear[i] = rays[i].first;
-      packet.ray.tfar[i] = rayEnd(rays[i], limits[i]);
+      packet.ray.tfar[i] = cameraRays_.end(rays[i], limits[i]);
       packet.ray.mask[i] = 0xFFFFFFFFu;
       packet.ray.id[i] = unsigned(i);
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
@@ -320,7 +234,7 @@ class Tracer {
       const bool opaque = packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
       inDepthOrder(hits[i], opaque,
                    Hit{packet.ray.tfar[i], packet.hit.primID[i], packet.hit.u[i], packet.hit.v[i]});
-      depths[i] = opaque ? windowDepth(rays[i], packet.ray.tfar[i]) : limits[i];
+      depths[i] = opaque ? cameraRays_.windowDepth(rays[i], packet.ray.tfar[i]) : limits[i];
     }
   }
 
@@ -633,9 +547,7 @@ class Tracer {
   int packetWidth_;  // camera rays traced together
   const TraceOptions& options_;
   SbMatrix viewing_;
-  SbDPMatrix worldToClip_;
-  SbDPMatrix clipToWorld_;
-  double reach_ = 1.0;
+  CameraRays cameraRays_;
   glm::vec3 viewDirection_{0.0f, 0.0f, 1.0f};
   static constexpr int kNotCasting = -1;
   std::vector<int> casting_;  // groups x lights: castingModel()
@@ -729,8 +641,8 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
         shades.clear();
         for (int x = 0; x < options.width; x += kMaxPacket) {
           const int count = std::min(kMaxPacket, options.width - x);
-          Tracer::CameraRay cameraRays[kMaxPacket];
-          for (int i = 0; i < count; ++i) cameraRays[i] = tracer.cameraRay(x + i, y);
+          CameraRay cameraRays[kMaxPacket];
+          for (int i = 0; i < count; ++i) cameraRays[i] = tracer.cameraRays().ray(x + i, y);
           if (reuse) {
             for (int i = 0; i < count; ++i) {
               const std::size_t at = std::size_t(x + i);

@@ -48,7 +48,7 @@ struct Case {
   const char* name;
   const char* fields;  // the group's; "" for the reference
   double distance;
-  bool traced;         // a map method that must say it traces instead
+  bool traced;  // a map method that must say it traces instead
 };
 
 class FarLight : public ::testing::TestWithParam<Case> {};
@@ -74,17 +74,18 @@ TEST_P(FarLight, CastsTheAnalyticShadowOrTracesItSayingWhy) {
   EXPECT_EQ(said, c.traced);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Methods, FarLight,
-    ::testing::Values(Case{"Map1e3", "method MAP", 1e3, false},
-                      Case{"OpacityMap1e3", "method OPACITY_MAP", 1e3, false},
-                      Case{"Map1e6", "method MAP", 1e6, true},
-                      Case{"OpacityMap1e18", "method OPACITY_MAP", 1e18, true},
-                      Case{"Rays1e18", "method RAYS", 1e18, false},
-                      Case{"Volumes1e3", "method VOLUMES", 1e3, false},
-                      Case{"Tracer1e18", "renderer TRACER", 1e18, false},
-                      Case{"Reference1e18", "", 1e18, false}),
-    [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Methods, FarLight,
+                         ::testing::Values(Case{"Map1e3", "method MAP", 1e3, false},
+                                           Case{"OpacityMap1e3", "method OPACITY_MAP", 1e3, false},
+                                           Case{"Map1e6", "method MAP", 1e6, true},
+                                           Case{"OpacityMap1e18", "method OPACITY_MAP", 1e18, true},
+                                           Case{"Rays1e18", "method RAYS", 1e18, false},
+                                           Case{"Volumes1e3", "method VOLUMES", 1e3, false},
+                                           Case{"Tracer1e18", "renderer TRACER", 1e18, false},
+                                           Case{"Reference1e18", "", 1e18, false}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return std::string(info.param.name);
+                         });
 
 // Past float's range the light reaches nothing in plain Coin (its fixed-function GL) and in
 // the tracer; the group's shading made the whole picture NaN, black. It draws what plain Coin

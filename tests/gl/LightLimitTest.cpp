@@ -51,7 +51,9 @@ std::string scene(int outside, int inside, const std::string& group) {
 // Eight lights' worth, in 8-bit steps.
 const double kEightLights = 255.0 * 8 * kIntensity;
 
-int centreGrey(const Image& image) { return image.pixel(kSize / 2, kSize / 2)[1]; }
+int centreGrey(const Image& image) {
+  return image.pixel(kSize / 2, kSize / 2)[1];
+}
 
 int limitWarnings(const CoinMessageCapture& messages, int inForce) {
   int count = 0;

@@ -162,8 +162,8 @@ TEST(SceneFileCheck, APercentSignAnywhereIsRefusedInAFileThatNamesFilesCoinMayPr
   init();
   for (const char* node : {"File { }", "Texture3 { }", "VRMLInline { }"}) {
     const std::string path = test::writeOutputFile(
-        "backstop.iv", std::string("#Inventor V2.1 ascii\nInfo { string \"50%\" }\n") + node +
-                           "\nCube { }\n");
+        "backstop.iv",
+        std::string("#Inventor V2.1 ascii\nInfo { string \"50%\" }\n") + node + "\nCube { }\n");
     EXPECT_EQ(checkError(path), path + ":2: error: '50%' holds a '%' in a file holding " +
                                     std::string(node).substr(0, std::string(node).find(' ')) +
                                     " (line 3), a node whose file names Coin may print as a "

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <Inventor/SbDPMatrix.h>
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+class SbMatrix;
+
+namespace ivshadow {
+
+// A pixel's camera ray: from the near plane (t = 0) towards the far plane (t = 1), of which GL
+// draws what lies in [first, last].
+struct CameraRay {
+  float nx = 0.0f, ny = 0.0f;  // the pixel's centre in normalised device coordinates
+  glm::vec3 origin{0.0f};
+  glm::vec3 direction{0.0f};
+  float first = 0.0f;
+  float last = 1.0f;
+};
+
+// The camera rays of a width x height picture seen through `viewing` and `projection` (Coin's
+// matrices, as GL draws with them), and where along them window depths lie. In doubles: a near
+// plane at 1e-11 or a far one 1e12 times as far lost the rays in a float inverse.
+class CameraRays {
+ public:
+  // `positions`: the scene's triangle corners, which every ray must be able to reach.
+  CameraRays(const SbMatrix& viewing, const SbMatrix& projection, int width, int height,
+             const std::vector<glm::vec3>& positions);
+
+  CameraRay ray(int x, int y) const;
+  // Where a ray ending at window depth `limit` ends: its parameter (1 and above: the far plane).
+  float end(const CameraRay& ray, float limit) const;
+  // The window depth of the point at parameter `t` along a ray.
+  float windowDepth(const CameraRay& ray, float t) const;
+
+ private:
+  void clip(CameraRay& ray) const;
+
+  int width_;
+  int height_;
+  SbDPMatrix worldToClip_;
+  SbDPMatrix clipToWorld_;
+  double reach_ = 1.0;  // farther than every triangle from the camera, with room
+};
+
+}  // namespace ivshadow
