@@ -35,14 +35,99 @@ std::unique_ptr<TracedPicturePass> TracedPicturePass::create(std::string& whyNot
   return pass;
 }
 
-void TracedPicturePass::readDepth(const std::array<int, 4>& viewport,
-                                  std::vector<float>& out) const {
-  out.resize(std::size_t(viewport[2]) * std::size_t(viewport[3]));
+namespace {
+
+// The depth attachment of the framebuffer bound for drawing: GL_DEPTH for the default one.
+GLenum depthAttachment(GLuint framebuffer) {
+  return framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+}
+
+GLint depthParameter(GLuint framebuffer, GLenum name) {
+  GLint value = 0;
+  glGetNamedFramebufferAttachmentParameteriv(framebuffer, depthAttachment(framebuffer), name,
+                                             &value);
+  return value;
+}
+
+// The internal format of the framebuffer's depth, as a single-sampled copy must have it to
+// be the target of a depth blit (GL asks the formats to match); GL_NONE without depth.
+GLenum depthFormat(GLuint framebuffer) {
+  GLint format = GL_NONE;
+  if (framebuffer != 0) {
+    const GLint type = depthParameter(framebuffer, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE);
+    const auto name = GLuint(depthParameter(framebuffer, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME));
+    if (type == GL_RENDERBUFFER)
+      glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_INTERNAL_FORMAT, &format);
+    else if (type == GL_TEXTURE)
+      glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    return GLenum(format);
+  }
+  // The default framebuffer names no format: the one its sizes say.
+  GLint stencil = 0;
+  glGetNamedFramebufferAttachmentParameteriv(0, GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+                                             &stencil);
+  if (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) == GL_FLOAT)
+    return stencil > 0 ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
+  switch (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE)) {
+    case 0:
+      return GL_NONE;
+    case 16:
+      return GL_DEPTH_COMPONENT16;
+    case 32:
+      return GL_DEPTH_COMPONENT32;
+    default:
+      return stencil > 0 ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
+  }
+}
+
+}  // namespace
+
+std::string TracedPicturePass::readDepth(const std::array<int, 4>& viewport,
+                                         std::vector<float>& out) const {
+  out.assign(std::size_t(viewport[2]) * std::size_t(viewport[3]), 1.0f);
   GlStateScope scope(GlStateScope::kFramebuffers);
   PixelStoreScope store;
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(scope.drawFramebuffer()));
-  glReadPixels(viewport[0], viewport[1], viewport[2], viewport[3], GL_DEPTH_COMPONENT, GL_FLOAT,
-               out.data());
+  const auto drawn = GLuint(scope.drawFramebuffer());
+  GLint samples = 0;
+  glGetNamedFramebufferParameteriv(drawn, GL_SAMPLES, &samples);
+  if (samples == 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, drawn);
+    glReadPixels(viewport[0], viewport[1], viewport[2], viewport[3], GL_DEPTH_COMPONENT, GL_FLOAT,
+                 out.data());
+    return {};
+  }
+  // One sample per pixel (the first's: a surface's samples in a pixel lie at nearly one
+  // depth), through a single-sampled copy of the viewport.
+  const GLenum format = depthFormat(drawn);
+  if (format == GL_NONE) return {};  // nothing to end the trace at
+  clearGlErrors();
+  GlRenderbuffer depth = createRenderbuffer();
+  glNamedRenderbufferStorage(depth.get(), format, viewport[2], viewport[3]);
+  GlFramebuffer resolved = createFramebuffer();
+  glNamedFramebufferRenderbuffer(resolved.get(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.get());
+  glBlitNamedFramebuffer(drawn, resolved.get(), viewport[0], viewport[1], viewport[0] + viewport[2],
+                         viewport[1] + viewport[3], 0, 0, viewport[2], viewport[3],
+                         GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved.get());
+  glReadPixels(0, 0, viewport[2], viewport[3], GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    out.assign(out.size(), 1.0f);
+    return "GL error " + std::to_string(error) + " resolving its " + std::to_string(samples) +
+           " samples";
+  }
+  return {};
+}
+
+DepthBuffer TracedPicturePass::drawDepthBuffer() {
+  GLint framebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  const auto drawn = GLuint(framebuffer);
+  if (drawn != 0 && depthParameter(drawn, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) == GL_NONE)
+    return {};
+  DepthBuffer buffer;
+  buffer.bits = depthParameter(drawn, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
+  buffer.floating = depthParameter(drawn, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) == GL_FLOAT;
+  return buffer;
 }
 
 std::string TracedPicturePass::upload(int width, int height, const float* rgba,

@@ -2,6 +2,7 @@
 
 #include "callbacks/GlHandles.h"
 #include "callbacks/GlProgram.h"
+#include "scene/ShadowTypes.h"
 
 #include <array>
 #include <memory>
@@ -21,8 +22,12 @@ class TracedPicturePass {
   static std::unique_ptr<TracedPicturePass> create(std::string& whyNot);
 
   // The draw framebuffer's window depths over `viewport` (x, y, width, height), rows bottom
-  // to top.
-  void readDepth(const std::array<int, 4>& viewport, std::vector<float>& out) const;
+  // to top. A multisampled framebuffer (an application's, FreeCAD's saveImage) is resolved
+  // first: GL cannot read its samples. Empty when read; else why not, and `out` holds the far
+  // plane (the trace then ends where GL's depth test would end nothing).
+  std::string readDepth(const std::array<int, 4>& viewport, std::vector<float>& out) const;
+  // The depth buffer of the draw framebuffer, as polygon offset sees it.
+  static DepthBuffer drawDepthBuffer();
   // Uploads a picture of `width` x `height` pixels (`rgba` premultiplied colour and
   // transmittance, `depth` window depths, rows top to bottom). Empty when uploaded; else what
   // GL said when allocating the textures.

@@ -1,8 +1,8 @@
 #include "nodes/CameraRays.h"
 
 #include <Inventor/SbMatrix.h>
-#include <Inventor/SbVec3f.h>
 #include <Inventor/SbVec3d.h>
+#include <Inventor/SbVec3f.h>
 #include <Inventor/SbVec4d.h>
 
 #include <glm/common.hpp>
@@ -29,9 +29,14 @@ CameraRays::CameraRays(const SbMatrix& viewing, const SbMatrix& projection, int 
 }
 
 CameraRay CameraRays::ray(int x, int y) const {
+  return rayAt((float(x) + 0.5f) / float(width_) * 2.0f - 1.0f,
+               1.0f - (float(y) + 0.5f) / float(height_) * 2.0f);
+}
+
+CameraRay CameraRays::rayAt(float nx, float ny) const {
   CameraRay ray;
-  ray.nx = (float(x) + 0.5f) / float(width_) * 2.0f - 1.0f;
-  ray.ny = 1.0f - (float(y) + 0.5f) / float(height_) * 2.0f;
+  ray.nx = nx;
+  ray.ny = ny;
   SbVec4d nearPoint, farPoint;
   clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, -1.0, 1.0), nearPoint);
   clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, 1.0, 1.0), farPoint);
@@ -95,6 +100,28 @@ float CameraRays::windowDepth(const CameraRay& ray, float t) const {
   const glm::vec3 p = ray.origin + t * ray.direction;
   worldToClip_.multVecMatrix(SbVec3d(p.x, p.y, p.z), clip);
   return glm::clamp(float(0.5 * clip[2] + 0.5), 0.0f, 1.0f);
+}
+
+}  // namespace ivshadow
+
+namespace ivshadow {
+
+double CameraRays::depthSlope(const CameraRay& ray, const glm::vec3& point,
+                              const glm::vec3& normal) const {
+  const auto depthOnPlane = [&](const CameraRay& r) -> double {
+    const float along = glm::dot(r.direction, normal);
+    if (along == 0.0f) return -1.0;
+    const float t = glm::dot(point - r.origin, normal) / along;
+    SbVec4d clip;
+    const glm::vec3 p = r.origin + t * r.direction;
+    worldToClip_.multVecMatrix(SbVec4d(p.x, p.y, p.z, 1.0), clip);
+    return clip[3] > 0.0 ? 0.5 * clip[2] / clip[3] + 0.5 : -1.0;
+  };
+  const double here = depthOnPlane(ray);
+  const double across = depthOnPlane(rayAt(ray.nx + 2.0f / float(width_), ray.ny));
+  const double up = depthOnPlane(rayAt(ray.nx, ray.ny + 2.0f / float(height_)));
+  if (here < 0.0 || across < 0.0 || up < 0.0) return 1.0;
+  return std::min(1.0, std::max(std::fabs(across - here), std::fabs(up - here)));
 }
 
 }  // namespace ivshadow

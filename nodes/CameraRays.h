@@ -30,10 +30,16 @@ class CameraRays {
              const std::vector<glm::vec3>& positions);
 
   CameraRay ray(int x, int y) const;
+  // The ray through normalised device coordinates (nx, ny).
+  CameraRay rayAt(float nx, float ny) const;
   // Where a ray ending at window depth `limit` ends: its parameter (1 and above: the far plane).
   float end(const CameraRay& ray, float limit) const;
   // The window depth of the point at parameter `t` along a ray.
   float windowDepth(const CameraRay& ray, float t) const;
+  // How fast the window depth of the plane through `point` with normal `normal` changes from
+  // `ray`'s pixel to the next, across or up, the larger (GL's m in glPolygonOffset); 1, the
+  // whole depth range, where the plane is seen edge-on.
+  double depthSlope(const CameraRay& ray, const glm::vec3& point, const glm::vec3& normal) const;
 
  private:
   void clip(CameraRay& ray) const;

@@ -1,10 +1,10 @@
 #include "nodes/GroupContents.h"
 
-#include "scene/ShadowTypes.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
 #include "nodes/NodesOfType.h"
+#include "scene/ShadowTypes.h"
 #include "scene/WarnOnce.h"
 
 #include <Inventor/SbMatrix.h>

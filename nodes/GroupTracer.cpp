@@ -195,7 +195,12 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const SbMatrix& viewing = cameraInside ? scene_->viewing() : SoViewingMatrixElement::get(state);
   const SbMatrix& projection =
       cameraInside ? scene_->projection() : SoProjectionMatrixElement::get(state);
-  context->pass->readDepth(viewport, context->depthNow);
+  if (const std::string error = context->pass->readDepth(viewport, context->depthNow);
+      !error.empty() && firstWarning(owner_, "depth read: " + error))
+    SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                              "%s: the framebuffer's depth could not be read (%s); the traced "
+                              "picture covers what GL drew before it",
+                              describeNode(owner_).c_str(), error.c_str());
   // The same camera rays through the same shapes: they meet the surfaces kept.
   const bool sameView = context->shapes == shapesVersion_ && context->viewing == viewing &&
                         context->projection == projection && context->viewport == viewport &&
@@ -213,6 +218,7 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     options.height = std::max(1, int(std::ceil(float(viewport[3]) * scale)));
     const bool reduced = options.width < viewport[2] || options.height < viewport[3];
     options.bounceSamples = settings.bounceSamples;
+    options.depthBuffer = TracedPicturePass::drawDepthBuffer();
     const float* limit = reduced ? reducedLimit(*context, viewport, options.width, options.height)
                                  : context->depthNow.data();
     // The first picture keeps no surfaces: a single frame (a batch render) would only pay for

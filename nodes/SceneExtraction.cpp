@@ -22,6 +22,7 @@
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
 #include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoLightElement.h>
+#include <Inventor/elements/SoPolygonOffsetElement.h>
 #include <Inventor/lists/SoNodeList.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
@@ -241,6 +242,14 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   out.shadowed =
       out.group >= 0 && (SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED) != 0;
   if (out.group < 0) out.lightSet = lightSetOf(data, currentLights(data, state));
+  float factor = 0.0f, units = 0.0f;
+  SoPolygonOffsetElement::Style styles = SoPolygonOffsetElement::FILLED;
+  SbBool offset = FALSE;
+  SoPolygonOffsetElement::get(state, factor, units, styles, offset);
+  if (offset && (styles & SoPolygonOffsetElement::FILLED) != 0) {
+    out.offsetFactor = factor;
+    out.offsetUnits = units;
+  }
 
   SbColor ambient, diffuse, specular, emission;
   float shininess = 0.0f, transparency = 0.0f;

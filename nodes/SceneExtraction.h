@@ -99,6 +99,10 @@ struct Triangle {
   bool twoSided = false;
   bool clockwise = false;
   bool shadowed = false;
+  // GL's polygon offset where it is drawn (SoPolygonOffset on filled faces): factor and
+  // units, 0 none.
+  float offsetFactor = 0.0f;
+  float offsetUnits = 0.0f;
   // Lit per pixel, as a group's or a peeling separator's shading program lights it (else per
   // vertex, as Coin's fixed-function GL does): inside a group or a SoPeelingSeparator.
   bool perPixel = false;

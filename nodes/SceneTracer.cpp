@@ -160,7 +160,7 @@ class Tracer {
           const CameraRay& ray = rays[i];
           const bool opaque = surfacesAlong(ray.origin, ray.direction, ray.first,
                                             cameraRays_.end(ray, limits[i]), hits[i]);
-          depths[i] = opaque ? cameraRays_.windowDepth(ray, hits[i].back().t) : limits[i];
+          depths[i] = opaque ? opaqueDepth(ray, hits[i].back()) : limits[i];
         }
     }
   }
@@ -199,6 +199,23 @@ class Tracer {
   }
 
  private:
+  // The window depth GL depth-tests what it draws after the picture against at the opaque
+  // surface `hit`: offset as GL offsets a face under SoPolygonOffset (factor times the depth
+  // slope plus units times the buffer's resolution), so that lines drawn on the face stay in
+  // front of it (a cube's lower edges vanished under TRACER).
+  float opaqueDepth(const CameraRay& ray, const Hit& hit) const {
+    const float depth = cameraRays_.windowDepth(ray, hit.t);
+    const Triangle& tri = data_.triangles[hit.primitive];
+    if (tri.offsetFactor == 0.0f && tri.offsetUnits == 0.0f) return depth;
+    const double slope =
+        tri.offsetFactor != 0.0f
+            ? cameraRays_.depthSlope(ray, ray.origin + hit.t * ray.direction, tri.geometricNormal)
+            : 0.0;
+    const double offset = double(tri.offsetFactor) * slope +
+                          double(tri.offsetUnits) * options_.depthBuffer.resolution(depth);
+    return float(std::clamp(double(depth) + offset, 0.0, 1.0));
+  }
+
   template <int Width, typename Packet>
   void visibleTogether(const CameraRay* rays, const float* limits, int count,
                        std::vector<Hit>* hits, float* depths,
@@ -234,7 +251,7 @@ class Tracer {
       const bool opaque = packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
       inDepthOrder(hits[i], opaque,
                    Hit{packet.ray.tfar[i], packet.hit.primID[i], packet.hit.u[i], packet.hit.v[i]});
-      depths[i] = opaque ? cameraRays_.windowDepth(rays[i], packet.ray.tfar[i]) : limits[i];
+      depths[i] = opaque ? opaqueDepth(rays[i], hits[i].back()) : limits[i];
     }
   }
 

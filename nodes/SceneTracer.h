@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "scene/ShadowTypes.h"
 
 #include <Inventor/SbMatrix.h>
 
@@ -54,6 +55,10 @@ struct TraceOptions {
   // kept (by a trace of the same view) are composited instead of tracing the camera rays.
   SurfacesMet* surfaces = nullptr;
   bool reuseSurfaces = false;
+  // The depth buffer GL draws over the picture with: the depth of faces under SoPolygonOffset
+  // is offset as GL offsets them there, so that lines drawn on them stay in front. None: no
+  // offset.
+  DepthBuffer depthBuffer;
 };
 
 // What a trace gives for each pixel, rows top to bottom: the surfaces met, composited front

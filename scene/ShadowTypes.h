@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -18,6 +19,24 @@ enum class LightKind { Point, Spot, Directional };
 // GL lights Coin uses (GL_LIGHT0..7; it drops the lights in force past them), and so deep
 // shadow map slots per group. Every path lights with the first kMaxGlLights, as Coin draws.
 inline constexpr int kMaxGlLights = 8;
+
+// A depth buffer as GL's polygon offset sees it: its smallest resolvable difference near
+// window depth `depth` (r in glPolygonOffset) is one step of its fixed-point values, or of
+// the float there. The GL layer reads it from the framebuffer; the tracer offsets the depth
+// it writes by it, as GL offsets the faces it draws.
+struct DepthBuffer {
+  int bits = 0;  // 0: no depth buffer
+  bool floating = false;
+
+  double resolution(float depth) const {
+    if (floating) {
+      int exponent = 0;
+      std::frexp(depth > 1e-30f ? depth : 1e-30f, &exponent);
+      return std::ldexp(1.0, exponent - 24);  // 23 stored bits: one step of the float
+    }
+    return bits > 0 ? 1.0 / (std::ldexp(1.0, bits) - 1.0) : 0.0;
+  }
+};
 
 // Opacity from which a surface counts as opaque: within half an 8-bit step of 1, since Coin
 // sends colours as 8-bit values and interpolating a constant alpha of 1 across a triangle can
