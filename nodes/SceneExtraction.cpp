@@ -92,7 +92,6 @@ SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, cons
     Group& group = data.groups[index];
     group.lights.clear();
     group.casting.clear();
-    group.outsideLights = currentLights(data, action->getState());
     data.groupStack.push_back(int(index));
     return SoCallbackAction::CONTINUE;
   }
@@ -101,7 +100,6 @@ SoCallbackAction::Response groupEnter(void* user, SoCallbackAction* action, cons
   group.bounce = static_cast<const SoTransparentShadowGroup*>(node)->bounce.getValue() == TRUE;
   group.path = CoinRef<SoPath>(action->getCurPath()->copy());
   group.toWorld = action->getModelMatrix();
-  group.outsideLights = currentLights(data, action->getState());
   data.groupStack.push_back(int(data.groups.size()));
   data.groups.push_back(std::move(group));
   return SoCallbackAction::CONTINUE;
@@ -241,7 +239,9 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   out.perPixel = out.group >= 0 || data.peelingDepth > 0;
   out.shadowed =
       out.group >= 0 && (SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED) != 0;
-  if (out.group < 0) out.lightSet = lightSetOf(data, currentLights(data, state));
+  // The lights in force here, as GL lights the shape with them (a light in a separator of a
+  // group lights what follows it there, not the whole group).
+  out.lightSet = lightSetOf(data, currentLights(data, state));
   float factor = 0.0f, units = 0.0f;
   SoPolygonOffsetElement::Style styles = SoPolygonOffsetElement::FILLED;
   SbBool offset = FALSE;
@@ -343,7 +343,6 @@ void placeLights(Extraction& data) {
       warnLightsPastGlLimit(data.lights[std::size_t(set[kMaxGlLights])].node, int(set.size()));
   for (Group& group : data.groups) {
     const auto& node = *static_cast<const SoTransparentShadowGroup*>(group.node);
-    warnLightsPastGlLimit(group.node, int(group.outsideLights.size() + group.lights.size()));
     group.casting.clear();
     for (int index : group.lights) {
       CastingLight where;
@@ -408,8 +407,10 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
 
 bool SceneTracer::updateLights(const SoPath* path) {
   Extraction& data = data_->extraction;
-  // Triangles outside any group index light sets of the lights read before.
-  if (!data.lightSets.empty()) return false;
+  // Triangles index light sets of the lights read before: they stay right while the same
+  // lights are read in the same order.
+  std::vector<const SoLight*> before;
+  for (const Light& light : data.lights) before.push_back(light.node);
   data.lights.clear();
   data.lightOfNode.clear();
   data.groupStack.clear();
@@ -429,6 +430,9 @@ bool SceneTracer::updateLights(const SoPath* path) {
   data.lightsOnly = false;
   data.groupStack.clear();
   if (data.groupsChanged || data.groupsMet != data.groups.size()) return false;
+  if (data.lights.size() != before.size()) return false;
+  for (std::size_t i = 0; i < before.size(); ++i)
+    if (data.lights[i].node != before[i]) return false;
   placeLights(data);
   return true;
 }

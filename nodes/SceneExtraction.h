@@ -57,7 +57,6 @@ struct Group {
   // (a path holds a reference to every node on it, the group's ancestors included, and this
   // extraction is kept by the group's own tracer: the scene would never be freed).
   CoinRef<SoPath> path;
-  std::vector<int> outsideLights;  // lit the group from outside (SoLightElement at entry)
   std::vector<int> lights;         // every light turned on in the group's subgraph
   std::vector<int> casting;        // those that cast (nodes/CastingLight.h), as many as GL's
   std::unique_ptr<CasterScene> casters;
@@ -93,7 +92,7 @@ struct Triangle {
   glm::vec3 geometricNormal;  // from the winding: counter-clockwise front
   int material = 0;
   int texture = -1;
-  int lightSet = -1;  // outside groups
+  int lightSet = -1;  // the lights in force where it is drawn (Extraction::lightSets)
   int group = -1;     // innermost active SoTransparentShadowGroup
   bool lit = true;
   bool twoSided = false;

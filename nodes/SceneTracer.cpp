@@ -390,23 +390,12 @@ class Tracer {
     const Material& material = data_.materials[std::size_t(tri.material)];
     glm::vec3 lit = material.emission + material.globalAmbient * material.ambient;
     const Group* group = tri.group >= 0 ? &data_.groups[std::size_t(tri.group)] : nullptr;
-    const std::vector<int>* sets[2] = {nullptr, nullptr};
-    if (group) {
-      sets[0] = &group->outsideLights;
-      sets[1] = &group->lights;
-    } else {
-      sets[0] = &data_.lightSets[std::size_t(tri.lightSet)];
-    }
-    // GL lights with the first kMaxGlLights lights in force (Coin drops the others), the
-    // group's outside lights first as GL numbers them.
+    // GL lights with the first kMaxGlLights lights in force (Coin drops the others).
     int inForce = 0;
-    for (const std::vector<int>* set : sets) {
-      if (set == nullptr) continue;
-      for (int index : *set) {
-        if (inForce++ >= kMaxGlLights) break;
-        lit += contribution(data_.lights[std::size_t(index)], tri, group, normal, position, diffuse,
-                            material, rays, row);
-      }
+    for (int index : data_.lightSets[std::size_t(tri.lightSet)]) {
+      if (inForce++ >= kMaxGlLights) break;
+      lit += contribution(data_.lights[std::size_t(index)], tri, group, normal, position, diffuse,
+                          material, rays, row);
     }
     if (group != nullptr && group->bounce && options_.bounceSamples > 0)
       lit += diffuse * indirect(*group, tri, normal, position, rays);

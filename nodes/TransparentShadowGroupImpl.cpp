@@ -391,6 +391,10 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     peelStatistics_.passes = 0;
     return false;
   }
+  // Inside an enclosing group's capture (its RAYS lights' surfaces), likewise: this group's
+  // own passes wrote its colours into the capture targets, and the enclosing group's shadows
+  // fell on nothing below it (the floor around a nested group's glass stayed lit).
+  if (ShadowGroupElement::capturing(state)) return false;
   // Traced, the group needs none of the GL path's programs or maps.
   if (traced(action)) {
     contents_.update(action);
