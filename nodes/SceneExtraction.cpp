@@ -7,6 +7,7 @@
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
 #include "scene/CoinRef.h"
+#include "scene/DrawnColour.h"
 #include "scene/EnvironmentValues.h"
 #include "scene/SceneTriangles.h"
 #include "scene/ShadowTypes.h"
@@ -298,7 +299,7 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
     out.normal[i] = toGlm(n);
     action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
                         v->getMaterialIndex());
-    out.colour[i] = glm::vec4(toGlm(diffuse), 1.0f - transparency);
+    out.colour[i] = drawnColour(diffuse, transparency);
     SbVec4f tc;
     textureMatrix.multVecMatrix(v->getTextureCoords(), tc);
     const float w = tc[3] != 0.0f ? tc[3] : 1.0f;
