@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
+#include "ivshadow/Export.h"
 #include "callbacks/GlProgram.h"
 #include "scene/ShadowTypes.h"
 
@@ -16,7 +17,7 @@ namespace ivshadow {
 // framebuffer: its colour composited over what is there (dst = rgb + a * dst, alpha the
 // transmittance the picture leaves) and its nearest opaque depth written, so that what GL
 // draws after depth-tests against it.
-class TracedPicturePass {
+class IVSHADOW_INTERNAL TracedPicturePass {
  public:
   // Null, with the reason, when the context lacks what the pass needs (GL 4.5, its program).
   static std::unique_ptr<TracedPicturePass> create(std::string& whyNot);

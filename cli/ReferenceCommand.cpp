@@ -4,6 +4,7 @@
 
 #include "cli/ExitStatus.h"
 #include "cli/ProgressBar.h"
+#include "cli/ReferenceOverlay.h"
 #include "cli/RenderMemory.h"
 #include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
@@ -108,6 +109,10 @@ int runReference(const ReferenceCommandOptions& options) {
     }
     for (const std::string& warning : result->warnings)
       std::cerr << options.scene << ": warning: " << warning << '\n';
+    if (const std::string error = drawUntracedOver(view.root.get(), reference.background, *result);
+        !error.empty())
+      std::cerr << options.scene << ": warning: the shapes GL draws are missing: " << error
+                << '\n';
     // Both files or neither.
     const Image picture = result->image.toImage();
     OutputFiles outputs;

@@ -66,6 +66,11 @@ OffscreenRenderer::~OffscreenRenderer() {
 }
 
 OffscreenRenderer::FrameTiming OffscreenRenderer::render(SoNode* root) {
+  return render([root](SoGLRenderAction& action) { action.apply(root); });
+}
+
+OffscreenRenderer::FrameTiming OffscreenRenderer::render(
+    const std::function<void(SoGLRenderAction&)>& draw) {
   using Clock = std::chrono::steady_clock;
   impl_->context->makeCurrent();
   const auto start = Clock::now();
@@ -75,7 +80,7 @@ OffscreenRenderer::FrameTiming OffscreenRenderer::render(SoNode* root) {
     // an EGL context has none, which is harmless, so that one warning is dropped.
     CoinMessageCapture capture;
     if (impl_->timer) impl_->timer->begin();
-    impl_->action->apply(root);
+    draw(*impl_->action);
     if (impl_->timer) impl_->timer->end();
     waitForGpu();
     capture.forwardExcept("glxglue_isdirect");

@@ -4,6 +4,7 @@
 
 #include <Inventor/SbColor.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -38,6 +39,9 @@ class OffscreenRenderer {
 
   void setBackground(const SbColor& colour) { background_ = colour; }
   FrameTiming render(SoNode* root);
+  // The same frame, drawing through `draw` (given the action, in the bound and cleared
+  // target) instead of applying the action to one root.
+  FrameTiming render(const std::function<void(SoGLRenderAction&)>& draw);
   Image read() const;
 
   SoGLRenderAction& action();

@@ -29,8 +29,8 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   result.triangles = tracer->triangles();
   for (const std::string& name : tracer->untracedShapes())
     result.warnings.push_back(name +
-                              " is drawn with lines, points or screen-aligned pixels; the "
-                              "reference does not draw it");
+                              " is drawn with lines, points or screen-aligned pixels: GL draws "
+                              "it over the traced picture, without shadows");
   result.image.width = options.width;
   result.image.height = options.height;
   const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
@@ -44,12 +44,16 @@ std::optional<ReferenceResult> renderReference(SoNode* root, const ReferenceOpti
   trace.cancel = options.cancel;
   trace.rowsDone = options.rowsDone;
   trace.bounceSamples = options.bounceSamples;
+  trace.depthBuffer = options.depthBuffer;
   TracedPixels pixelsOut;
   if (!tracer->trace(trace, pixelsOut)) return std::nullopt;
   for (std::size_t i = 0; i < pixels; ++i)
     for (int c = 0; c < 3; ++c)
       result.image.rgb[i * 3 + std::size_t(c)] = pixelsOut.rgba[i * 4 + std::size_t(c)] +
                                                  pixelsOut.rgba[i * 4 + 3] * options.background[c];
+  result.tracedRgba = std::move(pixelsOut.rgba);
+  result.tracedDepth = std::move(pixelsOut.depth);
+  result.untracedPaths = tracer->untracedPaths();
   result.shadowRays = pixelsOut.shadowRays;
   result.bounceRays = pixelsOut.bounceRays;
   return result;

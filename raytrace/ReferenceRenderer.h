@@ -1,6 +1,7 @@
 #pragma once
 
 #include "image/Image.h"
+#include "scene/ShadowTypes.h"
 
 #include <Inventor/SbColor.h>
 
@@ -39,10 +40,20 @@ struct ReferenceOptions {
   // group's surfaces it faces.
   int bounceSamples = kDefaultBounceSamples;
   static constexpr int kDefaultBounceSamples = 256;
+  // The depth buffer GL draws the untraced shapes over it with (cli/ReferenceOverlay.h: the
+  // headless target's 24 bits): faces under SoPolygonOffset are offset for it, as GL would.
+  DepthBuffer depthBuffer{24, false};
 };
 
 struct ReferenceResult {
   FloatImage image;
+  // What the trace left for GL to draw over it (cli/ReferenceOverlay.h): the traced picture
+  // (premultiplied colour and transmittance, and the nearest opaque surface's window depth,
+  // rows top to bottom) and the way from the root to every shape it did not trace (child
+  // indices; index 0, the root's, unused).
+  std::vector<float> tracedRgba;
+  std::vector<float> tracedDepth;
+  std::vector<std::vector<int>> untracedPaths;
   std::vector<std::string> warnings;  // shapes it could not draw, named
   std::size_t triangles = 0;
   std::size_t shadowRays = 0;
