@@ -15,7 +15,8 @@ struct ReferenceResult;
 // depth-tested against its surfaces, exactly as `renderer TRACER` draws them. `root` is the
 // scene the reference traced; `background` its background. The pixels GL changed take GL's
 // 8-bit colour; the others keep the trace's floats. Empty when drawn (or nothing was left to
-// draw); else why not, and the picture stays the trace's.
+// draw); else why not, and the picture stays the trace's. The traced picture and its depth
+// are released either way.
 std::string drawUntracedOver(SoNode* root, const SbColor& background, ReferenceResult& result);
 
 }  // namespace ivshadow

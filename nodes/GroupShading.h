@@ -47,6 +47,9 @@ class GroupShading {
   void syncTexGen(SoState* state);
   void syncTexGen(SoState* state, bool generated);
 
+  // GL lights on before the group, as begin() found them this frame.
+  int outsideLights() const { return outsideLights_; }
+
  private:
   // Sets localToEye_ and projection_.
   void findView(SoState* state);

@@ -29,7 +29,9 @@ PeelingSeparatorImpl::PeelingSeparatorImpl(SoPeelingSeparator* owner)
       shading_(contents_),
       tracer_(owner, "method TRACER") {}
 
-PeelingSeparatorImpl::~PeelingSeparatorImpl() = default;
+PeelingSeparatorImpl::~PeelingSeparatorImpl() {
+  forgetWarnings(owner_);
+}
 
 void PeelingSeparatorImpl::renderPlainly(SoGLRenderAction* action, bool inPath) {
   if (inPath)

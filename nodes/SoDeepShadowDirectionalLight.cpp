@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/ShadowFields.h"
+#include "scene/WarnOnce.h"
 
 SO_NODE_SOURCE(SoDeepShadowDirectionalLight);
 
@@ -21,4 +22,6 @@ SoDeepShadowDirectionalLight::SoDeepShadowDirectionalLight() {
   IVSHADOW_ADD_SHADOW_FIELDS();
 }
 
-SoDeepShadowDirectionalLight::~SoDeepShadowDirectionalLight() = default;
+SoDeepShadowDirectionalLight::~SoDeepShadowDirectionalLight() {
+  ivshadow::forgetWarnings(this);
+}

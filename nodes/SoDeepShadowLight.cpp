@@ -1,6 +1,7 @@
 #include "ivshadow/SoDeepShadowLight.h"
 
 #include "nodes/ShadowFields.h"
+#include "scene/WarnOnce.h"
 
 SO_NODE_SOURCE(SoDeepShadowLight);
 
@@ -23,4 +24,6 @@ SoDeepShadowLight::SoDeepShadowLight() {
   SO_NODE_ADD_FIELD(farRadius, (-1.0f));
 }
 
-SoDeepShadowLight::~SoDeepShadowLight() = default;
+SoDeepShadowLight::~SoDeepShadowLight() {
+  ivshadow::forgetWarnings(this);
+}

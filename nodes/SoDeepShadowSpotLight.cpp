@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/ShadowFields.h"
+#include "scene/WarnOnce.h"
 
 SO_NODE_SOURCE(SoDeepShadowSpotLight);
 
@@ -23,4 +24,6 @@ SoDeepShadowSpotLight::SoDeepShadowSpotLight() {
   SO_NODE_ADD_FIELD(farRadius, (-1.0f));
 }
 
-SoDeepShadowSpotLight::~SoDeepShadowSpotLight() = default;
+SoDeepShadowSpotLight::~SoDeepShadowSpotLight() {
+  ivshadow::forgetWarnings(this);
+}

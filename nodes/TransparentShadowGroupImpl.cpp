@@ -1,6 +1,7 @@
 #include "nodes/TransparentShadowGroupImpl.h"
 
 #include "nodes/DeepShadowSettings.h"
+#include "nodes/DepthPrecision.h"
 #include "nodes/TracerActivity.h"
 
 #include "callbacks/DeepShadowPass.h"
@@ -92,12 +93,22 @@ ShadingFeatures featuresOf(const std::vector<MapState>& maps, std::size_t count)
 TransparentShadowGroupImpl::TransparentShadowGroupImpl(SoSeparator* owner,
                                                        ChildrenRenderer renderChildren)
     : owner_(owner),
-      renderChildren_(std::move(renderChildren)),
+      // Every pass over the children (a RAYS capture, a peel, the shading) starts with the GL
+      // lights past those on at the group black, as the frame's first did: a light below the
+      // group sets its GL light only where it is traversed, and the pass before left its
+      // values there, lighting shapes traversed before it (brighter than Coin and the tracer).
+      renderChildren_(
+          [this, draw = std::move(renderChildren)](SoGLRenderAction* action, bool inPath) {
+            darkenLights(shading_.outsideLights());
+            draw(action, inPath);
+          }),
       contents_(owner, true),
       shading_(contents_),
       tracer_(owner, "renderer TRACER") {}
 
-TransparentShadowGroupImpl::~TransparentShadowGroupImpl() = default;
+TransparentShadowGroupImpl::~TransparentShadowGroupImpl() {
+  forgetWarnings(owner_);
+}
 
 void TransparentShadowGroupImpl::changed(SoNotList* list) {
   // A traced group asking for its refined frame (this one or one inside) changes nothing the
@@ -404,6 +415,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     settings.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
     if (tracer_.render(action, contents_, settings, statistics_)) return true;
   }
+  warnCoarseDepth(owner_, state);
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
     auto pass = DeepShadowPass::create(whyNot);
