@@ -35,4 +35,11 @@ inline constexpr MethodAgreement kMethodAgreements[] = {
      "within a slice blend"},
 };
 
+// The agreement of the path named `path` (one of the table's; the table ends the search).
+inline const MethodAgreement& methodAgreement(const std::string& path) {
+  for (const MethodAgreement& agreement : kMethodAgreements)
+    if (path == agreement.path) return agreement;
+  return kMethodAgreements[0];
+}
+
 }  // namespace ivshadow
