@@ -4,6 +4,7 @@
 #include "image/ImageFile.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -42,6 +43,37 @@ bool OutputFiles::commit(const std::atomic<bool>* cancel) {
   if (cancel != nullptr && cancel->load()) return false;
   for (const std::unique_ptr<AtomicFile>& file : files) file->commit();
   return true;
+}
+
+namespace {
+
+volatile std::sig_atomic_t heldSignal = 0;
+
+void holdSignal(int signal) {
+  heldSignal = signal;
+}
+
+}  // namespace
+
+void OutputFiles::commitWhole() {
+  constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction hold {};
+  hold.sa_handler = holdSignal;
+  sigemptyset(&hold.sa_mask);
+  struct sigaction previous[3];
+  heldSignal = 0;
+  for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &hold, &previous[i]);
+  const auto deliver = [&] {
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &previous[i], nullptr);
+    if (heldSignal != 0) std::raise(heldSignal);
+  };
+  try {
+    commit();
+  } catch (...) {
+    deliver();
+    throw;
+  }
+  deliver();
 }
 
 }  // namespace ivshadow

@@ -33,6 +33,11 @@ class OutputFiles {
   // cannot undo those (renames within one directory fail only when the directory changed
   // under the command).
   bool commit(const std::atomic<bool>* cancel = nullptr);
+  // As commit(), for a process that leaves SIGINT, SIGTERM and SIGHUP to their default action
+  // (the viewer): one that arrives during the writes is held until every output is in place,
+  // or none is, and then delivered, so the process ends as the signal says without a
+  // temporary left behind.
+  void commitWhole();
 
  private:
   struct Output {

@@ -307,7 +307,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
         windowPicture = imageFromQt(window.screen()->grabWindow(window.winId()).toImage());
         outputs.addImage(options.windowShot, windowPicture);
       }
-      outputs.commit();
+      outputs.commitWhole();
     });
     if (status != 0) return status;
     if (inspecting) std::cout << "inspector: " << window.inspector().status().toStdString() << '\n';
