@@ -68,6 +68,8 @@ seed() {
 }
 
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
+# SceneRenderFuzzer's differential oracle (docs/AGREEMENT.md's floors); 0 turns it off.
+export IVSHADOW_FUZZ_ORACLE=${IVSHADOW_FUZZ_ORACLE-1}
 export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/sanitizers/ubsan.supp
 table="| harness | seconds | runs | findings |
