@@ -5,6 +5,7 @@
 #include "cli/ExitStatus.h"
 #include "cli/OpenRenderer.h"
 #include "cli/ProgressBar.h"
+#include "cli/ReferenceOverlay.h"
 #include "cli/RenderMemory.h"
 #include "cli/TradePlot.h"
 #include "headless/FrameStatistics.h"
@@ -193,6 +194,11 @@ int runTrade(const TradeOptions& options) {
     std::optional<ReferenceResult> reference = renderReference(view.root.get(), referenceOptions);
     const double referenceMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (const std::string error =
+            drawUntracedOver(view.root.get(), referenceOptions.background, *reference);
+        !error.empty())
+      std::cerr << options.scene << ": warning: the shapes GL draws are missing from the "
+                << "reference: " << error << '\n';
     const Image exact = reference->image.toImage();
     bar.update(++done, total, "exact reference");
 
