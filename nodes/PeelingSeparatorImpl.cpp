@@ -15,6 +15,7 @@
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
+#include <Inventor/elements/SoLightElement.h>
 #include <Inventor/elements/SoShapeStyleElement.h>
 #include <Inventor/errors/SoDebugError.h>
 
@@ -163,9 +164,17 @@ bool PeelingSeparatorImpl::peel(SoGLRenderAction* action, bool inPath, GroupShad
     options.maxPasses = 0;
   }
   options.earlyTermination = owner_->earlyTermination.getValue();
+  // Every pass starts with the GL lights past those in force here black, as the first did: a
+  // light below sets its GL light only where it is traversed, and the pass before left its
+  // values there, lighting shapes traversed before it.
+  const int lightsHere = SoLightElement::getLights(action->getState()).getLength();
   const std::string failure = peelSubgraph(
       action, *pass, shading, options,
-      [this, inPath](SoGLRenderAction* drawing) { renderPlainly(drawing, inPath); }, statistics_);
+      [this, inPath, lightsHere](SoGLRenderAction* drawing) {
+        darkenLights(lightsHere);
+        renderPlainly(drawing, inPath);
+      },
+      statistics_);
   if (failure.empty()) return true;
   if (firstWarning(owner_, "no peel targets: " + failure))
     SoDebugError::postWarning("SoPeelingSeparator",

@@ -131,3 +131,37 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace ivshadow::test
+
+namespace ivshadow::test {
+namespace {
+
+// The same inside a SoPeelingSeparator outside any group, drawn in several peel passes: the
+// light met in one pass stayed set for the next, lighting the glass traversed before it (the
+// differential test found it in groups first). Coin lights the first glass with the first
+// light only; GL and the reference must agree, to an 8-bit step and the peel's blend.
+TEST(NestedGroupsPeeling, ALightInAPeelingSeparatorLightsOnlyWhatFollowsItInEveryPass) {
+  init();
+  const std::string text =
+      "#Inventor V2.1 ascii\nSeparator {\n"
+      "OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+      "DirectionalLight { direction 0 0 -1 intensity 0.3 }\n"
+      "PeelingSeparator { method FRAGMENT_LISTS\n"
+      "  Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 "
+      "transparency 0.5 }\n"
+      "  Coordinate3 { point [ -1 -0.5 0, 0 -0.5 0, 0 0.5 0, -1 0.5 0 ] }\n"
+      "  FaceSet { numVertices 4 }\n"
+      "  DirectionalLight { direction 0 0 -1 intensity 0.6 }\n"
+      "  Coordinate3 { point [ 0 -0.5 0.1, 1 -0.5 0.1, 1 0.5 0.1, 0 0.5 0.1 ] }\n"
+      "  FaceSet { numVertices 4 }\n"
+      "}\n}\n";
+  const Image gl = renderIv(text, kSize);
+  const Image exact = referenceIv(text, kSize);
+  // The first glass: 0.3 of white through alpha 0.5 over black; the second: 0.9.
+  for (const auto& [x, expected] : {std::pair{60, 0.5 * 0.3}, std::pair{180, 0.5 * 0.9}}) {
+    EXPECT_NEAR(exact.pixel(x, 120)[0], 255.0 * expected, 1.0) << x;
+    EXPECT_NEAR(gl.pixel(x, 120)[0], 255.0 * expected, 2.0) << x;
+  }
+}
+
+}  // namespace
+}  // namespace ivshadow::test
