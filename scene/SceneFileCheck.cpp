@@ -117,6 +117,10 @@ constexpr FileField kFileFields[] = {
     {"VRMLBackground", "topUrl", false, false, true},
 };
 
+// An EXTERNPROTO's url list (VRML97), which Coin fetches as a file through SoInput::pushFile
+// like an Inline (a '%' in a name it cannot find crashed the reader; /dev/zero hung it).
+constexpr FileField kExternProto = {"EXTERNPROTO", "url", true, false, true};
+
 // Fields holding an image inline: its size, then one value per pixel (SoSFImage, SoSFImage3).
 struct ImageField {
   const char* node;
@@ -145,6 +149,7 @@ bool sameNode(const std::string& type, const char* node, bool vrml97) {
 // Whether `token` is the type of a node whose file names Coin prints as a format.
 bool printsNamesAsFormat(const Token& token, bool vrml97) {
   if (token.quoted) return false;
+  if (token.text == kExternProto.node) return true;
   for (const FileField& field : kFileFields)
     if ((field.scene || field.percentKills) && sameNode(token.text, field.node, vrml97))
       return true;
@@ -206,6 +211,9 @@ class Checker {
     // file Coin may print as a format: the backstop below.
     Token percent;
     Token printsNames;
+    // Where an EXTERNPROTO is read: 1 its name next, 2 its interface's '[', 3 inside it, 4 its
+    // url or url list next, 5 that list's first name next; 0 none.
+    int externProto = 0;
     Tokenizer tokenizer(text, path);
     for (Token token; tokenizer.next(token);) {
       if (percent.line == 0 && token.text.find('%') != std::string::npos) percent = token;
@@ -213,7 +221,21 @@ class Checker {
       // A file name or an image size is read only while the tokens are what the field holds:
       // anything else (a brace, IS, a connection) ends it and is read as usual.
       bool consumed = false;
-      if (fileField != nullptr) {
+      if (externProto != 0) {
+        consumed = true;
+        if (externProto == 1 || (externProto == 2 && token.is("[")) ||
+            (externProto == 3 && token.is("]"))) {
+          ++externProto;
+        } else if (externProto == 4 && token.is("[")) {
+          externProto = 5;
+        } else if (externProto >= 4) {
+          checkNamedFile(path, kExternProto, token, nesting + int(braces.size()));
+          externProto = 0;
+        } else if (externProto == 2) {
+          externProto = 0;  // not Coin's syntax: Coin reports it
+          consumed = false;
+        }
+      } else if (fileField != nullptr) {
         // Inside brackets Coin reads names up to ']', braces included (found by
         // SceneReaderFuzzer: a list holding "the}" and later "1.37%" was left at the brace).
         if (!inList && !token.quoted && (token.is("{") || token.is("}") || token.is("]"))) {
@@ -272,6 +294,8 @@ class Checker {
         }
       } else if (token.is("USE")) {
         useNext = true;
+      } else if (token.is(kExternProto.node)) {
+        externProto = 1;
       } else if (!types.empty() && !token.quoted) {
         for (const FileField& field : kFileFields) {
           // Coin reads a field's name as an identifier: "name%x.iv" is the field name and a

@@ -377,3 +377,35 @@ TEST(SceneFileCheck, BumpMapsCubeMapsAndShaderSourcesNameOnlyRegularFiles) {
 
 }  // namespace
 }  // namespace ivshadow
+
+namespace ivshadow {
+namespace {
+
+// Review of issue 35: Coin fetches an EXTERNPROTO's first url as a file (SoInput::pushFile),
+// as it does an Inline: a '%' in a name it cannot find segfaulted `render`, /dev/zero hung it.
+TEST(SceneFileCheck, AnExternProtosUrlIsCheckedAsAnInlinesIs) {
+  init();
+  const std::string percent = test::writeOutputFile(
+      "extern_percent.wrl",
+      "#VRML V2.0 utf8\nEXTERNPROTO X [] \"%s%n.wrl\"\nShape { geometry Box { } }\n");
+  EXPECT_EQ(checkError(percent), percent +
+                                     ":2: error: EXTERNPROTO url %s%n.wrl: no such file beside "
+                                     "extern_percent.wrl, and Coin cannot report a name holding "
+                                     "'%' (rename the file)");
+  const std::string device = test::writeOutputFile(
+      "extern_device.wrl",
+      "#VRML V2.0 utf8\nEXTERNPROTO X [ field SFFloat size ] [ \"/dev/zero\", \"b.wrl\" ]\n");
+  EXPECT_EQ(checkError(device), device +
+                                    ":2: error: EXTERNPROTO url /dev/zero: not a regular file (a "
+                                    "character device); only regular files are read");
+  // A '%' anywhere in a file with an EXTERNPROTO is refused by the backstop.
+  const std::string backstop = test::writeOutputFile(
+      "extern_backstop.wrl",
+      "#VRML V2.0 utf8\nWorldInfo { title \"50%\" }\nEXTERNPROTO X [] \"missing.wrl\"\n");
+  EXPECT_NE(checkError(backstop).find(":2: error: '50%' holds a '%' in a file holding EXTERNPROTO"),
+            std::string::npos)
+      << checkError(backstop);
+}
+
+}  // namespace
+}  // namespace ivshadow
