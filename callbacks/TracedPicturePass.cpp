@@ -62,10 +62,15 @@ GLenum depthFormat(GLuint framebuffer) {
       glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
     return GLenum(format);
   }
-  // The default framebuffer names no format: the one its sizes say.
-  GLint stencil = 0;
-  glGetNamedFramebufferAttachmentParameteriv(0, GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
-                                             &stencil);
+  // The default framebuffer names no format: the one its sizes say. Sizes are asked only of
+  // buffers it has (GL raises an error for the others, into the application's error queue).
+  if (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) == GL_NONE) return GL_NONE;
+  GLint stencilType = GL_NONE, stencil = 0;
+  glGetNamedFramebufferAttachmentParameteriv(0, GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+                                             &stencilType);
+  if (stencilType != GL_NONE)
+    glGetNamedFramebufferAttachmentParameteriv(0, GL_STENCIL,
+                                               GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
   if (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) == GL_FLOAT)
     return stencil > 0 ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
   switch (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE)) {
@@ -100,6 +105,9 @@ std::string TracedPicturePass::readDepth(const std::array<int, 4>& viewport,
   // depth), through a single-sampled copy of the viewport.
   const GLenum format = depthFormat(drawn);
   if (format == GL_NONE) return {};  // nothing to end the trace at
+  // The blit is clipped by the scissor test an application may have left on.
+  GlStateScope tests(GlStateScope::kFragmentTests);
+  tests.disableFragmentTests();
   clearGlErrors();
   GlRenderbuffer depth = createRenderbuffer();
   glNamedRenderbufferStorage(depth.get(), format, viewport[2], viewport[3]);
@@ -122,8 +130,7 @@ DepthBuffer TracedPicturePass::drawDepthBuffer() {
   GLint framebuffer = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
   const auto drawn = GLuint(framebuffer);
-  if (drawn != 0 && depthParameter(drawn, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) == GL_NONE)
-    return {};
+  if (depthParameter(drawn, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) == GL_NONE) return {};
   DepthBuffer buffer;
   buffer.bits = depthParameter(drawn, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
   buffer.floating = depthParameter(drawn, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) == GL_FLOAT;

@@ -117,8 +117,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ivshadow::CoinMessageCapture messages;
     gl.render(view.root.get());
     drawn = gl.read();
+    // What AUTO picked is said of every light left to it: not a reason.
     for (const ivshadow::CoinMessageCapture::Message& m : messages.messages())
-      warnings += m.text + "\n";
+      if (m.text.find("method AUTO uses") == std::string::npos) warnings += m.text + "\n";
   }
   traceEveryGroup(view.root.get());
   gl.render(view.root.get());
@@ -133,7 +134,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (reference && oracle != nullptr && std::string(oracle) != "0" && comparable(view.root.get())) {
     // As `ivshadow reference` draws it: from the file, in a graph GL has not drawn (a VRML
     // scene traced after GL drew its graph differed by 17 steps: docs/KNOWN_ISSUES.md).
-    const ivshadow::LoadedScene again = ivshadow::loadScene(path);
+    ivshadow::LoadedScene again;
+    try {
+      again = ivshadow::loadScene(path);
+    } catch (const ivshadow::InputError&) {
+      return 0;  // read once already: only a file changed under the harness gets here
+    }
     const ivshadow::ViewSetup fresh =
         ivshadow::ViewSetup::prepare(again.root.get(), SbViewportRegion(kWidth, kHeight));
     reference = ivshadow::renderReference(fresh.root.get(), options);

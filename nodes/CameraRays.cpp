@@ -14,14 +14,18 @@
 namespace ivshadow {
 
 CameraRays::CameraRays(const SbMatrix& viewing, const SbMatrix& projection, int width, int height,
-                       const std::vector<glm::vec3>& positions)
+                       const std::vector<glm::vec3>& positions, int viewportWidth,
+                       int viewportHeight)
     : width_(width),
       height_(height),
+      viewportWidth_(viewportWidth > 0 ? viewportWidth : width),
+      viewportHeight_(viewportHeight > 0 ? viewportHeight : height),
       worldToClip_(SbDPMatrix(viewing) * SbDPMatrix(projection)),
       clipToWorld_(worldToClip_.inverse()) {
   SbVec3f camera;
   viewing.inverse().multVecMatrix(SbVec3f(0.0f, 0.0f, 0.0f), camera);
   const SbVec3d eye(camera);
+  eye_ = glm::dvec3(eye[0], eye[1], eye[2]);
   double farthest = 0.0;
   for (const glm::vec3& p : positions)
     farthest = std::max(farthest, (SbVec3d(p.x, p.y, p.z) - eye).length());
@@ -45,12 +49,15 @@ CameraRay CameraRays::rayAt(float nx, float ny) const {
   // A far plane over about 1e7 times the near one rounds to infinity in the float projection
   // Coin gives GL (a near plane at 1e-11, or a far one at 1e12), and GL then draws out to
   // infinity: the ray ends past everything in the scene instead.
+  // The reach counts from the eye; a ray may start behind it (an orthographic camera with a
+  // negative nearDistance).
+  const double reach = reach_ + glm::length(glm::dvec3(origin[0], origin[1], origin[2]) - eye_);
   const SbVec3d towardsFar = SbVec3d(farPoint[0], farPoint[1], farPoint[2]) - origin * farPoint[3];
-  SbVec3d end = origin + towardsFar * (reach_ / std::max(towardsFar.length(), 1e-300));
+  SbVec3d end = origin + towardsFar * (reach / std::max(towardsFar.length(), 1e-300));
   if (farPoint[3] > 0.0) {
     SbVec3d farEnd;
     farPoint.getReal(farEnd);
-    if ((farEnd - origin).length() < reach_) end = farEnd;
+    if ((farEnd - origin).length() < reach) end = farEnd;
   }
   ray.origin = glm::vec3(origin[0], origin[1], origin[2]);
   ray.direction = glm::vec3(end[0] - origin[0], end[1] - origin[1], end[2] - origin[2]);
@@ -108,20 +115,23 @@ namespace ivshadow {
 
 double CameraRays::depthSlope(const CameraRay& ray, const glm::vec3& point,
                               const glm::vec3& normal) const {
+  // Window depth over a plane is affine in window coordinates: any two neighbours give its
+  // slope, wherever on the plane's line they land (before the near plane or behind the eye
+  // too). Only a ray along the plane, or a point at infinity, gives none.
   const auto depthOnPlane = [&](const CameraRay& r) -> double {
     const float along = glm::dot(r.direction, normal);
-    if (along == 0.0f) return -1.0;
+    if (along == 0.0f) return std::nan("");
     const float t = glm::dot(point - r.origin, normal) / along;
     SbVec4d clip;
     const glm::vec3 p = r.origin + t * r.direction;
     worldToClip_.multVecMatrix(SbVec4d(p.x, p.y, p.z, 1.0), clip);
-    return clip[3] > 0.0 ? 0.5 * clip[2] / clip[3] + 0.5 : -1.0;
+    return clip[3] != 0.0 ? 0.5 * clip[2] / clip[3] + 0.5 : std::nan("");
   };
   const double here = depthOnPlane(ray);
-  const double across = depthOnPlane(rayAt(ray.nx + 2.0f / float(width_), ray.ny));
-  const double up = depthOnPlane(rayAt(ray.nx, ray.ny + 2.0f / float(height_)));
-  if (here < 0.0 || across < 0.0 || up < 0.0) return 1.0;
-  return std::min(1.0, std::max(std::fabs(across - here), std::fabs(up - here)));
+  const double across = depthOnPlane(rayAt(ray.nx + 2.0f / float(viewportWidth_), ray.ny));
+  const double up = depthOnPlane(rayAt(ray.nx, ray.ny + 2.0f / float(viewportHeight_)));
+  const double slope = std::max(std::fabs(across - here), std::fabs(up - here));
+  return std::isfinite(slope) ? std::min(1.0, slope) : 1.0;
 }
 
 }  // namespace ivshadow

@@ -2,6 +2,7 @@
 
 #include <Inventor/SbDPMatrix.h>
 
+#include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
 #include <vector>
@@ -26,8 +27,11 @@ struct CameraRay {
 class CameraRays {
  public:
   // `positions`: the scene's triangle corners, which every ray must be able to reach.
+  // `viewportWidth` x `viewportHeight`: the pixels GL draws the picture over (a picture traced
+  // at a lower resolution is stretched over more); 0: the picture's own.
   CameraRays(const SbMatrix& viewing, const SbMatrix& projection, int width, int height,
-             const std::vector<glm::vec3>& positions);
+             const std::vector<glm::vec3>& positions, int viewportWidth = 0,
+             int viewportHeight = 0);
 
   CameraRay ray(int x, int y) const;
   // The ray through normalised device coordinates (nx, ny).
@@ -37,8 +41,8 @@ class CameraRays {
   // The window depth of the point at parameter `t` along a ray.
   float windowDepth(const CameraRay& ray, float t) const;
   // How fast the window depth of the plane through `point` with normal `normal` changes from
-  // `ray`'s pixel to the next, across or up, the larger (GL's m in glPolygonOffset); 1, the
-  // whole depth range, where the plane is seen edge-on.
+  // `ray`'s viewport pixel to the next, across or up, the larger (GL's m in glPolygonOffset);
+  // 1, the whole depth range, where the plane is seen edge-on.
   double depthSlope(const CameraRay& ray, const glm::vec3& point, const glm::vec3& normal) const;
 
  private:
@@ -46,6 +50,9 @@ class CameraRays {
 
   int width_;
   int height_;
+  int viewportWidth_;
+  int viewportHeight_;
+  glm::dvec3 eye_{0.0};
   SbDPMatrix worldToClip_;
   SbDPMatrix clipToWorld_;
   double reach_ = 1.0;  // farther than every triangle from the camera, with room

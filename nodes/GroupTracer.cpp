@@ -219,6 +219,8 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     const bool reduced = options.width < viewport[2] || options.height < viewport[3];
     options.bounceSamples = settings.bounceSamples;
     options.depthBuffer = TracedPicturePass::drawDepthBuffer();
+    options.viewportWidth = viewport[2];
+    options.viewportHeight = viewport[3];
     const float* limit = reduced ? reducedLimit(*context, viewport, options.width, options.height)
                                  : context->depthNow.data();
     // The first picture keeps no surfaces: a single frame (a batch render) would only pay for

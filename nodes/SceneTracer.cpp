@@ -115,7 +115,8 @@ class Tracer {
         packetWidth_(std::min(packetWidth, kMaxPacket)),
         options_(options),
         viewing_(viewing),
-        cameraRays_(viewing, projection, options.width, options.height, data.positions) {
+        cameraRays_(viewing, projection, options.width, options.height, data.positions,
+                    options.viewportWidth, options.viewportHeight) {
     SbVec3f back;
     viewing.inverse().multDirMatrix(SbVec3f(0.0f, 0.0f, 1.0f), back);
     back.normalize();

@@ -55,6 +55,10 @@ struct TraceOptions {
   // kept (by a trace of the same view) are composited instead of tracing the camera rays.
   SurfacesMet* surfaces = nullptr;
   bool reuseSurfaces = false;
+  // The viewport GL stretches the picture over (a reduced picture while the scene moves): the
+  // polygon offset's depth slope is per viewport pixel, as GL's. 0: the picture's own size.
+  int viewportWidth = 0;
+  int viewportHeight = 0;
   // The depth buffer GL draws over the picture with: the depth of faces under SoPolygonOffset
   // is offset as GL offsets them there, so that lines drawn on them stay in front. None: no
   // offset.

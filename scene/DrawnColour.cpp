@@ -10,10 +10,14 @@
 namespace ivshadow {
 
 glm::vec4 drawnColour(const SbColor& diffuse, float transparency) {
-  float outside = -1.0f;
+  bool isOutside = false;
+  float outside = 0.0f;
   for (int i = 0; i < 3; ++i)
-    if (!(diffuse[i] >= 0.0f && diffuse[i] <= 1.0f)) outside = diffuse[i];
-  if (outside != -1.0f && firstWarning(nullptr, "diffuse colour outside 0..1"))
+    if (!(diffuse[i] >= 0.0f && diffuse[i] <= 1.0f)) {
+      isOutside = true;
+      outside = diffuse[i];
+    }
+  if (isOutside && firstWarning(nullptr, "diffuse colour outside 0..1"))
     SoDebugError::postWarning("ivshadow",
                               "a diffuse colour of %g: Coin packs colours into 8 bits without "
                               "clamping them, and every path draws what Coin draws (1.7 as 0.7)",

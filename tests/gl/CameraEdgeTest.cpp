@@ -16,10 +16,11 @@ namespace {
 
 constexpr int kSize = 64;
 
-std::string scene(const std::string& planes, const std::string& group) {
+std::string scene(const std::string& planes, const std::string& group,
+                  const char* camera = "PerspectiveCamera") {
   std::ostringstream iv;
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
-     << "PerspectiveCamera { position 0 0 5 " << planes << " }\n"
+     << camera << " { position 0 0 5 " << planes << " }\n"
      << (group.empty() ? std::string("Separator {") : "TransparentShadowGroup { " + group) << "\n"
      << "PointLight { location 0 0 3 }\n"
      << "Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"
@@ -30,9 +31,9 @@ std::string scene(const std::string& planes, const std::string& group) {
   return iv.str();
 }
 
-Image traced(const std::string& planes, bool reference) {
-  return reference ? referenceIv(scene(planes, "renderer TRACER"), kSize)
-                   : renderIv(scene(planes, "renderer TRACER"), kSize);
+Image traced(const std::string& planes, bool reference, const char* camera = "PerspectiveCamera") {
+  const std::string text = scene(planes, "renderer TRACER", camera);
+  return reference ? referenceIv(text, kSize) : renderIv(text, kSize);
 }
 
 int largestDifference(const Image& a, const Image& b) {
@@ -67,6 +68,20 @@ TEST_P(CameraEdge, ANegativeNearDistanceShowsWhatPlainCoinShows) {
   EXPECT_EQ(largestDifference(coin, empty), 0);
   EXPECT_EQ(coin.pixel(kSize / 2, kSize / 2)[0], 0);
   EXPECT_EQ(largestDifference(traced(planes, GetParam()), coin), 0);
+}
+
+// An orthographic camera may look from behind its position (GL draws what lies between the
+// planes either way): its rays start 100 units behind the eye and must still reach the scene
+// (found in review: they ended a scene's distance from the eye, short of it).
+TEST_P(CameraEdge, AnOrthographicCameraWithANegativeNearDistanceShowsTheScene) {
+  const bool reference = GetParam();
+  const Image ordinary =
+      traced("nearDistance 1 farDistance 10 height 2.4", reference, "OrthographicCamera");
+  EXPECT_GT(ordinary.pixel(kSize / 2, kSize / 2)[0], 100);
+  const Image behind =
+      traced("nearDistance -100 farDistance 100 height 2.4", reference, "OrthographicCamera");
+  // One 8-bit step: the rays start at another point of the same line.
+  EXPECT_LE(largestDifference(behind, ordinary), 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Paths, CameraEdge, ::testing::Values(false, true),
