@@ -4,6 +4,8 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+
 namespace ivshadow {
 
 void ShadingUniforms::apply(const UniformLocations& locations) const {
@@ -49,9 +51,9 @@ void ShadingUniforms::apply(const UniformLocations& locations) const {
   glProgramUniformMatrix3fv(program, at("uEyeToLocalNormal"), 1, GL_FALSE, eyeToLocalNormal);
 }
 
-void darkenLights(int first) {
+void darkenLights(int first, int end) {
   const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  for (int i = first; i < ShadingUniforms::kMaxLights; ++i) {
+  for (int i = first; i < std::min(end, ShadingUniforms::kMaxLights); ++i) {
     const GLenum light = GL_LIGHT0 + GLenum(i);
     glLightfv(light, GL_AMBIENT, black);
     glLightfv(light, GL_DIFFUSE, black);

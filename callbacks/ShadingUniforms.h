@@ -57,10 +57,10 @@ struct ShadingUniforms {
   void apply(const UniformLocations& program) const;
 };
 
-// Sets GL lights [first, ShadingUniforms::kMaxLights) to contribute nothing. The program
-// adds up the first lightCount GL lights; numbers the group's lights leave unused then hold
+// Sets GL lights [first, end) (up to ShadingUniforms::kMaxLights) to contribute nothing. The
+// program adds up the first lightCount GL lights; numbers the group's lights leave unused then hold
 // no stale light (Coin sets every parameter of a light it turns on).
-void darkenLights(int first);
+void darkenLights(int first, int end = ShadingUniforms::kMaxLights);
 
 // The program object current in this context: the one Coin bound for the last
 // SoShaderProgram it traversed.

@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/DeepShadowSettings.h"
+#include "nodes/LightScopeElement.h"
 #include "nodes/ShadowFields.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparentShadowGroupImpl.h"
@@ -16,6 +17,8 @@ void SoTransparentShadowGroup::initClass() {
   if (getClassTypeId() != SoType::badType()) return;
   SoDeepShadowLight::initClass();
   ivshadow::ShadowGroupElement::initClass();
+  // Its shading adds up GL lights by number: a light turned off must add nothing.
+  ivshadow::registerLightScopeElement();
   // Registered without the "So" prefix, as Coin registers its own nodes: Coin writes that
   // name to files, and SoType::fromName finds "TransparentShadowGroup" from either spelling.
   PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup",

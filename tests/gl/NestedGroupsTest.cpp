@@ -165,3 +165,34 @@ TEST(NestedGroupsPeeling, ALightInAPeelingSeparatorLightsOnlyWhatFollowsItInEver
 
 }  // namespace
 }  // namespace ivshadow::test
+
+namespace ivshadow::test {
+namespace {
+
+// A light in a separator ends with it (Coin turns its GL light off there); the group's program
+// adds up GL lights by number and lit the floor after the separator with it under RASTER
+// (found in review). Coin, TRACER and the reference light the floor with the outer light only.
+TEST(NestedGroupsScope, ALightInASeparatorBeforeTheFloorEndsWithIt) {
+  init();
+  for (const char* renderer : {"RASTER", "TRACER"}) {
+    SCOPED_TRACE(renderer);
+    const std::string text =
+        std::string("#Inventor V2.1 ascii\nSeparator {\n"
+                    "OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 "
+                    "height 2.4 }\n"
+                    "TransparentShadowGroup { renderer ") +
+        renderer +
+        "\n  DirectionalLight { direction 0 0 -1 intensity 0.3 }\n"
+        "  Separator { DirectionalLight { direction 0 0 -1 intensity 0.6 } }\n"
+        "  Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
+        "  Coordinate3 { point [ -1.2 -1.2 0, 1.2 -1.2 0, 1.2 1.2 0, -1.2 1.2 0 ] }\n"
+        "  FaceSet { numVertices 4 }\n}\n}\n";
+    const Image image = renderIv(text, kSize);
+    // 0.3 of white; one 8-bit step of rounding.
+    EXPECT_NEAR(image.pixel(120, 120)[0], 255.0 * 0.3, 1.0);
+    EXPECT_NEAR(referenceIv(text, kSize).pixel(120, 120)[0], 255.0 * 0.3, 1.0);
+  }
+}
+
+}  // namespace
+}  // namespace ivshadow::test
