@@ -94,6 +94,13 @@ class Writer {
           << "Coordinate3 { point [ -2 -2 0, 2 -2 0, 2 2 0, -2 2 0 ] } FaceSet { numVertices 4 }\n";
     const int shapes = 1 + pick(3);
     for (int i = 0; i < shapes; ++i) shape();
+    // A light that ends with its separator: it lights the shape beside it, nothing after.
+    if (chance(0.25)) {
+      out_ << "Separator {\n";
+      light();
+      shape();
+      out_ << "}\n";
+    }
     if (chance(0.3)) {
       out_ << "DEF Shared" << depth << " Separator { Translation { translation 0.6 0.6 0.8 }\n";
       shape();
