@@ -134,4 +134,14 @@ double CameraRays::depthSlope(const CameraRay& ray, const glm::vec3& point,
   return std::isfinite(slope) ? std::min(1.0, slope) : 1.0;
 }
 
+float CameraRays::offsetDepth(const CameraRay& ray, float t, const glm::vec3& normal, float factor,
+                              float units, const DepthBuffer& buffer) const {
+  const float depth = windowDepth(ray, t);
+  if (factor == 0.0f && units == 0.0f) return depth;
+  const double slope =
+      factor != 0.0f ? depthSlope(ray, ray.origin + t * ray.direction, normal) : 0.0;
+  const double offset = double(factor) * slope + double(units) * buffer.resolution(depth);
+  return float(std::clamp(double(depth) + offset, 0.0, 1.0));
+}
+
 }  // namespace ivshadow

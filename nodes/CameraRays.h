@@ -1,5 +1,7 @@
 #pragma once
 
+#include "scene/ShadowTypes.h"
+
 #include <Inventor/SbDPMatrix.h>
 
 #include <glm/ext/vector_double3.hpp>
@@ -40,13 +42,19 @@ class CameraRays {
   float end(const CameraRay& ray, float limit) const;
   // The window depth of the point at parameter `t` along a ray.
   float windowDepth(const CameraRay& ray, float t) const;
+  // The window depth at parameter `t` of a ray meeting a face of geometric normal `normal`,
+  // offset as GL offsets the face under SoPolygonOffset in `buffer` (`factor` times its depth
+  // slope plus `units` times the buffer's resolution; both 0: none), so that lines drawn on it
+  // after the picture stay in front of it (a cube's lower edges vanished under TRACER).
+  float offsetDepth(const CameraRay& ray, float t, const glm::vec3& normal, float factor,
+                    float units, const DepthBuffer& buffer) const;
+
+ private:
+  void clip(CameraRay& ray) const;
   // How fast the window depth of the plane through `point` with normal `normal` changes from
   // `ray`'s viewport pixel to the next, across or up, the larger (GL's m in glPolygonOffset);
   // 1, the whole depth range, where the plane is seen edge-on.
   double depthSlope(const CameraRay& ray, const glm::vec3& point, const glm::vec3& normal) const;
-
- private:
-  void clip(CameraRay& ray) const;
 
   int width_;
   int height_;

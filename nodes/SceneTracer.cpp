@@ -200,21 +200,11 @@ class Tracer {
   }
 
  private:
-  // The window depth GL depth-tests what it draws after the picture against at the opaque
-  // surface `hit`: offset as GL offsets a face under SoPolygonOffset (factor times the depth
-  // slope plus units times the buffer's resolution), so that lines drawn on the face stay in
-  // front of it (a cube's lower edges vanished under TRACER).
+  // The window depth GL tests what it draws after the picture against (CameraRays).
   float opaqueDepth(const CameraRay& ray, const Hit& hit) const {
-    const float depth = cameraRays_.windowDepth(ray, hit.t);
     const Triangle& tri = data_.triangles[hit.primitive];
-    if (tri.offsetFactor == 0.0f && tri.offsetUnits == 0.0f) return depth;
-    const double slope =
-        tri.offsetFactor != 0.0f
-            ? cameraRays_.depthSlope(ray, ray.origin + hit.t * ray.direction, tri.geometricNormal)
-            : 0.0;
-    const double offset = double(tri.offsetFactor) * slope +
-                          double(tri.offsetUnits) * options_.depthBuffer.resolution(depth);
-    return float(std::clamp(double(depth) + offset, 0.0, 1.0));
+    return cameraRays_.offsetDepth(ray, hit.t, tri.geometricNormal, tri.offsetFactor,
+                                   tri.offsetUnits, options_.depthBuffer);
   }
 
   template <int Width, typename Packet>

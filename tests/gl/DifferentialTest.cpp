@@ -109,24 +109,19 @@ std::vector<Scene> scenes() {
   for (const fs::directory_entry& entry : fs::directory_iterator(scenesDir())) {
     const std::string name = entry.path().filename().string();
     if (entry.path().extension() != ".iv" || name.rfind("stress_", 0) == 0) continue;
-    std::ifstream in(entry.path());
-    std::stringstream text;
-    text << in.rdbuf();
+    const std::string text = readText(entry.path().string());
     // Only what the plugin draws: a scene without a group or a peeling separator is Coin's.
-    if (text.str().find("TransparentShadowGroup") == std::string::npos &&
-        text.str().find("PeelingSeparator") == std::string::npos)
+    if (text.find("TransparentShadowGroup") == std::string::npos &&
+        text.find("PeelingSeparator") == std::string::npos)
       continue;
-    result.push_back({name, text.str()});
+    result.push_back({name, text});
   }
   // The corpus's models as its test wrapped them (bench/differential.sh).
   if (const char* corpus = std::getenv("IVSHADOW_DIFFERENTIAL_CORPUS"))
     for (const fs::directory_entry& entry : fs::directory_iterator(corpus)) {
       const fs::path wrapped = entry.path() / "wrapped.iv";
       if (!fs::exists(wrapped)) continue;
-      std::ifstream in(wrapped);
-      std::stringstream text;
-      text << in.rdbuf();
-      result.push_back({entry.path().filename().string(), text.str()});
+      result.push_back({entry.path().filename().string(), readText(wrapped.string())});
     }
   const char* count = std::getenv("IVSHADOW_DIFFERENTIAL_SCENES");
   const int generated = count != nullptr ? std::atoi(count) : 12;

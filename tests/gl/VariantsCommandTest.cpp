@@ -13,12 +13,7 @@
 namespace ivshadow {
 namespace {
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::readText;
 
 TEST(VariantsCommand, RendersEveryGoodVariantAndReportsTheBadOneWithItsLine) {
   const std::string dir = test::outputDir() + "/out";

@@ -36,11 +36,6 @@ ProcessResult runOnTestDisplay(const std::vector<std::string>& arguments,
   return run(arguments, env);
 }
 
-std::string readText(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-}
-
 double shareWithin(const Image& a, const Image& b, int tolerance) {
   int close = 0;
   for (int y = 0; y < a.height(); ++y)

@@ -28,9 +28,6 @@ constexpr const char* kViewerTransparency = "BLEND";
 Image viewerScreenshot(const std::vector<std::string>& arguments, const std::string& shot,
                        ProcessResult& result);
 
-// The whole content of a file ("" when it cannot be read).
-std::string readText(const std::string& path);
-
 // Share of pixels whose colour channels all lie within `tolerance` of the other image's.
 double shareWithin(const Image& a, const Image& b, int tolerance);
 

@@ -66,6 +66,11 @@ std::string writeOutputFile(const std::string& name, const std::string& bytes) {
   return path;
 }
 
+std::string readText(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
+
 int startProcess(const std::vector<std::string>& arguments,
                  const std::vector<std::string>& environment, const std::string& outPath,
                  const std::string& errPath) {

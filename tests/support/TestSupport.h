@@ -19,6 +19,8 @@ std::string viewerExe();
 std::string outputDir();
 // Writes `bytes` as they are to outputDir()/`name` and returns its path.
 std::string writeOutputFile(const std::string& name, const std::string& bytes);
+// The whole content of a file ("" when it cannot be read).
+std::string readText(const std::string& path);
 
 struct ProcessResult {
   int exitCode = -1;

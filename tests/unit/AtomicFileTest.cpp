@@ -19,10 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+const auto contents = test::readText;
 
 TEST(AtomicFile, ASymbolicLinkStaysALinkAndItsTargetIsReplaced) {
   const std::string dir = test::outputDir();

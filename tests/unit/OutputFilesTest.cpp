@@ -13,17 +13,9 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace ivshadow {
 namespace {
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(OutputFiles, ASignalDuringTheWritesEndsTheProcessWithEveryOutputWhole) {
   const std::string dir = test::outputDir();
@@ -45,8 +37,8 @@ TEST(OutputFiles, ASignalDuringTheWritesEndsTheProcessWithEveryOutputWhole) {
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFSIGNALED(status)) << status;
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
-  EXPECT_EQ(contents(first), "the first half, the second half");
-  EXPECT_EQ(contents(second), "second");
+  EXPECT_EQ(test::readText(first), "the first half, the second half");
+  EXPECT_EQ(test::readText(second), "second");
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
