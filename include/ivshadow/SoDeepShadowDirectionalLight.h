@@ -33,7 +33,7 @@
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
-        colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
+        colorModel SATURATE  # SATURATE (Rejent 2014, eq. 5.3) or POWER (eq. 5.2)
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
         filter PCF           # NONE (the nearest texel) or PCF
         filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)

@@ -36,7 +36,7 @@
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
-        colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
+        colorModel SATURATE  # SATURATE (Rejent 2014, eq. 5.3) or POWER (eq. 5.2)
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
         filter PCF           # NONE (the nearest texel) or PCF
         filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)
@@ -58,7 +58,7 @@
   caster whose colour varies across a triangle (per-vertex colours, textures) casts its mean
   colour, with one warning per light.
 
-  With `method OPACITY_MAP` the map is an opacity map (after seeds/002): `slices` uniform
+  With `method OPACITY_MAP` the map is an opacity map (after Vinkelis 2008): `slices` uniform
   slices per face over the transparent casters' distances from the light, each holding the
   light its transparent surfaces absorb (per channel) and the distance of its first surface,
   and one depth per texel of the nearest opaque surface. Each face draws the casters once for
@@ -82,12 +82,12 @@ class IVSHADOW_API SoDeepShadowLight : public SoPointLight {
 
   enum ShadowColor {
     AUTO,        //!< colour channels only when some transparent caster is not grey
-    MONOCHROME,  //!< one visibility channel (seeds/000 eq. 5.1)
+    MONOCHROME,  //!< one visibility channel (Rejent 2014, eq. 5.1)
     COLORED      //!< three visibility channels
   };
   enum ColorModel {
-    SATURATE,  //!< V' (1 - a) clamp(1 - a + c, 0, 1), seeds/000 eq. 5.3
-    POWER      //!< V' (1 - a)^(2 - c), seeds/000 eq. 5.2
+    SATURATE,  //!< V' (1 - a) clamp(1 - a + c, 0, 1), Rejent 2014, eq. 5.3
+    POWER      //!< V' (1 - a)^(2 - c), Rejent 2014, eq. 5.2
   };
   enum Precision {
     FLOAT,  //!< 32-bit visibility

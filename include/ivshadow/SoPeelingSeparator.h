@@ -19,7 +19,7 @@ struct PeelStatistics;
   transparent surfaces, textured transparency and per-vertex alpha come out right.
 
   Opaque children are drawn once as usual. Transparent fragments are then peeled layer by
-  layer and composited over them (seeds/000 eq. 2.5-2.8): with DUAL, the nearest and the
+  layer and composited over them (Rejent 2014, eq. 2.5-2.8): with DUAL, the nearest and the
   farthest remaining layer per pass (N layers in N/2 + 1 passes, Bavoil & Myers 2008); with
   FRONT_TO_BACK one layer per pass. FRAGMENT_LISTS draws the transparent surfaces once, each
   fragment shaded and linked into its pixel's list, then sorts each list by depth and

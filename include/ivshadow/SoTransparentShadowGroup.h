@@ -48,7 +48,7 @@ struct PeelStatistics;
   With `bounce TRUE` the casting lights' light also reaches what they do not light directly,
   after one diffuse reflection off an opaque caster, coloured by the transparent casters it
   crossed on the way there (light through red glass onto a white floor puts red on the wall
-  beside it). It is computed as seeds/001 does: `bounceLights` virtual point lights are placed
+  beside it). It is computed as Kyloušek 2013 does: `bounceLights` virtual point lights are placed
   where the lights land (traced with Embree on the CPU, whatever the method), each with an
   imperfect shadow map (a point-sampled view of the opaque casters, holes filled by
   pull-push), and every shaded point adds their diffuse light. Transparent casters filter the
@@ -113,14 +113,14 @@ struct PeelStatistics;
         slices 4             # OPACITY_MAP: depth slices per face, 1 .. 32
         bias 0.1             # towards the light beyond the receiver's plane, texels at the receiver
         shadowColor AUTO     # AUTO, MONOCHROME or COLORED
-        colorModel SATURATE  # SATURATE (seeds/000 eq. 5.3) or POWER (eq. 5.2)
+        colorModel SATURATE  # SATURATE (Rejent 2014, eq. 5.3) or POWER (eq. 5.2)
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
         filter PCF           # NONE (the nearest texel) or PCF
         filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)
         transparency PEELED      # PEELED: transparent surfaces in exact depth order per
                                  #   pixel; COIN_BLENDING: Coin's transparency type
         bounce FALSE         # TRUE: one diffuse bounce of the casting lights' light, tinted by
-                             #   the glass it passed (virtual point lights, seeds/001)
+                             #   the glass it passed (virtual point lights, Kyloušek 2013)
         bounceLights 256     # bounce: virtual point lights placed, about, 1 .. 1024
         bounceMapSize 128    # bounce: each one's imperfect shadow map, 16 .. 256 texels, a
                              #   power of two
