@@ -1,5 +1,7 @@
 #include "viewer/FieldEditor.h"
 
+#include "viewer/FocusedWheel.h"
+
 #include <Inventor/fields/SoSFBool.h>
 #include <Inventor/fields/SoSFColor.h>
 #include <Inventor/fields/SoSFEnum.h>
@@ -50,7 +52,7 @@ FieldEditor::FieldEditor(SoField* field, const FieldRange& range, QWidget* paren
     layout->addWidget(check_);
     connect(check_, &QCheckBox::toggled, this, [this] { writeField(); });
   } else if (isOfType(field, SoSFEnum::getClassTypeId())) {
-    combo_ = new QComboBox(this);
+    combo_ = new FocusedWheel<QComboBox>(this);
     const auto* enumField = static_cast<const SoSFEnum*>(field);
     for (int i = 0; i < enumField->getNumEnums(); ++i) {
       SbName name;
@@ -61,7 +63,7 @@ FieldEditor::FieldEditor(SoField* field, const FieldRange& range, QWidget* paren
     connect(combo_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
             [this] { writeField(); });
   } else if (isOfType(field, SoSFInt32::getClassTypeId())) {
-    integer_ = new QSpinBox(this);
+    integer_ = new FocusedWheel<QSpinBox>(this);
     integer_->setRange(static_cast<int>(range.minimum), static_cast<int>(range.maximum));
     integer_->setSingleStep(static_cast<int>(std::max(1.0, range.step)));
     // One write per finished edit rather than per typed digit: a resolution of 1, then 10,
@@ -94,7 +96,7 @@ bool FieldEditor::supports(const SoField* field) {
 }
 
 QDoubleSpinBox* FieldEditor::makeDoubleSpinBox() {
-  auto* box = new QDoubleSpinBox(this);
+  QDoubleSpinBox* box = new FocusedWheel<QDoubleSpinBox>(this);
   box->setRange(range_.minimum, range_.maximum);
   box->setSingleStep(range_.step);
   box->setDecimals(range_.decimals);
@@ -154,6 +156,7 @@ void FieldEditor::writeField() {
       static_cast<SoSFVec3f*>(field_)->setValue(x, y, z);
     }
   }
+  if (edited_) edited_();
 }
 
 std::string FieldEditor::setFromText(const std::string& text) {

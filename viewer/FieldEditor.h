@@ -5,6 +5,7 @@
 #include <QString>
 #include <QWidget>
 
+#include <functional>
 #include <vector>
 
 class QAbstractSpinBox;
@@ -39,6 +40,8 @@ class FieldEditor : public QWidget {
   // if the user had entered it, which writes it to the field. Returns an error message (what
   // was expected) for text that does not parse or lies outside the panel's range, or "".
   std::string setFromText(const std::string& text);
+  // Called after each value the editor writes to the field (not for changes made elsewhere).
+  void onEdited(std::function<void()> callback) { edited_ = std::move(callback); }
 
  private:
   static void fieldChanged(void* editor, SoSensor*);
@@ -53,6 +56,7 @@ class FieldEditor : public QWidget {
   QComboBox* combo_ = nullptr;
   QSpinBox* integer_ = nullptr;
   std::vector<QDoubleSpinBox*> reals_;
+  std::function<void()> edited_;
 };
 
 }  // namespace ivshadow

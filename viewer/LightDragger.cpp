@@ -13,6 +13,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ivshadow {
 
@@ -25,22 +26,9 @@ LightDragger::~LightDragger() {
 void LightDragger::attach(SoSeparator* root, SoDeepShadowLight* light) {
   detach();
   if (root == nullptr || light == nullptr) return;
-  SoSearchAction search;
-  search.setNode(light);
-  search.setSearchingAll(TRUE);
-  search.apply(root);
-  SoPath* path = search.getPath();
-  if (path == nullptr) return;
-  path->ref();
-  // The light's location is in the coordinates in effect where the light is; the dragger
-  // gets the same, so that both speak of the same point.
-  SoGetMatrixAction matrixAction{SbViewportRegion()};
-  SoPath* above = path->copy(0, path->getLength() - 1);
-  above->ref();
-  matrixAction.apply(above);
-  const SbMatrix toWorld = matrixAction.getMatrix();
-  above->unref();
-  path->unref();
+  SbMatrix toWorld;
+  if (!LightDragger::toWorld(root, light, toWorld)) return;
+  toWorld_ = toWorld;
 
   // Sized after the scene: Coin's dragger is about two units across, which is lost in a
   // large scene and swamps a small one.
@@ -70,6 +58,36 @@ void LightDragger::attach(SoSeparator* root, SoDeepShadowLight* light) {
   locationSensor_.attach(&light_->location);
 }
 
+bool LightDragger::toWorld(SoSeparator* root, SoNode* node, SbMatrix& matrix) {
+  SoSearchAction search;
+  search.setNode(node);
+  search.setSearchingAll(TRUE);
+  search.apply(root);
+  SoPath* path = search.getPath();
+  if (path == nullptr) return false;
+  path->ref();
+  // The node's fields (a light's location) are in the coordinates in effect where it is: those
+  // the path to it leaves in force, the node itself excluded.
+  SoGetMatrixAction matrixAction{SbViewportRegion()};
+  SoPath* above = path->copy(0, path->getLength() - 1);
+  above->ref();
+  matrixAction.apply(above);
+  matrix = matrixAction.getMatrix();
+  above->unref();
+  path->unref();
+  return true;
+}
+
+float LightDragger::worldSize() const {
+  return size_ * std::cbrt(std::fabs(toWorld_.det3()));
+}
+
+bool LightDragger::worldLocation(SbVec3f& location) const {
+  if (!light_) return false;
+  toWorld_.multVecMatrix(light_->location.getValue(), location);
+  return true;
+}
+
 void LightDragger::detach() {
   locationSensor_.detach();
   if (root_ && draggerRoot_) {
@@ -90,6 +108,7 @@ void LightDragger::dragged(void* self, SoDragger*) {
   that->updating_ = true;
   that->light_->location.setValue(that->dragger_->translation.getValue() * that->size_);
   that->updating_ = false;
+  if (that->draggedCallback_) that->draggedCallback_();
 }
 
 void LightDragger::dragTo(const SbVec3f& location) {

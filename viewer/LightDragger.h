@@ -2,11 +2,15 @@
 
 #include "scene/CoinRef.h"
 
+#include <Inventor/SbMatrix.h>
 #include <Inventor/sensors/SoFieldSensor.h>
+
+#include <functional>
 
 class SbVec3f;
 class SoDeepShadowLight;
 class SoDragger;
+class SoNode;
 class SoPointLightDragger;
 class SoScale;
 class SoSensor;
@@ -34,8 +38,18 @@ class LightDragger {
   // The light the dragger is on, or nullptr; its size, in the light's coordinates.
   SoDeepShadowLight* light() const { return light_.get(); }
   float size() const { return size_; }
+  // Its size in world coordinates (the root's).
+  float worldSize() const;
   // Moves the dragger so that it puts the light at `location`, as dragging it there does.
   void dragTo(const SbVec3f& location);
+  // Called after each move of the dragger by the user (or dragTo) has written the location.
+  void onDragged(std::function<void()> callback) { draggedCallback_ = std::move(callback); }
+  // The light's place in world coordinates (the root's), or false when it is not attached.
+  bool worldLocation(SbVec3f& location) const;
+
+  // The transformation from the coordinates in effect at `node` to those of `root`; false
+  // when `node` is not under `root`.
+  static bool toWorld(SoSeparator* root, SoNode* node, SbMatrix& matrix);
 
   // Takes the dragger out of the scene while an instance lives (e.g. while the scene is
   // written to a file) and puts it back afterwards.
@@ -61,9 +75,11 @@ class LightDragger {
   CoinRef<SoDeepShadowLight> light_;
   SoPointLightDragger* dragger_ = nullptr;
   SoScale* scale_ = nullptr;
+  SbMatrix toWorld_ = SbMatrix::identity();
   float size_ = 1.0f;
   bool updating_ = false;
   SoFieldSensor locationSensor_;
+  std::function<void()> draggedCallback_;
 };
 
 }  // namespace ivshadow

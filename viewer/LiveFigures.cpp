@@ -1,5 +1,8 @@
 #include "viewer/LiveFigures.h"
 
+#include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/NodesOfType.h"
+
 #include <nlohmann/json.hpp>
 
 #include <QStringList>
@@ -13,107 +16,163 @@ QString mebibytes(std::uint64_t bytes) {
   return QString("%1 MiB").arg(static_cast<double>(bytes) / (1024.0 * 1024.0), 0, 'f', 1);
 }
 
+QString ms(double value) {
+  return QString("%1 ms").arg(value, 0, 'f', 1);
+}
+
+// Rays in thousands or millions, so that a line stays short.
+QString count(std::uint64_t n) {
+  if (n >= 10'000'000) return QString("%1M").arg(double(n) / 1e6, 0, 'f', 1);
+  if (n >= 10'000) return QString("%1k").arg(double(n) / 1e3, 0, 'f', 0);
+  return QString::number(n);
+}
+
+// A pass of this frame cannot have taken longer than the frame (a figure above it is one of an
+// earlier frame, or a timer read wrongly). One millisecond allows for the clocks' rounding.
+bool withinFrame(double passMs, double frameMs) {
+  return passMs >= 0.0 && passMs <= frameMs + 1.0;
+}
+
+// GPU time beside the wall time of the same work: the wall clock waited for the GPU, so the GPU
+// time is at most that (5 % and half a millisecond for the two clocks). Others are not shown.
+QString gpuBeside(double gpuMs, double wallMs) {
+  if (gpuMs <= 0.0 || gpuMs > wallMs * 1.05 + 0.5) return {};
+  return "  GPU " + ms(gpuMs);
+}
+
 }  // namespace
 
 LiveFigures LiveFigures::collect(SoNode* root, double frameMs, double gpuFrameMs,
+                                 double framesPerSecond, bool softwareRenderer,
                                  const LiveFigures& previous) {
   LiveFigures figures;
   figures.frameMs = frameMs;
   figures.gpuFrameMs = gpuFrameMs;
+  figures.framesPerSecond = framesPerSecond;
   if (root != nullptr) {
     figures.shadows = collectDeepShadowStatistics(root);
     figures.peeling = collectPeelStatistics(root);
+    int unnamed = 0;
+    forEachNodeOfType<SoTransparentShadowGroup>(root, [&](SoTransparentShadowGroup& node) {
+      Group group;
+      group.name = node.getName().getString();
+      ++unnamed;
+      if (group.name.empty()) group.name = "group " + std::to_string(unnamed);
+      const int renderer = node.renderer.getValue();
+      group.autoRenderer = renderer == SoTransparentShadowGroup::AUTO_RENDERER;
+      // As the group decides (AutoTracerChoice): AUTO traces where GL is a software rasteriser.
+      group.traced =
+          renderer == SoTransparentShadowGroup::TRACER || (group.autoRenderer && softwareRenderer);
+      group.stats = node.getStatistics();
+      figures.groups.push_back(std::move(group));
+    });
   }
+  // Counters that moved since the frame before tell which passes ran during this one; the
+  // times beside them are those of the last run, whenever it was.
   figures.rebuiltThisFrame = figures.shadows.rebuilds != previous.shadows.rebuilds;
   figures.tracedThisFrame = figures.shadows.rayFrames != previous.shadows.rayFrames;
   figures.pictureTracedThisFrame = figures.shadows.tracerFrames != previous.shadows.tracerFrames;
+  figures.peeledThisFrame = figures.peeling.frames != previous.peeling.frames ||
+                            figures.peeling.tracedFrames != previous.peeling.tracedFrames;
   return figures;
+}
+
+bool LiveFigures::gpuFramePlausible() const {
+  return gpuFrameMs > 0.0 && gpuFrameMs <= frameMs * 1.05 + 0.5;
+}
+
+QString LiveFigures::pathSummary() const {
+  bool traced = false, raster = false, automatic = false;
+  for (const Group& group : groups) {
+    (group.traced ? traced : raster) = true;
+    automatic = automatic || group.autoRenderer;
+  }
+  QString path = traced && raster ? "TRACER + RASTER"
+                 : traced         ? "TRACER (CPU)"
+                 : raster         ? "RASTER (GL)"
+                                  : "no shadow group";
+  if (automatic) path += ", by AUTO";
+  return path;
 }
 
 QString LiveFigures::text() const {
   QStringList lines;
-  lines << QString("frame      %1 ms (GL timer %2 ms)")
-               .arg(frameMs, 0, 'f', 1)
-               .arg(gpuFrameMs, 0, 'f', 1);
-  const double build = rebuiltThisFrame ? shadows.lastBuildMs : 0.0;
-  lines << QString("map build  %1 ms, GPU %2 ms (%3 so far)%4")
-               .arg(shadows.lastBuildMs, 0, 'f', 1)
-               .arg(shadows.gpuBuildMs, 0, 'f', 1)
-               .arg(shadows.rebuilds)
-               .arg(rebuiltThisFrame ? " (this frame)" : "");
-  lines << QString("peel       %1 ms, GPU %2 ms, %3 passes")
-               .arg(peeling.peelMs, 0, 'f', 1)
-               .arg(peeling.gpuPeelMs, 0, 'f', 1)
-               .arg(peeling.passes);
-  const bool tracing =
-      std::any_of(shadows.lights.begin(), shadows.lights.end(),
-                  [](const DeepShadowLightStatistics& light) { return light.method != "MAP"; });
-  if (tracing) {
-    lines << QString(
-                 "rays       %1 ms, capture GPU %2 ms, %3 rays, %4 volume faces%5 (BVH %6 ms, "
-                 "%7)")
-                 .arg(shadows.raysMs, 0, 'f', 1)
-                 .arg(shadows.gpuCaptureMs, 0, 'f', 1)
-                 .arg(shadows.raysTraced)
-                 .arg(shadows.volumeFaces)
-                 .arg(tracedThisFrame ? " (this frame)" : "")
-                 .arg(shadows.bvhBuildMs, 0, 'f', 1)
-                 .arg(mebibytes(shadows.bvhBytes));
+  QString frame = QString("frame %1  %2 fps").arg(ms(frameMs)).arg(framesPerSecond, 0, 'f', 1);
+  if (gpuFramePlausible()) frame += "  GL " + ms(gpuFrameMs);
+  lines << frame;
+  lines << "path  " + pathSummary();
+  double passes = 0.0;
+  if (rebuiltThisFrame && withinFrame(shadows.lastBuildMs, frameMs)) {
+    lines << QString("map   %1%2  build %3")
+                 .arg(ms(shadows.lastBuildMs), gpuBeside(shadows.gpuBuildMs, shadows.lastBuildMs))
+                 .arg(shadows.rebuilds);
+    passes += shadows.lastBuildMs;
   }
-  if (shadows.tracerScenes > 0) {
-    // Which picture the frame shows: one traced now, at the viewport's size or reduced while
-    // the scene moves (movingResolution), or the one kept.
-    const QString which =
-        !pictureTracedThisFrame
-            ? QString("kept")
-            : QString("%1 x %2, %3")
-                  .arg(shadows.tracerWidth)
-                  .arg(shadows.tracerHeight)
-                  .arg(shadows.tracerReduced > 0 ? "reduced while moving, refined when still"
-                                                 : "full");
-    lines << QString("tracer     %1 ms (%2), %3 rays, %4 refined")
-                 .arg(shadows.tracerMs, 0, 'f', 1)
-                 .arg(which)
-                 .arg(shadows.raysTraced)
-                 .arg(shadows.tracerRefines);
+  if (peeledThisFrame && withinFrame(peeling.peelMs, frameMs)) {
+    lines << (peeling.passes > 0
+                  ? QString("peel  %1%2  %3 passes")
+                        .arg(ms(peeling.peelMs), gpuBeside(peeling.gpuPeelMs, peeling.peelMs))
+                        .arg(peeling.passes)
+                  : QString("peel  %1  traced").arg(ms(peeling.peelMs)));
+    passes += peeling.peelMs;
   }
-  // The nodes time their own passes; what is left of the frame is the shaded scene.
-  const double rays =
-      (tracedThisFrame ? shadows.raysMs : 0.0) + (pictureTracedThisFrame ? shadows.tracerMs : 0.0);
-  lines << QString("shading    %1 ms, GPU %2 ms (the groups' children)")
-               .arg(std::max(0.0, frameMs - build - peeling.peelMs - rays), 0, 'f', 1)
-               .arg(shadows.gpuShadingMs, 0, 'f', 1);
+  if (tracedThisFrame && withinFrame(shadows.raysMs, frameMs)) {
+    QString rays = QString("rays  %1  %2 rays").arg(ms(shadows.raysMs), count(shadows.raysTraced));
+    if (shadows.volumeFaces > 0) rays += QString("  %1 faces").arg(count(shadows.volumeFaces));
+    lines << rays;
+    passes += shadows.raysMs;
+  }
+  if (pictureTracedThisFrame && withinFrame(shadows.tracerMs, frameMs)) {
+    lines << QString("trace %1  %2x%3 %4")
+                 .arg(ms(shadows.tracerMs))
+                 .arg(shadows.tracerWidth)
+                 .arg(shadows.tracerHeight)
+                 .arg(shadows.tracerReduced > 0 ? "moving" : "full");
+    passes += shadows.tracerMs;
+  } else if (shadows.tracerScenes > 0 &&
+             std::any_of(groups.begin(), groups.end(), [](const Group& g) { return g.traced; })) {
+    // A still frame of a traced group draws the picture it kept: nothing is traced.
+    lines << QString("trace kept picture  %1 refined").arg(shadows.tracerRefines);
+  }
+  const bool raster =
+      std::any_of(groups.begin(), groups.end(), [](const Group& g) { return !g.traced; });
+  if (raster || groups.empty()) {
+    // The nodes time their own passes; what is left of the frame is the shaded scene.
+    lines << QString("shade %1%2")
+                 .arg(ms(std::max(0.0, frameMs - passes)),
+                      gpuBeside(shadows.gpuShadingMs, frameMs - passes));
+  }
   std::uint64_t total = 0;
-  const char* const faceNames[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
-  for (const DeepShadowLightStatistics& light : shadows.lights) {
-    const QString name = light.name.empty() ? QString("light") : QString::fromStdString(light.name);
-    const bool opacity = light.method == "OPACITY_MAP";
-    if (light.method != "MAP" && !opacity) {
-      // Traced shadows and shadow volumes keep no map: no layers, no memory of their own.
-      lines << name + (light.method == "VOLUMES" ? ": shadow volumes, no map"
-                                                 : ": shadow rays, no map");
+  int maps = 0;
+  for (const Group& group : groups) {
+    if (group.traced) {
+      // Its lights' shadows are traced with the picture: the group keeps no maps.
+      lines << QString::fromStdString(group.name) + ": traced, no maps";
       continue;
     }
-    total += light.bytes;
-    // How the map was built: from fragment lists, or peeled where they did not fit.
-    const QString build = light.mapBuild == "FRAGMENT_LISTS" ? ", fragment lists"
-                          : light.mapBuild == "PEELING"      ? ", peeled"
-                                                             : "";
-    lines << QString("%1: %2 x %2 per face, %3%4%5")
-                 .arg(name)
-                 .arg(light.resolution)
-                 .arg(light.coloured ? "colour" : "monochrome")
-                 .arg(opacity ? ", opacity map" : "")
-                 .arg(build);
-    QStringList faces;
-    for (int face = 0; face < 6; ++face) {
-      faces << QString("%1 %2").arg(faceNames[face]).arg(light.layersUsed[std::size_t(face)]);
+    for (const DeepShadowLightStatistics& light : group.stats.lights) {
+      const QString name =
+          light.name.empty() ? QString("light") : QString::fromStdString(light.name);
+      const bool opacity = light.method == "OPACITY_MAP";
+      if (light.method != "MAP" && !opacity) {
+        lines << name + (light.method == "VOLUMES" ? ": VOLUMES, no map" : ": RAYS, no map");
+        continue;
+      }
+      total += light.bytes;
+      ++maps;
+      const QString build = light.mapBuild == "FRAGMENT_LISTS" ? " lists"
+                            : light.mapBuild == "PEELING"      ? " peeled"
+                                                               : "";
+      lines << QString("%1: %2 %3 %4%5 %6")
+                   .arg(name, opacity ? "OPACITY" : "MAP")
+                   .arg(light.resolution)
+                   .arg(light.coloured ? "colour" : "mono", build, mebibytes(light.bytes));
+      QStringList faces;
+      for (int layers : light.layersUsed) faces << QString::number(layers);
+      lines << QString("  %1 %2").arg(opacity ? "slices" : "layers", faces.join(' '));
     }
-    lines << (opacity ? "  slices " : "  layers ") + faces.join("  ");
-    lines
-        << QString("  memory %1 (peak %2)").arg(mebibytes(light.bytes), mebibytes(light.peakBytes));
   }
-  if (total > 0) lines << "maps total " + mebibytes(total);
+  if (maps > 1) lines << "maps  " + mebibytes(total);
   return lines.join('\n');
 }
 
@@ -121,6 +180,7 @@ std::string LiveFigures::json() const {
   nlohmann::json out;
   out["frame_ms"] = frameMs;
   out["gpu_ms"] = gpuFrameMs;
+  out["frames_per_second"] = framesPerSecond;
   out["passes"] = {{"dsm_build_ms", shadows.lastBuildMs},
                    {"dsm_build_gpu_ms", shadows.gpuBuildMs},
                    {"peel_ms", peeling.peelMs},
@@ -129,6 +189,13 @@ std::string LiveFigures::json() const {
                    {"tracer_ms", shadows.tracerMs},
                    {"rays_capture_gpu_ms", shadows.gpuCaptureMs},
                    {"shading_gpu_ms", shadows.gpuShadingMs}};
+  out["this_frame"] = {{"map_build", rebuiltThisFrame},
+                       {"peel", peeledThisFrame},
+                       {"rays", tracedThisFrame},
+                       {"tracer", pictureTracedThisFrame}};
+  nlohmann::json paths = nlohmann::json::object();
+  for (const Group& group : groups) paths[group.name] = group.traced ? "TRACER" : "RASTER";
+  out["group_paths"] = paths;
   out["rays_traced"] = shadows.raysTraced;
   out["volume_faces"] = shadows.volumeFaces;
   out["dsm_rebuilds"] = shadows.rebuilds;
@@ -151,6 +218,7 @@ std::string LiveFigures::json() const {
   out["tracer_size"] = {shadows.tracerWidth, shadows.tracerHeight};
   out["tracer_reduced"] = shadows.tracerReduced > 0;
   out["tracer_refines"] = shadows.tracerRefines;
+  out["panel_text"] = text().toStdString();
   return out.dump();
 }
 

@@ -5,8 +5,11 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 #include "nodes/ShadowGroupElement.h"
+#include "viewer/FocusedWheel.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/nodes/SoCallback.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -14,6 +17,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QPixmap>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -61,12 +65,12 @@ MapInspector::MapInspector(QWidget* parent) : QDockWidget("Deep shadow map", par
   auto* content = new QWidget(this);
   auto* layout = new QVBoxLayout(content);
   auto* form = new QFormLayout;
-  lights_ = new QComboBox(content);
-  faces_ = new QComboBox(content);
+  lights_ = new FocusedWheel<QComboBox>(content);
+  faces_ = new FocusedWheel<QComboBox>(content);
   for (const char* face : kFaceNames) faces_->addItem(face);
-  layer_ = new QSpinBox(content);
+  layer_ = new FocusedWheel<QSpinBox>(content);
   layer_->setRange(1, kMaxMapLayers);
-  mode_ = new QComboBox(content);
+  mode_ = new FocusedWheel<QComboBox>(content);
   mode_->addItems({"depth", "visibility"});
   form->addRow("light", lights_);
   form->addRow("face (F1-F6)", faces_);
@@ -77,11 +81,21 @@ MapInspector::MapInspector(QWidget* parent) : QDockWidget("Deep shadow map", par
   image_->setFixedSize(kShownSize, kShownSize);
   image_->setAlignment(Qt::AlignCenter);
   layout->addWidget(image_);
+  // As wide as the picture and as high as its wrapped text needs: a wrapping label sized by
+  // the dock alone was given one line's height and ran over the picture.
   status_ = new QLabel(content);
   status_->setWordWrap(true);
+  status_->setFixedWidth(kShownSize);
+  status_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  status_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Minimum);
   layout->addWidget(status_);
   layout->addStretch();
-  setWidget(content);
+  // Scrolls when the dock is shorter than the picture and its text.
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidget(content);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  setWidget(scroll);
 
   const auto changed = [this] { request(); };
   connect(lights_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
@@ -191,7 +205,7 @@ void MapInspector::request() {
 void MapInspector::attachProbe() {
   if (!group_) {
     statusText_ = "The scene has no TransparentShadowGroup, so no deep shadow map.";
-    status_->setText(statusText_);
+    showStatus(statusText_);
     pending_ = false;
     return;
   }
@@ -224,7 +238,54 @@ void MapInspector::probe(void* self, SoAction* action) {
   that->readDone_ = true;
 }
 
-void MapInspector::frameDrawn(int rebuilds) {
+void MapInspector::showStatus(const QString& text) {
+  statusText_ = text;
+  status_->setText(text);
+  // The label's height follows its wrapped text at its fixed width.
+  status_->setMinimumHeight(status_->heightForWidth(kShownSize));
+}
+
+QString MapInspector::whyNoMap(SoTransparentShadowGroup* group,
+                               const DeepShadowLightStatistics* light) const {
+  if (group == nullptr) return {};
+  const QString groupName = group->getName().getLength() > 0
+                                ? QString("The group '%1'").arg(group->getName().getString())
+                                : QString("The shadow group");
+  const int renderer = group->renderer.getValue();
+  if (renderer == SoTransparentShadowGroup::TRACER ||
+      (renderer == SoTransparentShadowGroup::AUTO_RENDERER && softwareRenderer_)) {
+    return groupName +
+           (renderer == SoTransparentShadowGroup::TRACER
+                ? QString(" has renderer TRACER")
+                : QString(" has renderer AUTO, which chose TRACER on this software rasteriser")) +
+           ": it is traced on the CPU with its shadows, and its lights keep no map. To see a "
+           "map, set the group's renderer to RASTER and the light's method to MAP.";
+  }
+  if (light == nullptr || light->method == "MAP" || light->method == "OPACITY_MAP") return {};
+  // The light's own method field, or the group's for the lights it casts with its fields.
+  SoFieldContainer* owner = group;
+  if (!light->name.empty()) {
+    SoSearchAction search;
+    search.setName(SbName(light->name.c_str()));
+    search.setInterest(SoSearchAction::FIRST);
+    search.apply(group);
+    if (search.getPath() != nullptr && search.getPath()->getTail()->getField("method") != nullptr)
+      owner = search.getPath()->getTail();
+  }
+  const auto* method = static_cast<const SoSFEnum*>(owner->getField("method"));
+  const bool chosen = method != nullptr && method->getValue() == 0;
+  const QString resolved = QString::fromStdString(light->method);
+  return QString("%1 %2, so it keeps no map. To see one, set its method to MAP.")
+      .arg(lights_->currentText(),
+           chosen ? QString("has method AUTO, which chose %1 (%2) on this software rasteriser")
+                        .arg(resolved, resolved == "VOLUMES" ? "shadow volumes"
+                                                             : "shadow rays traced per "
+                                                               "pixel")
+                  : QString("has method %1").arg(resolved));
+}
+
+void MapInspector::frameDrawn(int rebuilds, bool softwareRenderer) {
+  softwareRenderer_ = softwareRenderer;
   if (!isVisible() || !root_) return;
   if (readDone_) {
     readDone_ = false;
@@ -234,6 +295,26 @@ void MapInspector::frameDrawn(int rebuilds) {
   if (rebuilds != rebuilds_ && !requested_) pending_ = true;
   rebuilds_ = rebuilds;
   if (!pending_) return;
+  // A traced group keeps no maps at all, whatever its lights' statistics kept from before.
+  {
+    SoTransparentShadowGroup* traced = nullptr;
+    const LightInGroup selected = lightAt(root_.get(), std::max(0, lights_->currentIndex()));
+    if (selected.group != nullptr) {
+      traced = selected.group;
+    } else {
+      forEachNodeOfType<SoTransparentShadowGroup>(root_.get(), [&](SoTransparentShadowGroup& g) {
+        if (traced == nullptr) traced = &g;
+      });
+    }
+    const QString why = whyNoMap(traced, nullptr);
+    if (!why.isEmpty()) {
+      showStatus(why);
+      pending_ = false;
+      picture_ = QImage();
+      image_->clear();
+      return;
+    }
+  }
   // Whatever the maps hold now: the group has built them during the frame just drawn.
   refillLights();
   if (!wantedLight_.isEmpty() && lights_->count() > 0 && lights_->findText(wantedLight_) < 0) {
@@ -241,14 +322,14 @@ void MapInspector::frameDrawn(int rebuilds) {
     for (int i = 0; i < lights_->count(); ++i) names << lights_->itemText(i);
     statusText_ = QString("no deep shadow light named '%1' has a map (lights: %2)")
                       .arg(wantedLight_, names.join(", "));
-    status_->setText(statusText_);
+    showStatus(statusText_);
     pending_ = false;
     return;
   }
   const LightInGroup light = lightAt(root_.get(), std::max(0, lights_->currentIndex()));
   if (light.group == nullptr) {
     statusText_ = "No deep shadow map has been built yet (no light that is on?).";
-    status_->setText(statusText_);
+    showStatus(statusText_);
     pending_ = false;
     return;
   }
@@ -260,10 +341,11 @@ void MapInspector::frameDrawn(int rebuilds) {
   if (light.stats.method == "OPACITY_MAP") {
     // Its layers are slices of absorbed light and one opaque depth per face, not the
     // distance and visibility pairs the view draws.
-    statusText_ = QString("%1 keeps an opacity map (method OPACITY_MAP), which the inspector "
-                          "does not show; method MAP keeps a deep shadow map it shows.")
+    statusText_ = QString(
+                      "%1 keeps an opacity map (method OPACITY_MAP), which the inspector "
+                      "does not show; method MAP keeps a deep shadow map it shows.")
                       .arg(lights_->currentText());
-    status_->setText(statusText_);
+    showStatus(statusText_);
     pending_ = false;
     picture_ = QImage();
     image_->clear();
@@ -284,9 +366,12 @@ void MapInspector::frameDrawn(int rebuilds) {
                       .arg(layers)
                       .arg(layer_->value());
     // A light that traces shadow rays (method RAYS, or AUTO on a software rasteriser)
-    // keeps no map at all.
-    if (total == 0) statusText_ += " The light keeps no map: is its method RAYS?";
-    status_->setText(statusText_);
+    // keeps no map at all: say which, and how to get one.
+    if (total == 0) {
+      const QString why = whyNoMap(light.group, &light.stats);
+      statusText_ += " " + (why.isEmpty() ? QString("The light keeps no map.") : why);
+    }
+    showStatus(statusText_);
     picture_ = QImage();
     image_->clear();
     return;
@@ -302,7 +387,7 @@ void MapInspector::frameDrawn(int rebuilds) {
 void MapInspector::showReadback() {
   if (!readOk_) {
     statusText_ = "Cannot read the map: " + QString::fromStdString(whyNot_);
-    status_->setText(statusText_);
+    showStatus(statusText_);
     return;
   }
   const int size = readback_.size;
@@ -358,7 +443,7 @@ void MapInspector::showReadback() {
                     .arg(nearest < kNoSurface ? nearest : 0.0f, 0, 'f', 3)
                     .arg(farthest, 0, 'f', 3)
                     .arg(centreText);
-  status_->setText(statusText_);
+  showStatus(statusText_);
 }
 
 MapInspector::Hidden::Hidden(MapInspector& inspector)

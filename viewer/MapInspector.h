@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/DeepShadowMapReadback.h"
+#include "ivshadow/DeepShadowStatistics.h"
 #include "scene/CoinRef.h"
 
 #include <QDockWidget>
@@ -37,7 +38,8 @@ class MapInspector : public QDockWidget {
   void setScene(SoSeparator* root);
   // Call after each frame with the maps' rebuild count (DeepShadowStatistics::rebuilds): shows
   // what the probe read during the frame, and reads again when the maps were rebuilt.
-  void frameDrawn(int rebuilds);
+  // `softwareRenderer`: the GL is a software rasteriser, where AUTO traces on the CPU.
+  void frameDrawn(int rebuilds, bool softwareRenderer);
   void selectFace(int face);
   void selectLayer(int layer);
   // The reason the last read failed, or what it showed ("light Lamp +x layer 1 ...").
@@ -78,6 +80,9 @@ class MapInspector : public QDockWidget {
   void attachProbe();
   void detachProbe();
   void showReadback();
+  void showStatus(const QString& text);
+  // Why the group or the light keeps no map, and how to get one; "" when it should have one.
+  QString whyNoMap(SoTransparentShadowGroup* group, const DeepShadowLightStatistics* light) const;
 
   QComboBox* lights_ = nullptr;
   QComboBox* faces_ = nullptr;
@@ -96,6 +101,7 @@ class MapInspector : public QDockWidget {
   bool requested_ = false;  // the probe reads during the next frame
   bool readDone_ = false;
   bool readOk_ = false;
+  bool softwareRenderer_ = false;
   std::string whyNot_;
   MapLayerReadback readback_;
   QImage picture_;

@@ -12,13 +12,16 @@
 #include "scene/InputError.h"
 #include "viewer/CollapsibleSection.h"
 #include "viewer/FieldEditor.h"
+#include "viewer/FocusedWheel.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFontDatabase>
 #include <QFormLayout>
 #include <QFrame>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
@@ -26,6 +29,7 @@
 #include <QSignalBlocker>
 #include <QSizePolicy>
 #include <QStackedWidget>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <set>
@@ -95,13 +99,13 @@ std::vector<FieldSpec> fieldsOfType(SoType type, std::vector<FieldSpec> first) {
 // power of two, is left to the file: a spin box would offer the values between).
 const std::vector<FieldSpec>& groupFields() {
   static const std::vector<FieldSpec> fields = [] {
-    std::vector<FieldSpec> all = fieldsOfType(
-        SoTransparentShadowGroup::getClassTypeId(),
-        {{kMethod, "isActive", {}},
-         {kMethod, "renderer", {}},
-         {kMethod, "movingResolution", {kMinMovingResolution, 1.0, 0.125, 3}},
-         {kMethod, "transparency", {}},
-         {kMethod, "castingLights", {}}});
+    std::vector<FieldSpec> all =
+        fieldsOfType(SoTransparentShadowGroup::getClassTypeId(),
+                     {{kMethod, "isActive", {}},
+                      {kMethod, "renderer", {}},
+                      {kMethod, "movingResolution", {kMinMovingResolution, 1.0, 0.125, 3}},
+                      {kMethod, "transparency", {}},
+                      {kMethod, "castingLights", {}}});
     all.push_back({kBounce, "bounce", {}});
     all.push_back({kBounce, "bounceLights", {1, kMaxBounceLights, 16, 0}});
     return all;
@@ -154,12 +158,27 @@ ShadowPanel::ShadowPanel(QWidget* parent) : QDockWidget("Deep shadows", parent) 
   setObjectName("ShadowPanel");
   auto* content = new QWidget(this);
   auto* layout = new QVBoxLayout(content);
-  nodes_ = new QComboBox(content);
+  nodes_ = new FocusedWheel<QComboBox>(content);
   nodes_->setToolTip("The deep shadow node whose fields are edited below");
   // Long node names are shortened rather than widening the panel.
   nodes_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   nodes_->setMinimumContentsLength(16);
   layout->addWidget(nodes_);
+  tools_ = new QHBoxLayout;
+  layout->addLayout(tools_);
+
+  // First, under the node list: what the frame cost is what is watched while editing, and was
+  // below every section (four lines showed on a 1000-pixel-high screen).
+  CollapsibleSection* figures = addSection(kFigures, content);
+  layout->addWidget(figures);
+  figures_ = new QLabel(figures);
+  figures_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+  figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  figures_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  // The lines are short; one that is not is cut at the panel's edge rather than widening it.
+  figures_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  figures->form()->addRow(figures_);
+
   forms_ = new QStackedWidget(content);
   layout->addWidget(forms_);
 
@@ -167,25 +186,24 @@ ShadowPanel::ShadowPanel(QWidget* parent) : QDockWidget("Deep shadows", parent) 
   auto* emptyLayout = new QVBoxLayout(emptyPage_);
   emptyLayout->setContentsMargins(0, 0, 0, 0);
   auto* explanation = wrappingLabel(
-      "This scene has no deep shadow nodes. Adding shadows puts the scene in a "
+      "This scene has no deep shadow nodes. Add shadows puts the scene in a "
       "TransparentShadowGroup, in which its own lights cast; a scene without lights gets one "
-      "DeepShadowLight.",
+      "DeepShadowLight. A model without a floor casts its shadows into the void: the ground "
+      "catches them.",
       emptyPage_);
   emptyLayout->addWidget(explanation);
-  auto* add = new QPushButton("Add deep shadow light", emptyPage_);
+  ground_ = new QCheckBox("with a ground under the model", emptyPage_);
+  ground_->setChecked(true);
+  ground_->setToolTip(
+      "Adds a square below the model's bounding box that catches its shadows, and a fill light "
+      "when the scene had no light of its own");
+  emptyLayout->addWidget(ground_);
+  auto* add = new QPushButton("Add shadows", emptyPage_);
   emptyLayout->addWidget(add);
   connect(add, &QPushButton::clicked, this, [this] {
-    if (addLight_) addLight_();
+    if (addShadows_) addShadows_(ground_->isChecked());
   });
   forms_->addWidget(emptyPage_);
-
-  CollapsibleSection* figures = addSection(kFigures, content);
-  layout->addWidget(figures);
-  figures_ = wrappingLabel({}, figures);
-  figures_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-  figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  figures_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
-  figures->form()->addRow(figures_);
   layout->addStretch();
 
   // Scrolls rather than growing taller than the window; as wide as its widest row.
@@ -330,6 +348,9 @@ void ShadowPanel::addEntry(SoNode* node, const QString& label) {
       layout->addWidget(section);
     }
     auto* editor = new FieldEditor(field, spec.range, section);
+    editor->onEdited([this] {
+      if (edited_) edited_();
+    });
     section->form()->addRow(spec.name, editor);
     entry.editors[spec.name] = editor;
   }
@@ -392,6 +413,13 @@ void ShadowPanel::assign(const FieldAssignment& assignment) {
     throw InputError(where + "no deep shadow node named '" + assignment.node + "' in " +
                      sceneName_ + " (the shadow panel's named nodes: " + joined(names) + ")");
   }
+}
+
+void ShadowPanel::addToolAction(QAction* action) {
+  auto* button = new QToolButton(this);
+  button->setDefaultAction(action);
+  button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+  tools_->addWidget(button);
 }
 
 void ShadowPanel::setFigures(const QString& text) {

@@ -10,7 +10,10 @@
 #include <string>
 #include <vector>
 
+class QAction;
+class QCheckBox;
 class QComboBox;
+class QLayout;
 class QLabel;
 class QStackedWidget;
 class SoNode;
@@ -25,9 +28,10 @@ struct FieldAssignment;
 // The dock panel of the deep shadow nodes in the scene: pick one SoDeepShadowLight,
 // SoTransparentShadowGroup or SoPeelingSeparator from the list and edit its fields, grouped
 // in sections that fold away (Light, Shadow method, Map, Rays, Peeling); every change applies
-// to the scene at once. A scene without any offers one button that adds shadows. Below, the
-// live figures (section Figures). The content scrolls when the window is too short, and the
-// dock is as wide as its content.
+// to the scene at once. A scene without any offers one button that adds shadows (and, if
+// asked, a ground that catches them). The live figures (section Figures) come first, under the
+// node list, so that they are seen without scrolling. The content scrolls when the window is
+// too short, and the dock is as wide as its content.
 class ShadowPanel : public QDockWidget {
  public:
   explicit ShadowPanel(QWidget* parent);
@@ -35,8 +39,15 @@ class ShadowPanel : public QDockWidget {
 
   // Lists the deep shadow nodes under `root` (nullptr: none) and binds the editors to them.
   void setScene(SoSeparator* root, const std::string& sceneName);
-  // Called when the user asks to add a deep shadow light to a scene that has none.
-  void onAddLightRequested(std::function<void()> callback) { addLight_ = std::move(callback); }
+  // Called when the user asks to add shadows to a scene that has no deep shadow nodes, with
+  // whether to add a ground that catches them (and a fill light) too.
+  void onAddShadowsRequested(std::function<void(bool ground)> callback) {
+    addShadows_ = std::move(callback);
+  }
+  // Called after each value the user (or --set) writes through an editor.
+  void onFieldEdited(std::function<void()> callback) { edited_ = std::move(callback); }
+  // Shows `action` as a button under the node list (the viewer's Move Light).
+  void addToolAction(QAction* action);
   // Called with the node whose fields are shown, whenever that changes.
   void onNodeSelected(std::function<void(SoNode*)> callback) { selected_ = std::move(callback); }
   SoNode* selectedNode() const;
@@ -76,7 +87,10 @@ class ShadowPanel : public QDockWidget {
   QStringList collapsed_;
   std::vector<Entry> entries_;
   std::string sceneName_;
-  std::function<void()> addLight_;
+  std::function<void(bool)> addShadows_;
+  std::function<void()> edited_;
+  QCheckBox* ground_ = nullptr;
+  QLayout* tools_ = nullptr;
   std::function<void(SoNode*)> selected_;
 };
 

@@ -101,6 +101,9 @@ std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) 
         "ivshadow: error: --figures, --window-shot, --inspect-out and --drag-light need "
         "--screenshot");
   }
+  if (options.addGround && !options.addLight) {
+    throw InputError("ivshadow: error: --add-ground needs --add-light");
+  }
   if (!options.inspectOut.empty() && options.inspect.empty()) {
     throw InputError("ivshadow: error: --inspect-out needs --inspect");
   }
@@ -192,7 +195,7 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   // Scripted edits go through what the user would click: the panel's button and editors.
   try {
     if (options.addLight) {
-      const std::string error = window.addDeepShadowLight();
+      const std::string error = window.addDeepShadowLight(options.addGround);
       if (!error.empty()) throw InputError(error);
     }
     for (const FieldAssignment& assignment : assignments) window.panel().assign(assignment);

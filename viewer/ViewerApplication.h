@@ -10,6 +10,7 @@ struct ViewerOptions {
   std::string screenshot;  // non-empty: save the second rendered frame here and quit
   std::string size;        // WIDTHxHEIGHT of the 3D area; empty: the last window's, else 800x600
   bool addLight = false;   // wrap the scene in a deep shadow group first
+  bool addGround = false;  // with addLight: and add a ground that catches the shadows
   std::vector<std::string> assignments;  // NAME.field=VALUE, applied through the panel
   std::string saveScene;                 // non-empty: write the scene here and quit
   std::string figures;                   // non-empty: the screenshot frame's figures (JSON)

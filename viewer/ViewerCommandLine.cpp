@@ -21,8 +21,11 @@ void addViewerOptions(CLI::App& app, ViewerOptions& options) {
                  "3D area WIDTHxHEIGHT (default: as the window was last closed, else 800x600; "
                  "an interactive window is then fitted to the screen)");
   app.add_flag("--add-light", options.addLight,
-               "Put a scene without deep shadow nodes into a shadow group with a deep shadow "
-               "light, as the panel's button does");
+               "Put a scene without deep shadow nodes into a shadow group in which its lights "
+               "cast (a deep shadow light where it has none), as the panel's Add shadows does");
+  app.add_flag("--add-ground", options.addGround,
+               "With --add-light: also a ground under the model that catches its shadows (and "
+               "a fill light where the scene had no light), as the panel's check box does");
   app.add_option("--set", options.assignments,
                  "NAME.field=VALUE: set a field of a deep shadow node through the shadow panel "
                  "(repeatable)")

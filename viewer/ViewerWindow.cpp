@@ -10,10 +10,16 @@
 #include "viewer/MapInspector.h"
 #include "viewer/SceneWriter.h"
 #include "viewer/ShadowPanel.h"
-#include "viewer/TimedExaminerViewer.h"
 #include "viewer/WrapInShadowGroup.h"
 
+#include "ivshadow/SoTransparentShadowGroup.h"
+
+#include <Inventor/SbLine.h>
+#include <Inventor/SbPlane.h>
+#include <Inventor/SbViewVolume.h>
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <QAction>
@@ -38,6 +44,7 @@
 #include <QUrl>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 namespace ivshadow {
@@ -51,11 +58,22 @@ const char* const kCollapsedKey = "window/collapsedSections";
 const QSize kSmallestView(160, 120);
 // A title bar and borders of the usual size, assumed before the window manager tells.
 const QMargins kFrameAllowance(4, 28, 4, 4);
+// Brought into view, the light's dragger lies within this share of the view's half-width and
+// half-height from the centre.
+constexpr float kLightInView = 0.85f;
+
+// The view volume the examiner draws with: Coin's camera fitted to the viewport as
+// SoCamera::viewportMapping ADJUST_CAMERA does (a viewport taller than wide widens the view).
+SbViewVolume viewVolumeOf(SoCamera* camera, float aspect) {
+  SbViewVolume volume = camera->getViewVolume(aspect);
+  if (aspect < 1.0f) volume.scale(1.0f / aspect);
+  return volume;
+}
 
 }  // namespace
 
 ViewerWindow::ViewerWindow() {
-  setWindowTitle("ivshadow viewer");
+  setWindowTitle("ivshadow viewer[*]");
   // saveState() names the docks by their object names.
   setObjectName("ViewerWindow");
   frameLabel_ = new QLabel(this);
@@ -66,10 +84,12 @@ ViewerWindow::ViewerWindow() {
           [this] { QTimer::singleShot(250, this, [this] { reload(); }); });
   panel_ = new ShadowPanel(this);
   addDockWidget(Qt::RightDockWidgetArea, panel_);
-  panel_->onAddLightRequested([this] {
-    const std::string error = addDeepShadowLight();
+  panel_->onAddShadowsRequested([this](bool ground) {
+    const std::string error = addDeepShadowLight(ground);
     if (!error.empty()) reportError(error);
   });
+  panel_->onFieldEdited([this] { setSceneModified(true); });
+  dragger_.onDragged([this] { setSceneModified(true); });
   panel_->onNodeSelected([this](SoNode* node) { nodeSelected(node); });
   inspector_ = new MapInspector(this);
   addDockWidget(Qt::RightDockWidgetArea, inspector_);
@@ -95,6 +115,9 @@ void ViewerWindow::createViewer() {
   setCentralWidget(area);
   viewer_ = new TimedExaminerViewer(area);
   viewer_->onFrameTimed([this](double wallMs, double gpuMs) { frameDrawn(wallMs, gpuMs); });
+  viewer_->onLightDrag([this](TimedExaminerViewer::LightDrag phase, const SbVec2f& position) {
+    return dragLight(phase, position);
+  });
 }
 
 void ViewerWindow::buildMenus() {
@@ -133,6 +156,19 @@ void ViewerWindow::buildMenus() {
   draggerAction_->setCheckable(true);
   draggerAction_->setChecked(true);
   connect(draggerAction_, &QAction::toggled, this, [this](bool on) { showDragger(on); });
+  // Coin's examiner turns the camera on a drag in its view mode, and only its pick mode (the
+  // arrow icon, or Esc) lets the dragger be grabbed. Ctrl+drag moves the light in view mode;
+  // this mode makes every left-button drag do so.
+  moveLightAction_ = view->addAction("&Move Light (Ctrl+Drag)");
+  moveLightAction_->setCheckable(true);
+  moveLightAction_->setShortcut(QKeySequence(Qt::Key_L));
+  moveLightAction_->setToolTip(
+      "Drag in the 3D view to move the selected deep shadow light (without this, hold Ctrl "
+      "while dragging)");
+  connect(moveLightAction_, &QAction::toggled, this, [this](bool on) {
+    if (viewer_) viewer_->setMoveLightMode(on);
+  });
+  panel_->addToolAction(moveLightAction_);
 }
 
 void ViewerWindow::setInteractive(bool interactive) {
@@ -215,6 +251,18 @@ void ViewerWindow::showEvent(QShowEvent* event) {
 }
 
 void ViewerWindow::closeEvent(QCloseEvent* event) {
+  if (interactive_ && isWindowModified()) {
+    const auto answer = QMessageBox::question(
+        this, "Save changes? - ivshadow viewer",
+        "The scene has changed since it was opened (fields, the light, added shadows). Save it "
+        "before closing?",
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel ||
+        (answer == QMessageBox::Save && !chooseAndSaveSceneDone())) {
+      event->ignore();
+      return;
+    }
+  }
   if (interactive_) {
     // Scripted runs leave the settings alone: their windows are of the size asked for.
     QSettings settings("ivshadow", "viewer");
@@ -251,7 +299,9 @@ std::string ViewerWindow::openScene(const QString& path) {
     recent_.add(path_);
     panel_->setScene(scene_.get(), path_.toStdString());
     inspector_->setScene(scene_.get());
-    setWindowTitle(QFileInfo(path_).fileName() + " - ivshadow viewer");
+    setWindowTitle(QFileInfo(path_).fileName() + "[*] - ivshadow viewer");
+    setSceneModified(false);
+    if (!sameFile && isVisible()) bringLightIntoView();
     showMessage(loaded.warnings.empty() ? "Loaded " + path_
                                         : QString::fromStdString(loaded.warnings.front()));
     return {};
@@ -310,24 +360,130 @@ std::string ViewerWindow::saveSceneAs(const QString& path) {
     return error.what();
   }
   recent_.add(path);
+  setSceneModified(false);
   return {};
 }
 
-std::string ViewerWindow::addDeepShadowLight() {
+std::string ViewerWindow::addDeepShadowLight(bool ground) {
   if (!scene_) return "ivshadow: error: no scene to add a deep shadow light to";
   dragger_.detach();
+  const bool hadLight = ViewSetup::hasActiveLight(scene_.get());
   SoNode* added =
       wrapInShadowGroup(scene_.get(), viewer_->getCamera(), viewer_->getViewportRegion());
+  if (ground) {
+    SoTransparentShadowGroup* group = nullptr;
+    for (int i = 0; i < scene_->getNumChildren() && group == nullptr; ++i) {
+      if (scene_->getChild(i)->isOfType(SoTransparentShadowGroup::getClassTypeId()))
+        group = static_cast<SoTransparentShadowGroup*>(scene_->getChild(i));
+    }
+    if (group != nullptr)
+      addShadowGround(group, viewer_->getCamera(), viewer_->getViewportRegion(), !hadLight);
+  }
   // The scene has a light of its own now; like `ivshadow render` of the saved file, the
   // viewer drops its headlight.
   viewer_->setHeadlight(!ViewSetup::hasActiveLight(scene_.get()));
+  // The panel's pages for the new nodes are wider than the page that offered the button; the
+  // 3D area gives up the width rather than the window growing (for good: it was saved so).
+  const QSize before = size();
   panel_->setScene(scene_.get(), path_.toStdString());
   panel_->selectNode(added);
+  if (isVisible()) {
+    layout()->activate();
+    if (width() > before.width()) resize(before);
+    QTimer::singleShot(0, this, [this, before] {
+      if (width() > before.width()) resize(before);
+    });
+    bringLightIntoView();
+  }
   inspector_->setScene(scene_.get());
+  setSceneModified(true);
   showMessage(added->isOfType(SoDeepShadowLight::getClassTypeId())
-                  ? "Added a shadow group and a deep shadow light; File > Save Scene As keeps them"
-                  : "Added a shadow group: the scene's lights cast; File > Save Scene As keeps it");
+                  ? "Added shadows: a shadow group and a deep shadow light; File > Save Scene As "
+                    "keeps them"
+                  : "Added shadows: the scene's lights cast; File > Save Scene As keeps them");
   return {};
+}
+
+void ViewerWindow::setSceneModified(bool modified) {
+  setWindowModified(modified);
+}
+
+SoDeepShadowLight* ViewerWindow::lightToMove() const {
+  SoNode* node = panel_->selectedNode();
+  if (node != nullptr && node->isOfType(SoDeepShadowLight::getClassTypeId()))
+    return static_cast<SoDeepShadowLight*>(node);
+  return dragger_.light();
+}
+
+bool ViewerWindow::dragLight(TimedExaminerViewer::LightDrag phase, const SbVec2f& position) {
+  SoCamera* camera = viewer_->getCamera();
+  if (phase == TimedExaminerViewer::LightDrag::Start) {
+    movingLight_.reset();
+    SoDeepShadowLight* light = lightToMove();
+    if (light == nullptr || camera == nullptr ||
+        !LightDragger::toWorld(scene_.get(), light, movingToWorld_)) {
+      showMessage("No deep shadow light is selected in the panel to move");
+      return false;
+    }
+    movingLight_ = CoinRef<SoDeepShadowLight>(light);
+    movingToWorld_.multVecMatrix(light->location.getValue(), movingStart_);
+  }
+  if (!movingLight_ || camera == nullptr) return false;
+  // The pointer's ray met with the plane through the light's start that faces the camera: the
+  // light moves with the pointer, at the distance it had.
+  const SbViewVolume volume =
+      viewVolumeOf(camera, viewer_->getViewportRegion().getViewportAspectRatio());
+  SbLine ray;
+  volume.projectPointToLine(position, ray);
+  SbVec3f pointer;
+  if (!SbPlane(volume.getProjectionDirection(), movingStart_).intersect(ray, pointer)) return true;
+  if (phase == TimedExaminerViewer::LightDrag::Start) {
+    pointerStart_ = pointer;
+    showMessage("Moving the light " + QString(movingLight_->getName().getString()));
+    return true;
+  }
+  SbVec3f location;
+  movingToWorld_.inverse().multVecMatrix(movingStart_ + (pointer - pointerStart_), location);
+  movingLight_->location.setValue(location);
+  setSceneModified(true);
+  if (phase == TimedExaminerViewer::LightDrag::Finish) movingLight_.reset();
+  return true;
+}
+
+void ViewerWindow::bringLightIntoView() {
+  SbVec3f light;
+  SoCamera* camera = viewer_ ? viewer_->getCamera() : nullptr;
+  if (!interactive_ || camera == nullptr || !dragger_.worldLocation(light)) return;
+  const float aspect = viewer_->getViewportRegion().getViewportAspectRatio();
+  // The light in the camera's coordinates: x right, y up, looking down -z.
+  SbVec3f local;
+  camera->orientation.getValue().inverse().multVec(light - camera->position.getValue(), local);
+  // The dragger's ball and arrows reach about two of its sizes from the light.
+  const float reach = 2.0f * dragger_.worldSize();
+  const float up = std::fabs(local[1]) + reach, side = std::fabs(local[0]) + reach;
+  // The view's half-height per unit of distance (perspective) or in units (orthographic), as
+  // ADJUST_CAMERA fits it to the viewport.
+  const float widen = aspect < 1.0f ? 1.0f / aspect : 1.0f;
+  SbVec3f back;
+  camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, 1.0f), back);
+  if (camera->isOfType(SoPerspectiveCamera::getClassTypeId())) {
+    auto* perspective = static_cast<SoPerspectiveCamera*>(camera);
+    const float tanY = kLightInView * std::tan(0.5f * perspective->heightAngle.getValue()) * widen;
+    const float tanX = tanY * aspect;
+    const float depth = -local[2];
+    const float away = std::max({0.0f, up / tanY - depth, side / tanX - depth});
+    if (away <= 0.0f) return;
+    camera->position.setValue(camera->position.getValue() + back * away);
+    camera->focalDistance.setValue(camera->focalDistance.getValue() + away);
+  } else if (camera->isOfType(SoOrthographicCamera::getClassTypeId())) {
+    auto* orthographic = static_cast<SoOrthographicCamera*>(camera);
+    const float halfY = 0.5f * orthographic->height.getValue() * widen * kLightInView;
+    const float needed = std::max(up / halfY, side / (halfY * aspect));
+    if (needed > 1.0f) orthographic->height.setValue(orthographic->height.getValue() * needed);
+    // Behind the camera, the light would be clipped: the camera steps back past it.
+    if (local[2] > -reach)
+      camera->position.setValue(camera->position.getValue() + back * (local[2] + 2.0f * reach));
+  }
 }
 
 void ViewerWindow::settleDrawable() {
@@ -338,6 +494,8 @@ void ViewerWindow::settleDrawable() {
     gl->makeCurrent();
     gl->swapBuffers();
   }
+  // The window has its final size: the dragger can be fitted into the view it shows.
+  bringLightIntoView();
   viewer_->scheduleRedraw();
 }
 
@@ -367,10 +525,14 @@ void ViewerWindow::dropEvent(QDropEvent* event) {
 }
 
 void ViewerWindow::frameDrawn(double wallMs, double gpuMs) {
-  figures_ = LiveFigures::collect(scene_.get(), wallMs, gpuMs, figures_);
-  frameLabel_->setText(QString("frame %1 ms").arg(wallMs, 0, 'f', 1));
+  figures_ = LiveFigures::collect(scene_.get(), wallMs, gpuMs, viewer_->framesPerSecond(),
+                                  viewer_->softwareRenderer(), figures_);
+  frameLabel_->setText(QString("%1 fps  frame %2 ms  %3")
+                           .arg(figures_.framesPerSecond, 0, 'f', 1)
+                           .arg(wallMs, 0, 'f', 1)
+                           .arg(figures_.pathSummary()));
   panel_->setFigures(figures_.text());
-  inspector_->frameDrawn(figures_.shadows.rebuilds);
+  inspector_->frameDrawn(figures_.shadows.rebuilds, viewer_->softwareRenderer());
   if (frameDrawnCallback_) frameDrawnCallback_(wallMs);
 }
 
@@ -399,15 +561,20 @@ void ViewerWindow::chooseAndOpen() {
 }
 
 void ViewerWindow::chooseAndSaveScene() {
+  chooseAndSaveSceneDone();
+}
+
+bool ViewerWindow::chooseAndSaveSceneDone() {
   const QString path = QFileDialog::getSaveFileName(this, "Save scene as", QFileInfo(path_).path(),
                                                     "Open Inventor (*.iv);;All files (*)");
-  if (path.isEmpty()) return;
+  if (path.isEmpty()) return false;
   const std::string error = saveSceneAs(path);
   if (error.empty()) {
     showMessage("Saved " + path);
-  } else {
-    reportError(error);
+    return true;
   }
+  reportError(error);
+  return false;
 }
 
 void ViewerWindow::chooseAndSaveScreenshot() {

@@ -4,10 +4,14 @@
 #include "viewer/LightDragger.h"
 #include "viewer/LiveFigures.h"
 #include "viewer/RecentFiles.h"
+#include "viewer/TimedExaminerViewer.h"
 
 #include <QFileSystemWatcher>
 #include <QMainWindow>
 #include <QString>
+
+#include <Inventor/SbMatrix.h>
+#include <Inventor/SbVec3f.h>
 
 #include <functional>
 
@@ -18,6 +22,8 @@ class QDropEvent;
 class QLabel;
 class QMimeData;
 class QShowEvent;
+class SbVec2f;
+class SoDeepShadowLight;
 class SoNode;
 class SoSeparator;
 
@@ -27,7 +33,6 @@ class Image;
 class MapInspector;
 class OutputFiles;
 class ShadowPanel;
-class TimedExaminerViewer;
 
 // The viewer's main window: an examiner viewer with File ▸ Open, Open Recent, Reload, Save
 // Scene As, Save Screenshot; .iv files dropped on the window open; the scene reloads when
@@ -56,9 +61,15 @@ class ViewerWindow : public QMainWindow {
   std::string saveSceneAs(const QString& path);
   // Adds that scene to `outputs` as `path`; the window must live until they are committed.
   void addScene(OutputFiles& outputs, const std::string& path);
-  // What the panel's button does: puts a scene without deep shadow nodes into a shadow group
-  // with a deep shadow light. Returns an empty string or why it cannot.
-  std::string addDeepShadowLight();
+  // What the panel's Add shadows does: puts a scene without deep shadow nodes into a shadow
+  // group in which its lights cast (a deep shadow light where it has none); with `ground`, a
+  // ground under the model that catches the shadows too. The window keeps its width. Returns
+  // an empty string or why it cannot.
+  std::string addDeepShadowLight(bool ground = false);
+  // Whether the scene changed in the window (fields, the light moved, shadows added) since it
+  // was opened or saved; the title shows it, and closing asks to save it.
+  bool sceneModified() const { return isWindowModified(); }
+  void setSceneModified(bool modified);
   int framesDrawn() const;
   // Call once after show(): makes Mesa's software GLX take the window's final size before
   // the first frame (docs/KNOWN_ISSUES.md) and draws that frame.
@@ -109,6 +120,16 @@ class ViewerWindow : public QMainWindow {
   void frameDrawn(double wallMs, double gpuMs);
   void nodeSelected(SoNode* node);
   void showDragger(bool show);
+  // Moves the camera back (a perspective camera along its view, an orthographic one widens)
+  // until the selected light's dragger lies inside the view: lights above a scene were outside
+  // the picture, where their dragger could not be reached.
+  void bringLightIntoView();
+  // Ctrl+drag, or a drag in the Move Light mode: the light follows the pointer in the plane
+  // through it that faces the camera.
+  bool dragLight(TimedExaminerViewer::LightDrag phase, const SbVec2f& position);
+  // Returns false when the user cancelled (or the file could not be written).
+  bool chooseAndSaveSceneDone();
+  SoDeepShadowLight* lightToMove() const;
   void showMessage(const QString& text);
   void reportError(const std::string& message);
 
@@ -116,6 +137,7 @@ class ViewerWindow : public QMainWindow {
   ShadowPanel* panel_ = nullptr;
   MapInspector* inspector_ = nullptr;
   QAction* draggerAction_ = nullptr;
+  QAction* moveLightAction_ = nullptr;
   QLabel* frameLabel_ = nullptr;
   QFileSystemWatcher watcher_;
   RecentFiles recent_;
@@ -124,6 +146,11 @@ class ViewerWindow : public QMainWindow {
   QString path_;
   CoinRef<SoSeparator> scene_;
   bool interactive_ = true;
+  // The light being moved by a Ctrl+drag: where it and the pointer's plane point started.
+  CoinRef<SoDeepShadowLight> movingLight_;
+  SbMatrix movingToWorld_;
+  SbVec3f movingStart_;
+  SbVec3f pointerStart_;
   std::function<void(double)> frameDrawnCallback_;
 };
 

@@ -4,6 +4,7 @@ class SbViewportRegion;
 class SoCamera;
 class SoNode;
 class SoSeparator;
+class SoTransparentShadowGroup;
 
 namespace ivshadow {
 
@@ -15,5 +16,17 @@ namespace ivshadow {
 // behind and below the objects. Returns that light, or the group when the scene's lights cast.
 SoNode* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
                           const SbViewportRegion& viewport);
+
+// A separate, optional step after wrapInShadowGroup, for models without a floor (a chess piece
+// alone cast its shadow into the void): a ground (DEF ShadowGround, a light grey square) just
+// below the group's bounding box, as CAD viewers put one, that catches the shadows. "Below" is
+// along the world axis nearest to `camera`'s up (+y without a camera); the square is three
+// times the box's width across, so that shadows cast at a slant land on it. When `addedLight`
+// (the group has the DeepShadowLight wrapInShadowGroup added, no light of the scene's own), a
+// directional fill light (DEF ShadowFill, along the view) lights the sides the lamp does not
+// reach, which were black, and the group's castingLights becomes DEEP_SHADOW_LIGHTS so that
+// the fill casts nothing. Returns the ground.
+SoNode* addShadowGround(SoTransparentShadowGroup* group, const SoCamera* camera,
+                        const SbViewportRegion& viewport, bool addedLight);
 
 }  // namespace ivshadow
