@@ -9,7 +9,10 @@
 #include "ivshadow/IvShadowInit.h"
 #include "viewer/ViewerApplication.h"
 
+#include <algorithm>
+#include <cctype>
 #include <iostream>
+#include <vector>
 
 namespace ivshadow {
 namespace {
@@ -80,6 +83,64 @@ std::string unknownCommand(int argc, char** argv, const CLI::App& app) {
     if (command->get_name() == first) return {};
   return "ivshadow: error: unknown command '" + first + "'; expected one of " + valid +
          " (ivshadow --help lists them)";
+}
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The option of `command` the user most likely meant by `name` (CLI11 2.1 suggests none): one
+// that `name` begins (--out: --output) or within two typing mistakes of it (--sise: --size).
+std::string closestOption(const CLI::App& command, const std::string& name) {
+  std::string best;
+  std::size_t bestScore = 3;
+  for (const CLI::Option* option : command.get_options()) {
+    std::vector<std::string> spellings;
+    for (const std::string& l : option->get_lnames()) spellings.push_back("--" + l);
+    for (const std::string& s : option->get_snames()) spellings.push_back("-" + s);
+    for (const std::string& spelling : spellings) {
+      const bool begins = name.size() >= 3 && spelling.rfind(name, 0) == 0;
+      const std::size_t score = begins ? 1 : editDistance(name, spelling);
+      if (score < bestScore && score * 3 <= spelling.size()) {
+        best = spelling;
+        bestScore = score;
+      }
+    }
+  }
+  return best;
+}
+
+// CLI11 checks required options before it reports unknown ones: `trade S.iv --out D` said only
+// "--output is required". The unknown option is what the user must correct, so it is named
+// first, with the option it most likely stands for. Empty when nothing unknown was given.
+std::string unknownOption(const CLI::App& app) {
+  const CLI::App* command = &app;
+  for (const CLI::App* sub : app.get_subcommands()) command = sub;
+  for (const std::string& word : app.remaining(true)) {
+    // Only options: a stray value, or a negative number, is CLI11's to report.
+    if (word.size() < 2 || word[0] != '-' || word == "--" ||
+        std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.')
+      continue;
+    const std::string name = word.substr(0, word.find('='));
+    const std::string close = closestOption(*command, name);
+    const std::string commandName =
+        command == &app ? app.get_name() : app.get_name() + " " + command->get_name();
+    return app.get_name() + ": error: unknown option '" + name + "'" +
+           (close.empty() ? std::string() : "; did you mean " + close + "?") + "\nRun \"" +
+           commandName + " --help\" for the options.\n";
+  }
+  return {};
 }
 
 }  // namespace
@@ -183,12 +244,14 @@ CommandLine::CommandLine()
   tradeCommand_->add_option("--layers", trade_.layers, "Layer caps, comma-separated")
       ->delimiter(',')
       ->capture_default_str();
-  tradeCommand_->add_option("--precision", trade_.precisions, "half and/or float")
+  tradeCommand_
+      ->add_option("--precision", trade_.precisions, joinedList(kTradePrecisions, "and/or"))
       ->delimiter(',')
       ->capture_default_str();
   tradeCommand_
       ->add_option("--filter", trade_.filters,
-                   "none, bilinear (PCF over one texel) and/or pcf (3 x 3 texels)")
+                   joinedList(kTradeFilters, "and/or") +
+                       " (bilinear: PCF over one texel; pcf: over 3 x 3 texels)")
       ->delimiter(',')
       ->capture_default_str();
   tradeCommand_->add_option("--slices", trade_.slices, "Opacity map slice counts, comma-separated")
@@ -196,7 +259,7 @@ CommandLine::CommandLine()
       ->capture_default_str();
   tradeCommand_
       ->add_option("--method", trade_.methods,
-                   "map, rays, volumes, opacity and/or tracer (the group traced whole)")
+                   joinedList(kTradeMethods, "and/or") + " (tracer: the group traced whole)")
       ->delimiter(',')
       ->capture_default_str();
   tradeCommand_->add_option("--frames", trade_.frames, "Frames timed per setting (median)")
@@ -227,6 +290,11 @@ std::optional<int> CommandLine::parse(int argc, char** argv) {
   try {
     app_.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
+    if (const std::string unknown = unknownOption(app_);
+        error.get_exit_code() != 0 && !unknown.empty()) {
+      std::cerr << unknown;
+      return 2;
+    }
     const int status = app_.exit(error);
     return status == 0 ? 0 : 2;
   }

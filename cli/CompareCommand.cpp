@@ -1,6 +1,7 @@
 #include "cli/CompareCommand.h"
 
 #include "cli/ExitStatus.h"
+#include "cli/ImageArguments.h"
 #include "cli/InterruptGuard.h"
 #include "image/AtomicFile.h"
 #include "image/CommandPaths.h"
@@ -46,7 +47,10 @@ int runCompare(const CompareOptions& options) {
         .output("--diff", options.diffPath)
         .output("--json", options.jsonPath)
         .check();
+    checkImageInput("reference", options.reference);
+    checkImageInput("candidate", options.candidate);
     if (!options.diffPath.empty()) {
+      checkImageOutput("--diff", options.diffPath);
       imageFormatFor(options.diffPath);
       AtomicFile::checkWritable(options.diffPath, "the diff image");
     }

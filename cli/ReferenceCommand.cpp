@@ -3,6 +3,7 @@
 #include "cli/InterruptGuard.h"
 
 #include "cli/ExitStatus.h"
+#include "cli/ImageArguments.h"
 #include "cli/ProgressBar.h"
 #include "cli/ReferenceOverlay.h"
 #include "cli/RenderMemory.h"
@@ -56,6 +57,7 @@ int runReference(const ReferenceCommandOptions& options) {
         .output("-o", options.output)
         .output("--pfm", options.pfm)
         .check();
+    checkImageOutput("-o", options.output);
     imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
     MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
@@ -111,8 +113,7 @@ int runReference(const ReferenceCommandOptions& options) {
       std::cerr << options.scene << ": warning: " << warning << '\n';
     if (const std::string error = drawUntracedOver(view.root.get(), reference.background, *result);
         !error.empty())
-      std::cerr << options.scene << ": warning: the shapes GL draws are missing: " << error
-                << '\n';
+      std::cerr << options.scene << ": warning: the shapes GL draws are missing: " << error << '\n';
     // Both files or neither.
     const Image picture = result->image.toImage();
     OutputFiles outputs;

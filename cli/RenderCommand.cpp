@@ -3,6 +3,7 @@
 #include "callbacks/GlCapabilities.h"
 #include "cli/ExitStatus.h"
 #include "cli/GroupTransparency.h"
+#include "cli/ImageArguments.h"
 #include "cli/InterruptGuard.h"
 #include "cli/OpenRenderer.h"
 #include "cli/RenderMemory.h"
@@ -154,6 +155,7 @@ int runRender(const RenderOptions& options) {
         .output("-o", options.output)
         .output("--stats", options.statsPath)
         .check();
+    checkImageOutput("-o", options.output);
     imageFormatFor(options.output);
     AtomicFile::checkWritable(options.output, "the image");
     if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");

@@ -4,6 +4,7 @@
 #include "callbacks/ShaderConstants.h"
 #include "cli/ExitStatus.h"
 #include "cli/OpenRenderer.h"
+#include "cli/OutputDirectory.h"
 #include "cli/ProgressBar.h"
 #include "cli/ReferenceOverlay.h"
 #include "cli/RenderMemory.h"
@@ -76,8 +77,8 @@ void checkList(const std::vector<std::string>& values, const std::vector<std::st
                const std::string& option) {
   for (const std::string& value : values)
     if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
-      throw InputError(option + " " + value + ": error: expected one of " + allowed.front() + ", " +
-                       allowed.back());
+      throw InputError(option + " " + value + ": error: expected one or more of " +
+                       joinedList(allowed, "or") + ", comma-separated");
 }
 
 double frameMedian(OffscreenRenderer& renderer, SoNode* root, int frames) {
@@ -98,6 +99,13 @@ std::string csvLine(const Row& row) {
 
 }  // namespace
 
+std::string joinedList(const std::vector<std::string>& values, const std::string& last) {
+  std::string out;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == values.size() ? " " + last + " " : ", ") + values[i];
+  return out;
+}
+
 int runTrade(const TradeOptions& options) {
   return withExitStatus([&] {
     const ImageSize size = ImageSize::parse(options.size, "--size");
@@ -110,18 +118,21 @@ int runTrade(const TradeOptions& options) {
       if (l < 1 || l > kMaxMapLayers)
         throw InputError("--layers " + std::to_string(l) + ": error: expected 1 .. " +
                          std::to_string(kMaxMapLayers));
-    checkList(options.precisions, {"half", "float"}, "--precision");
-    checkList(options.filters, {"none", "bilinear", "pcf"}, "--filter");
+    checkList(options.precisions, kTradePrecisions, "--precision");
+    checkList(options.filters, kTradeFilters, "--filter");
     for (int n : options.slices)
       if (n < 1 || n > kMaxOpacitySlices)
         throw InputError("--slices " + std::to_string(n) + ": error: expected 1 .. " +
                          std::to_string(kMaxOpacitySlices));
-    checkList(options.methods, {"map", "rays", "volumes", "opacity", "tracer"}, "--method");
+    checkList(options.methods, kTradeMethods, "--method");
     const auto asked = [&](const char* method) {
       return std::count(options.methods.begin(), options.methods.end(), method) > 0;
     };
     const bool maps = asked("map"), rays = asked("rays"), volumes = asked("volumes"),
                opacity = asked("opacity"), tracer = asked("tracer");
+    const OutputDirectory outputDir{"-o", options.outputDir,
+                                    "trade.csv, trade.png and reference.png"};
+    outputDir.check();
     CommandPaths()
         .input("scene", options.scene)
         .output("-o", options.outputDir + "/trade.csv")
@@ -154,7 +165,7 @@ int runTrade(const TradeOptions& options) {
     std::unique_ptr<OffscreenRenderer> renderer = openRenderer(size);
     if (!renderer) return 3;
     // Only good input makes the directory; its files are written once the sweep is done.
-    std::filesystem::create_directories(options.outputDir);
+    outputDir.create();
     AtomicFile::checkWritable(options.outputDir + "/trade.csv", "the table");
 
     std::vector<Setting> settings;
@@ -280,20 +291,11 @@ int runTrade(const TradeOptions& options) {
     csv << "setting,kind,resolution,layers,precision,filter,build_ms,frame_ms_median,"
            "rebuild_frame_ms,rmse,psnr_db,max_abs_error,share_above_2,map_bytes\n";
     std::vector<TradePoint> points;
-    // The opacity map's most accurate setting is named like the exact methods' one, so that
-    // the chart names it even off the front.
-    const Row* bestOpacity = nullptr;
-    for (const Row& row : rows)
-      if (row.kind == "opacity map" &&
-          (bestOpacity == nullptr || row.metrics.all.rmse < bestOpacity->metrics.all.rmse))
-        bestOpacity = &row;
     for (const Row& row : rows) {
       csv << csvLine(row) << '\n';
-      points.push_back(TradePoint{row.setting.label, row.buildMs + row.frameMs,
-                                  row.metrics.all.rmse, row.kind == "baseline", false,
-                                  row.kind == "rays" || row.kind == "shadow volumes" ||
-                                      row.kind == "tracer" || &row == bestOpacity,
-                                  row.kind == "opacity map"});
+      points.push_back(TradePoint{row.setting.label, row.kind, row.buildMs + row.frameMs,
+                                  row.metrics.all.rmse, row.metrics.all.psnr,
+                                  row.kind == "baseline", false});
     }
     markParetoFront(points);
     // The reference, the table and the chart together or none.
@@ -307,8 +309,11 @@ int runTrade(const TradeOptions& options) {
                      size.toString() + " on " + renderer->capabilities().renderer,
                  points);
     outputs.commit();
-    std::cout << "wrote " << options.outputDir << "/trade.csv and trade.png (" << settings.size()
-              << " settings, reference " << referenceMs << " ms)\n";
+    // The count the progress ran to: every row of the table, the baselines with the settings.
+    std::cout << "wrote " << options.outputDir << "/trade.csv and trade.png: " << rows.size()
+              << " rows, " << settings.size() << " shadow settings and "
+              << rows.size() - settings.size() << " baselines (the reference took " << std::fixed
+              << std::setprecision(1) << referenceMs << " ms)\n";
     return 0;
   });
 }

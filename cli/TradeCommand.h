@@ -5,17 +5,26 @@
 
 namespace ivshadow {
 
+// The values --method, --precision and --filter accept, each list the one place that names
+// them: the options' defaults, their help and the messages refusing other values read them.
+inline const std::vector<std::string> kTradeMethods{"map", "rays", "volumes", "opacity", "tracer"};
+inline const std::vector<std::string> kTradePrecisions{"half", "float"};
+inline const std::vector<std::string> kTradeFilters{"none", "bilinear", "pcf"};
+
+// "a, b and c", for help and messages.
+std::string joinedList(const std::vector<std::string>& values, const std::string& last);
+
 struct TradeOptions {
   std::string scene;
   std::string outputDir;
   std::string size = "320x240";
   std::vector<int> resolutions{256, 512, 1024};
   std::vector<int> layers{1, 2, 4, 8};
-  std::vector<std::string> precisions{"half", "float"};
-  std::vector<std::string> filters{"none", "bilinear", "pcf"};
+  std::vector<std::string> precisions = kTradePrecisions;
+  std::vector<std::string> filters = kTradeFilters;
   std::vector<int> slices{4, 16};  // the opacity maps'
   // rays and volumes: one setting each, exact; map and opacity: their sweeps
-  std::vector<std::string> methods{"map", "rays", "volumes", "opacity", "tracer"};
+  std::vector<std::string> methods = kTradeMethods;
   int frames = 5;
 };
 

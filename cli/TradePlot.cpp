@@ -8,6 +8,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QPainterPath>
+#include <QtGlobal>
 
 #include <algorithm>
 #include <cmath>
@@ -16,14 +17,175 @@
 #include <stdexcept>
 
 namespace ivshadow {
+namespace {
+
+constexpr int kWidth = 1100, kHeight = 720;
+// The plot's frame; the legend sits right of it, the reference's band above it.
+constexpr double kLeft = 80, kRight = 900, kTop = 110, kBottom = 640;
+constexpr double kBandTop = 70;
+
+enum class Shape { Circle, Diamond, TriangleUp, Square, TriangleDown, HollowSquare };
+
+struct Style {
+  const char* method;
+  QColor colour;
+  Shape shape;
+};
+
+// One colour and shape per method (a colour-blind-safe palette), in the legend's order.
+const Style kStyles[] = {
+    {"deep shadow map", QColor(0, 114, 178), Shape::Circle},
+    {"opacity map", QColor(230, 159, 0), Shape::Diamond},
+    {"rays", QColor(0, 158, 115), Shape::TriangleUp},
+    {"shadow volumes", QColor(204, 121, 167), Shape::Square},
+    {"tracer", QColor(213, 94, 0), Shape::TriangleDown},
+    {"baseline", QColor(40, 40, 40), Shape::HollowSquare},
+};
+
+const Style& styleOf(const TradePoint& point) {
+  for (const Style& style : kStyles)
+    if (point.method == style.method) return style;
+  return kStyles[0];
+}
+
+void drawMarker(QPainter& painter, const Style& style, const QPointF& at, double radius,
+                bool outlined) {
+  painter.setPen(outlined ? QPen(Qt::black, 1.5) : QPen(style.colour.darker(130), 1));
+  painter.setBrush(style.shape == Shape::HollowSquare ? QBrush(Qt::white) : QBrush(style.colour));
+  const double r = radius;
+  switch (style.shape) {
+    case Shape::Circle:
+      painter.drawEllipse(at, r, r);
+      break;
+    case Shape::Diamond: {
+      const QPointF c[4] = {at + QPointF(0, -1.3 * r), at + QPointF(1.3 * r, 0),
+                            at + QPointF(0, 1.3 * r), at + QPointF(-1.3 * r, 0)};
+      painter.drawPolygon(c, 4);
+      break;
+    }
+    case Shape::TriangleUp: {
+      const QPointF c[3] = {at + QPointF(0, -1.3 * r), at + QPointF(1.2 * r, r),
+                            at + QPointF(-1.2 * r, r)};
+      painter.drawPolygon(c, 3);
+      break;
+    }
+    case Shape::TriangleDown: {
+      const QPointF c[3] = {at + QPointF(0, 1.3 * r), at + QPointF(1.2 * r, -r),
+                            at + QPointF(-1.2 * r, -r)};
+      painter.drawPolygon(c, 3);
+      break;
+    }
+    case Shape::Square:
+    case Shape::HollowSquare:
+      if (style.shape == Shape::HollowSquare) painter.setPen(QPen(style.colour, 2));
+      painter.drawRect(QRectF(at.x() - r, at.y() - r, 2 * r, 2 * r));
+      break;
+  }
+}
+
+// A round step for about `wanted` ticks over `span`: 1, 2 or 5 times a power of ten.
+double roundStep(double span, int wanted) {
+  const double raw = span / wanted;
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * power >= raw) return m * power;
+  return 10.0 * power;
+}
+
+QString tickText(double value) {
+  return QString::number(value, 'g', 6);
+}
+
+// Qt looks for a Wayland display socket in XDG_RUNTIME_DIR when it starts, before it reads
+// QT_QPA_PLATFORM, and warns on stderr where that is unset (ssh, batch jobs, containers). The
+// offscreen platform the chart is drawn on needs no runtime directory, so that one warning,
+// while the application starts, says nothing to the user; every other message goes on.
+QtMessageHandler qtHandler = nullptr;
+void withoutRuntimeDirWarning(QtMsgType type, const QMessageLogContext& context,
+                              const QString& message) {
+  if (type == QtWarningMsg && message.startsWith("QStandardPaths: XDG_RUNTIME_DIR not set")) return;
+  qtHandler(type, context, message);
+}
+
+std::unique_ptr<QGuiApplication> offscreenApplication() {
+  if (QGuiApplication::instance() != nullptr) return nullptr;
+  // Text needs a QGuiApplication; a command-line run has no display.
+  if (std::getenv("QT_QPA_PLATFORM") == nullptr) setenv("QT_QPA_PLATFORM", "offscreen", 1);
+  static int argc = 1;
+  static char name[] = "ivshadow";
+  static char* argv[] = {name, nullptr};
+  qtHandler = qInstallMessageHandler(withoutRuntimeDirWarning);
+  auto app = std::make_unique<QGuiApplication>(argc, argv);
+  qInstallMessageHandler(qtHandler);
+  return app;
+}
+
+// Places labels next to their points without covering one another, a point or the frame:
+// the nearest free place among eight around the point, further out if none is free (with a
+// line back to the point), and where nothing is free at all, beside the point regardless.
+class LabelPlacer {
+ public:
+  LabelPlacer(QPainter& painter, const QRectF& area) : painter_(painter), area_(area) {}
+
+  void avoid(const QRectF& box) { taken_.push_back(box); }
+
+  void place(const QPointF& at, const QString& text) {
+    const QFontMetricsF metrics(painter_.font());
+    const double w = metrics.horizontalAdvance(text) + 4, h = metrics.height();
+    for (double distance : {7.0, 18.0, 32.0, 50.0, 75.0}) {
+      const QPointF offsets[8] = {{distance, -h / 2},
+                                  {-distance - w, -h / 2},
+                                  {-w / 2, -distance - h},
+                                  {-w / 2, distance},
+                                  {distance, -distance - h},
+                                  {distance, distance},
+                                  {-distance - w, -distance - h},
+                                  {-distance - w, distance}};
+      for (const QPointF& offset : offsets) {
+        const QRectF box(at + offset, QSizeF(w, h));
+        if (!area_.contains(box) || covers(box)) continue;
+        draw(at, box, text, distance > 7.0);
+        return;
+      }
+    }
+    const QRectF box(at + QPointF(7, -h / 2), QSizeF(w, h));
+    draw(at, box, text, false);
+  }
+
+ private:
+  bool covers(const QRectF& box) const {
+    return std::any_of(taken_.begin(), taken_.end(),
+                       [&](const QRectF& other) { return other.intersects(box); });
+  }
+
+  void draw(const QPointF& at, const QRectF& box, const QString& text, bool leader) {
+    if (leader) {
+      const QPointF nearest(std::clamp(at.x(), box.left(), box.right()),
+                            std::clamp(at.y(), box.top(), box.bottom()));
+      painter_.setPen(QPen(QColor(120, 120, 120), 0.8));
+      painter_.drawLine(at, nearest);
+    }
+    // A white ground keeps the text legible over grid lines and the front's line.
+    painter_.fillRect(box, QColor(255, 255, 255, 220));
+    painter_.setPen(Qt::black);
+    painter_.drawText(box, Qt::AlignCenter, text);
+    taken_.push_back(box);
+  }
+
+  QPainter& painter_;
+  QRectF area_;
+  std::vector<QRectF> taken_;
+};
+
+}  // namespace
 
 void markParetoFront(std::vector<TradePoint>& points) {
   for (TradePoint& p : points) {
     p.pareto = !p.baseline;
     for (const TradePoint& q : points) {
       if (&q == &p || q.baseline) continue;
-      const bool noWorse = q.timeMs <= p.timeMs && q.error <= p.error;
-      const bool better = q.timeMs < p.timeMs || q.error < p.error;
+      const bool noWorse = q.timeMs <= p.timeMs && q.rmse <= p.rmse;
+      const bool better = q.timeMs < p.timeMs || q.rmse < p.rmse;
       if (noWorse && better) {
         p.pareto = false;
         break;
@@ -34,138 +196,167 @@ void markParetoFront(std::vector<TradePoint>& points) {
 
 void addTradePlot(OutputFiles& outputs, const std::string& path, const std::string& title,
                   const std::vector<TradePoint>& points) {
-  // Text needs a QGuiApplication; a command-line run has no display, so it gets Qt's
-  // offscreen platform.
-  std::unique_ptr<QGuiApplication> app;
-  if (QGuiApplication::instance() == nullptr) {
-    if (std::getenv("QT_QPA_PLATFORM") == nullptr) setenv("QT_QPA_PLATFORM", "offscreen", 1);
-    static int argc = 1;
-    static char name[] = "ivshadow";
-    static char* argv[] = {name, nullptr};
-    app = std::make_unique<QGuiApplication>(argc, argv);
-  }
-  constexpr int kWidth = 1000, kHeight = 700;
-  constexpr int kLeft = 90, kRight = 30, kTop = 50, kBottom = 70;
+  const std::unique_ptr<QGuiApplication> app = offscreenApplication();
   QImage image(kWidth, kHeight, QImage::Format_RGB32);
   image.fill(Qt::white);
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing);
-  QFont font("DejaVu Sans", 10);
-  painter.setFont(font);
-
-  double tMin = 1e300, tMax = 0.0, eMax = 0.0;
-  for (const TradePoint& p : points) {
-    tMin = std::min(tMin, std::max(p.timeMs, 1e-3));
-    tMax = std::max(tMax, std::max(p.timeMs, 1e-3));
-    eMax = std::max(eMax, p.error);
-  }
-  if (points.empty()) tMin = tMax = 1.0;
-  const double lo = std::floor(std::log10(tMin)),
-               hi = std::max(lo + 1.0, std::ceil(std::log10(tMax)));
-  eMax = eMax > 0.0 ? eMax * 1.1 : 1.0;
-  const double plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
-  const auto x = [&](double ms) {
-    return kLeft + (std::log10(std::max(ms, 1e-3)) - lo) / (hi - lo) * plotW;
-  };
-  const auto y = [&](double error) { return kTop + plotH - error / eMax * plotH; };
-
-  painter.setPen(QPen(QColor(220, 220, 220), 1));
-  for (double decade = lo; decade <= hi; decade += 1.0) {
-    for (int m = 1; m < 10; ++m) {
-      const double ms = std::pow(10.0, decade) * m;
-      if (ms > std::pow(10.0, hi)) break;
-      painter.drawLine(QPointF(x(ms), kTop), QPointF(x(ms), kTop + plotH));
-    }
-  }
-  for (int i = 0; i <= 5; ++i)
-    painter.drawLine(QPointF(kLeft, y(eMax * i / 5)), QPointF(kLeft + plotW, y(eMax * i / 5)));
-  painter.setPen(QPen(Qt::black, 1));
-  painter.drawRect(QRectF(kLeft, kTop, plotW, plotH));
-  for (double decade = lo; decade <= hi; decade += 1.0) {
-    const double ms = std::pow(10.0, decade);
-    painter.drawText(QRectF(x(ms) - 40, kTop + plotH + 5, 80, 20), Qt::AlignCenter,
-                     QString::number(ms) + " ms");
-  }
-  for (int i = 0; i <= 5; ++i)
-    painter.drawText(QRectF(0, y(eMax * i / 5) - 10, kLeft - 8, 20),
-                     Qt::AlignRight | Qt::AlignVCenter, QString::number(eMax * i / 5, 'f', 2));
-  painter.drawText(QRectF(kLeft, kHeight - 35, plotW, 25), Qt::AlignCenter,
-                   "time per setting (ms, log scale)");
-  painter.save();
-  painter.translate(20, kTop + plotH / 2);
-  painter.rotate(-90);
-  painter.drawText(QRectF(-plotH / 2, -12, plotH, 24), Qt::AlignCenter,
-                   "RMSE against the exact reference (8-bit steps)");
-  painter.restore();
+  const QFont font("DejaVu Sans", 9);
+  QFont small = font;
+  small.setPointSizeF(8);
   QFont bold = font;
   bold.setBold(true);
   bold.setPointSize(12);
-  painter.setFont(bold);
-  painter.drawText(QRectF(0, 10, kWidth, 30), Qt::AlignCenter, QString::fromStdString(title));
-  painter.setFont(font);
 
+  // The axes' ranges: time over every point, dB over the finite ones, both a little wider so
+  // that no marker sits on the frame.
+  double tMin = 1e300, tMax = 0.0, dbMin = 1e300, dbMax = -1e300;
+  for (const TradePoint& p : points) {
+    tMin = std::min(tMin, std::max(p.timeMs, 1e-3));
+    tMax = std::max(tMax, std::max(p.timeMs, 1e-3));
+    if (std::isfinite(p.psnrDb)) {
+      dbMin = std::min(dbMin, p.psnrDb);
+      dbMax = std::max(dbMax, p.psnrDb);
+    }
+  }
+  if (tMax <= 0.0) tMin = tMax = 1.0;
+  if (dbMin > dbMax) dbMin = dbMax = 30.0;
+  const double lo = std::log10(tMin) - 0.08, hi = std::max(std::log10(tMax) + 0.08, lo + 1.0);
+  const double dbStep = roundStep(std::max(dbMax - dbMin, 5.0), 7);
+  const double dbLo = std::floor((dbMin - 0.3 * dbStep) / dbStep) * dbStep,
+               dbHi = std::ceil((dbMax + 0.3 * dbStep) / dbStep) * dbStep;
+  const auto x = [&](double ms) {
+    return kLeft + (std::log10(std::max(ms, 1e-3)) - lo) / (hi - lo) * (kRight - kLeft);
+  };
+  const auto y = [&](double db) {
+    return std::isfinite(db) ? kBottom - (db - dbLo) / (dbHi - dbLo) * (kBottom - kTop)
+                             : (kBandTop + kTop - 6) / 2;
+  };
+  const QRectF frame(QPointF(kLeft, kTop), QPointF(kRight, kBottom));
+
+  // Grid and round ticks: 1, 2 and 5 times a power of ten on the time axis (only the powers
+  // of ten labelled when the range spans more than three decades), a round step in dB.
+  const bool manyDecades = hi - lo > 3.0;
+  painter.setFont(font);
+  for (double decade = std::floor(lo); decade <= std::ceil(hi); decade += 1.0)
+    for (int m = 1; m < 10; ++m) {
+      const double ms = std::pow(10.0, decade) * m;
+      const double at = x(ms);
+      if (at < kLeft - 0.5 || at > kRight + 0.5) continue;
+      const bool labelled = m == 1 || (!manyDecades && (m == 2 || m == 5));
+      painter.setPen(QPen(labelled ? QColor(215, 215, 215) : QColor(240, 240, 240), 1));
+      painter.drawLine(QPointF(at, kTop), QPointF(at, kBottom));
+      if (!labelled) continue;
+      painter.setPen(Qt::black);
+      painter.drawText(QRectF(at - 40, kBottom + 6, 80, 18), Qt::AlignHCenter | Qt::AlignTop,
+                       tickText(ms));
+    }
+  for (double db = dbLo; db <= dbHi + 1e-9; db += dbStep) {
+    painter.setPen(QPen(QColor(215, 215, 215), 1));
+    painter.drawLine(QPointF(kLeft, y(db)), QPointF(kRight, y(db)));
+    painter.setPen(Qt::black);
+    painter.drawText(QRectF(0, y(db) - 9, kLeft - 8, 18), Qt::AlignRight | Qt::AlignVCenter,
+                     tickText(db));
+  }
+  painter.setPen(QPen(Qt::black, 1));
+  painter.setBrush(Qt::NoBrush);
+  painter.drawRect(frame);
+  painter.drawText(QRectF(kLeft, kBottom + 30, kRight - kLeft, 20), Qt::AlignCenter,
+                   "time per frame with a rebuild (ms, log scale): further left is faster");
+  painter.save();
+  painter.translate(22, (kTop + kBottom) / 2);
+  painter.rotate(-90);
+  painter.drawText(QRectF(-(kBottom - kTop) / 2, -10, kBottom - kTop, 20), Qt::AlignCenter,
+                   "PSNR against the exact reference (dB): higher is closer");
+  painter.restore();
+  // The band of exact pictures (the reference, and any setting that matches it to the last
+  // bit): their PSNR is infinite, off any dB scale.
+  painter.fillRect(QRectF(QPointF(kLeft, kBandTop), QPointF(kRight, kTop - 6)),
+                   QColor(244, 244, 244));
+  painter.setPen(QColor(90, 90, 90));
+  painter.setFont(small);
+  painter.drawText(QRectF(4, kBandTop, kLeft - 10, kTop - 6 - kBandTop),
+                   Qt::AlignRight | Qt::AlignVCenter, QString::fromUtf8("exact (\u221e dB)"));
+  painter.setFont(bold);
+  painter.setPen(Qt::black);
+  painter.drawText(QRectF(0, 8, kWidth, 26), Qt::AlignCenter, QString::fromStdString(title));
+  painter.setFont(font);
+  painter.drawText(QRectF(0, 34, kWidth, 20), Qt::AlignCenter,
+                   "Take a setting on the black staircase (the Pareto front): none is both "
+                   "faster and closer to the reference.");
+
+  // The front as a staircase: from each of its points the best error reached so far holds
+  // until a slower point of the front does better.
   std::vector<const TradePoint*> front;
   for (const TradePoint& p : points)
     if (p.pareto) front.push_back(&p);
   std::sort(front.begin(), front.end(),
             [](const TradePoint* a, const TradePoint* b) { return a->timeMs < b->timeMs; });
-  painter.setPen(QPen(QColor(200, 40, 40), 2));
-  for (std::size_t i = 1; i < front.size(); ++i)
-    painter.drawLine(QPointF(x(front[i - 1]->timeMs), y(front[i - 1]->error)),
-                     QPointF(x(front[i]->timeMs), y(front[i]->error)));
-  // A label right of its point, or left of it where it would leave the image; moved down or
-  // up a line at a time, away from labels drawn before it, where it would cover one.
-  std::vector<QRectF> placed;
-  const auto label = [&](const QPointF& at, double dy, const std::string& text) {
-    const QString t = QString::fromStdString(text);
-    const QFontMetricsF metrics(painter.font());
-    const double width = metrics.horizontalAdvance(t), height = metrics.height();
-    const double left = at.x() + 8 + width > kWidth - 4 ? at.x() - 8 - width : at.x() + 8;
-    QRectF box(left, at.y() + dy - metrics.ascent(), width, height);
-    for (int step = 1; step <= 8; ++step) {
-      const bool covers = std::any_of(placed.begin(), placed.end(),
-                                      [&](const QRectF& other) { return other.intersects(box); });
-      if (!covers) break;
-      const double shift = (step % 2 == 1 ? 1.0 : -1.0) * ((step + 1) / 2) * height;
-      box.moveTop(at.y() + dy - metrics.ascent() + shift);
+  if (!front.empty()) {
+    QPainterPath stairs;
+    stairs.moveTo(x(front[0]->timeMs), y(front[0]->psnrDb));
+    for (std::size_t i = 1; i < front.size(); ++i) {
+      stairs.lineTo(x(front[i]->timeMs), y(front[i - 1]->psnrDb));
+      stairs.lineTo(x(front[i]->timeMs), y(front[i]->psnrDb));
     }
-    placed.push_back(box);
-    painter.drawText(QPointF(box.left(), box.top() + metrics.ascent()), t);
-  };
-  const auto dot = [&](const TradePoint& p, const QPointF& at, double radius) {
-    if (!p.diamond) {
-      painter.drawEllipse(at, radius, radius);
-      return;
-    }
-    const double r = radius * 1.4;
-    const QPointF corners[4] = {at + QPointF(0, -r), at + QPointF(r, 0), at + QPointF(0, r),
-                                at + QPointF(-r, 0)};
-    painter.drawPolygon(corners, 4);
-  };
-  for (const TradePoint& p : points) {
-    const QPointF at(x(p.timeMs), y(p.error));
-    if (p.baseline) {
-      painter.setPen(QPen(QColor(30, 90, 200), 2));
-      painter.setBrush(Qt::NoBrush);
-      painter.drawRect(QRectF(at.x() - 5, at.y() - 5, 10, 10));
-      label(at, -6, p.label);
-    } else if (p.pareto) {
-      painter.setPen(QPen(QColor(200, 40, 40), 1));
-      painter.setBrush(QColor(200, 40, 40));
-      dot(p, at, 5);
-      label(at, -6, p.label);
-    } else {
-      painter.setPen(QPen(QColor(120, 120, 120), 1));
-      painter.setBrush(QColor(160, 160, 160));
-      dot(p, at, 3.5);
-      // Below the dot: the front's and the baselines' labels sit above theirs.
-      if (p.method) label(at, 14, p.label);
-    }
+    painter.setPen(QPen(QColor(0, 0, 0, 170), 2.5));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawPath(stairs);
   }
+
+  // Points off the front first, small, so that the front's are drawn over them.
+  LabelPlacer labels(painter,
+                     QRectF(QPointF(kLeft + 2, kBandTop + 2), QPointF(kRight - 2, kBottom - 2)));
+  for (const TradePoint& p : points) labels.avoid(QRectF(x(p.timeMs) - 6, y(p.psnrDb) - 6, 12, 12));
+  for (const TradePoint& p : points)
+    if (!p.pareto && !p.baseline)
+      drawMarker(painter, styleOf(p), QPointF(x(p.timeMs), y(p.psnrDb)), 3.5, false);
+  for (const TradePoint& p : points)
+    if (p.pareto || p.baseline)
+      drawMarker(painter, styleOf(p), QPointF(x(p.timeMs), y(p.psnrDb)), 5.5, p.pareto);
+  // Labelled: the baselines, the front, and each method's only setting (rays, volumes, the
+  // tracer) wherever it falls, so that every method is named on the chart itself.
+  painter.setFont(small);
+  for (const TradePoint& p : points)
+    if (p.baseline)
+      labels.place(QPointF(x(p.timeMs), y(p.psnrDb)), QString::fromStdString(p.label));
+  for (const TradePoint* p : front)
+    labels.place(QPointF(x(p->timeMs), y(p->psnrDb)), QString::fromStdString(p->label));
+  for (const TradePoint& p : points)
+    if (!p.pareto && !p.baseline && p.method != "deep shadow map" && p.method != "opacity map")
+      labels.place(QPointF(x(p.timeMs), y(p.psnrDb)), QString::fromStdString(p.label));
+
+  // The legend: the methods the chart shows, then what the outlines and the line mean.
+  painter.setFont(font);
+  double legendY = kTop + 4;
+  const double legendX = kRight + 22;
   painter.setPen(Qt::black);
-  painter.drawText(QRectF(kLeft + 10, kTop + 8, plotW - 20, 20), Qt::AlignRight,
-                   "red: Pareto front (labelled)   grey: other settings (methods named)   "
-                   "diamonds: opacity maps   blue squares: baselines");
+  painter.drawText(QPointF(legendX, legendY + 10), "method");
+  legendY += 24;
+  for (const Style& style : kStyles) {
+    const bool shown = std::any_of(points.begin(), points.end(),
+                                   [&](const TradePoint& p) { return p.method == style.method; });
+    if (!shown) continue;
+    drawMarker(painter, style, QPointF(legendX + 8, legendY), 5, false);
+    painter.setPen(Qt::black);
+    painter.drawText(QPointF(legendX + 22, legendY + 4), style.method);
+    legendY += 22;
+  }
+  legendY += 10;
+  drawMarker(painter, kStyles[0], QPointF(legendX + 8, legendY), 5.5, true);
+  painter.setPen(Qt::black);
+  painter.drawText(QPointF(legendX + 22, legendY + 4), "on the front (labelled)");
+  legendY += 22;
+  painter.setPen(QPen(QColor(0, 0, 0, 170), 2.5));
+  painter.drawLine(QPointF(legendX, legendY), QPointF(legendX + 16, legendY));
+  painter.setPen(Qt::black);
+  painter.drawText(QPointF(legendX + 22, legendY + 4), "Pareto front");
+  legendY += 30;
+  painter.setFont(small);
+  painter.setPen(QColor(80, 80, 80));
+  painter.drawText(QRectF(legendX, legendY, kWidth - legendX - 8, 120), Qt::TextWordWrap,
+                   "Small markers: the other settings of the maps' sweeps; trade.csv names "
+                   "each.");
   painter.end();
 
   // QImage shares its pixels: the copy costs nothing.

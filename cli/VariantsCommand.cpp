@@ -3,6 +3,7 @@
 #include "cli/ChildProcesses.h"
 #include "cli/ExitStatus.h"
 #include "cli/InterruptGuard.h"
+#include "cli/OutputDirectory.h"
 #include "cli/ProgressBar.h"
 #include "cli/RenderMemory.h"
 #include "cli/SlurmScript.h"
@@ -112,6 +113,14 @@ void checkOutputPaths(const VariantsOptions& options, const std::vector<Variant>
   paths.check();
 }
 
+OutputDirectory outputDirectory(const VariantsOptions& options) {
+  return {"-o", options.outputDir, "the sweep's pictures, manifests and reports"};
+}
+
+OutputDirectory slurmDirectory(const VariantsOptions& options) {
+  return {"--slurm", options.slurmDir, "the job scripts"};
+}
+
 int writeSlurmScripts(const VariantsOptions& options, const VariantsPlan& plan) {
   namespace fs = std::filesystem;
   const int variants = int(plan.variants.size());
@@ -133,23 +142,21 @@ int writeSlurmScripts(const VariantsOptions& options, const VariantsPlan& plan) 
   script.shards = shards;
   script.limit = options.limit;
   script.cpusPerTask = options.jobs;
-  std::error_code made;
-  fs::create_directories(options.slurmDir, made);
-  fs::create_directories(script.outputDir + "/manifests", made);
-  if (!fs::is_directory(options.slurmDir))
-    throw InputError(options.slurmDir + ": error: cannot create the script directory");
-  if (!fs::is_directory(script.outputDir + "/manifests"))
-    throw InputError(options.outputDir + ": error: cannot create the output directory");
+  // Absolute, as docs/VARIANTS.md says: submit.sh names the job scripts, and is run from
+  // wherever the user stands when submitting.
+  const std::string scriptDir = fs::absolute(options.slurmDir).lexically_normal().string();
+  slurmDirectory(options).create();
+  OutputDirectory{"-o", script.outputDir + "/manifests", "the sweep's pictures and manifests"}
+      .create();
   // The plan as the tasks will write it (their paths are absolute; the hashes do not depend
   // on paths), so --status counts every variant pending from now on.
   VariantsPlan tasksPlan = plan;
   tasksPlan.base = fs::absolute(options.base).string();
   tasksPlan.variantsFile = fs::absolute(options.variantsFile).string();
   tasksPlan.write(script.outputDir);
-  const std::string submit = script.write(options.slurmDir);
-  std::cout << "wrote " << options.slurmDir << "/variants.sbatch (a job array of " << shards
-            << " tasks for " << variants << " variants) and " << options.slurmDir
-            << "/merge.sbatch\n"
+  const std::string submit = script.write(scriptDir);
+  std::cout << "wrote " << scriptDir << "/variants.sbatch (a job array of " << shards
+            << " tasks for " << variants << " variants) and " << scriptDir << "/merge.sbatch\n"
             << "submit both with:  sh " << submit << "\n"
             << "progress:          "
             << shellCommand({currentExecutable(), "variants-merge", "--status", script.outputDir})
@@ -178,6 +185,8 @@ int runVariants(const VariantsOptions& options) {
     MemoryBudget::check(size, {kFrameBytesPerPixel, kFrameFixedBytes},
                         "a render of the plainest variant", options.jobs,
                         MemoryBudget::available());
+    outputDirectory(options).check();
+    if (!options.slurmDir.empty()) slurmDirectory(options).check();
     std::vector<Variant> parsed = readVariantsFile(options.variantsFile);
     checkOutputPaths(options, parsed);
     const std::vector<std::size_t> selected = selectVariants(options, parsed);
@@ -210,10 +219,9 @@ int runVariants(const VariantsOptions& options) {
       }
       return 0;
     }
+    outputDirectory(options).create();
+    OutputDirectory{"-o", options.outputDir + "/manifests", "the sweep's manifests"}.create();
     std::error_code made;
-    std::filesystem::create_directories(options.outputDir + "/manifests", made);
-    if (made || !std::filesystem::is_directory(options.outputDir + "/manifests"))
-      throw InputError(options.outputDir + ": error: cannot create the output directory");
     plan.write(options.outputDir);
 
     // A variant whose manifest is current and whose picture exists was rendered by an
@@ -330,10 +338,23 @@ int runVariants(const VariantsOptions& options) {
           VariantManifest::read(options.outputDir, variants[i].name);
       if (manifest && !manifest->ok()) std::cerr << manifest->error << '\n';
     }
-    std::cout << "rendered " << rendered << " of " << total << " variants"
-              << (options.shard.empty() ? std::string() : " of shard " + options.shard) << " to "
-              << options.outputDir << keptText << "; `ivshadow variants-merge " << options.outputDir
-              << "` writes the reports\n";
+    const std::string part =
+        options.shard.empty() ? "the variants --only names" : "shard " + options.shard;
+    const std::string merge =
+        "; `ivshadow variants-merge " + options.outputDir + "` writes the reports\n";
+    if (selected.empty()) {
+      // More shards than variants: this one was given none.
+      std::cout << part << " holds none of the sweep's " << variants.size()
+                << " variants; nothing to render" << merge;
+    } else if (todo.empty()) {
+      // "rendered 0 of 0" would read as a failure; the part is done, by this or another run.
+      std::cout << part << ": nothing left to render; all " << selected.size()
+                << " of its variants were already rendered to " << options.outputDir << merge;
+    } else {
+      std::cout << "rendered " << rendered << " of " << total << " variants"
+                << (options.shard.empty() ? std::string() : " of shard " + options.shard) << " to "
+                << options.outputDir << keptText << merge;
+    }
     if (failed == 0) return 0;
     return badInput == failed ? 2 : 1;
   });

@@ -2,6 +2,8 @@
 
 #include "image/OutputFiles.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <iomanip>
 #include <sstream>
@@ -111,6 +113,13 @@ std::string field(bool applies, double value) {
   return out.str();
 }
 
+// A count (bytes): written whole, as 104857600, where a double would print 1.04858e+08 and
+// lose the last digits.
+std::string countField(bool applies, double value) {
+  if (!applies) return {};
+  return std::to_string(std::uint64_t(std::llround(std::max(value, 0.0))));
+}
+
 std::string csvLine(const Variant& variant, const VariantManifest& outcome,
                     const std::string& image) {
   const bool ok = outcome.ok();
@@ -124,9 +133,9 @@ std::string csvLine(const Variant& variant, const VariantManifest& outcome,
       << field(used.rays, number(stats, "passes", "rays_ms")) << ','
       << field(used.rays, number(stats, "passes", "bvh_build_ms")) << ','
       << field(ok, number(stats, "passes", "peel_ms")) << ','
-      << field(used.map, number(stats, "dsm_bytes")) << ','
-      << field(used.rays, number(stats, "bvh_bytes")) << ',' << csvField(layersText(stats)) << ','
-      << (ok ? csvField(image) : "\"\"") << '\n';
+      << countField(used.map, number(stats, "dsm_bytes")) << ','
+      << countField(used.rays, number(stats, "bvh_bytes")) << ',' << csvField(layersText(stats))
+      << ',' << (ok ? csvField(image) : "\"\"") << '\n';
   return csv.str();
 }
 

@@ -7,6 +7,10 @@
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/fields/SoField.h>
+#include <Inventor/fields/SoMFBitMask.h>
+#include <Inventor/fields/SoMFEnum.h>
+#include <Inventor/fields/SoSFBitMask.h>
+#include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/lists/SoPathList.h>
 #include <Inventor/nodes/SoNode.h>
@@ -62,6 +66,36 @@ std::set<std::string> fieldNames(const SoNode* node) {
   return names;
 }
 
+// The names an enum or bit mask field accepts, in the order its node defines them, as Coin
+// holds them for the field: the node's own table, so no list is kept here.
+template <typename EnumField>
+std::string enumNames(const EnumField& field) {
+  std::string names;
+  for (int i = 0; i < field.getNumEnums(); ++i) {
+    SbName name;
+    field.getEnum(i, name);
+    names += (names.empty() ? "" : ", ") + std::string(name.getString());
+  }
+  return names;
+}
+
+// What the value of an enum or bit mask field must be; empty for fields of other types.
+std::string expectedEnum(const SoField& field) {
+  const SoType type = field.getTypeId();
+  if (type.isDerivedFrom(SoSFBitMask::getClassTypeId()) ||
+      type.isDerivedFrom(SoMFBitMask::getClassTypeId())) {
+    const std::string names = type.isDerivedFrom(SoSFBitMask::getClassTypeId())
+                                  ? enumNames(static_cast<const SoSFBitMask&>(field))
+                                  : enumNames(static_cast<const SoMFBitMask&>(field));
+    return "; expected one or more of " + names + ", joined by | in parentheses: (A | B)";
+  }
+  if (type.isDerivedFrom(SoSFEnum::getClassTypeId()))
+    return "; expected one of " + enumNames(static_cast<const SoSFEnum&>(field));
+  if (type.isDerivedFrom(SoMFEnum::getClassTypeId()))
+    return "; expected one of " + enumNames(static_cast<const SoMFEnum&>(field));
+  return {};
+}
+
 }  // namespace
 
 FieldAssignment FieldAssignment::parse(const std::string& text) {
@@ -115,7 +149,7 @@ void FieldAssignment::apply(SoNode* root, const std::string& sceneName) const {
                                      : capture.firstError().text;
       throw InputError(where + "cannot parse '" + value + "' as " +
                        fieldPtr->getTypeId().getName().getString() + " for " + node + "." + field +
-                       (detail.empty() ? "" : " (" + detail + ")"));
+                       (detail.empty() ? "" : " (" + detail + ")") + expectedEnum(*fieldPtr));
     }
   }
 }

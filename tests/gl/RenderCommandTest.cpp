@@ -83,6 +83,25 @@ TEST(RenderCommand, CommandLineErrorsReadAsTheToolsOtherErrors) {
   EXPECT_EQ(missing.exitCode, 2);
   EXPECT_EQ(missing.err.rfind("ivshadow: error: scene is required\n", 0), 0u) << missing.err;
   EXPECT_NE(missing.err.find("Run \"ivshadow render --help\""), std::string::npos) << missing.err;
+  // An unknown option is named, with the option it most likely stands for, even where a
+  // required option is missing too (it read "--output is required", the typo unnamed).
+  const test::ProcessResult out =
+      run({test::ivshadowExe(), "trade", scene("coloured_shadows.iv"), "--out", "dir"});
+  EXPECT_EQ(out.exitCode, 2);
+  EXPECT_EQ(out.err,
+            "ivshadow: error: unknown option '--out'; did you mean --output?\n"
+            "Run \"ivshadow trade --help\" for the options.\n");
+  const test::ProcessResult typo =
+      run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", "x.png", "--sise=9x9"});
+  EXPECT_EQ(typo.exitCode, 2);
+  EXPECT_EQ(typo.err.rfind("ivshadow: error: unknown option '--sise'; did you mean --size?\n", 0),
+            0u)
+      << typo.err;
+  const test::ProcessResult unlike =
+      run({test::ivshadowExe(), "render", scene("lit_plane.iv"), "-o", "x.png", "--colour"});
+  EXPECT_EQ(unlike.exitCode, 2);
+  EXPECT_EQ(unlike.err.rfind("ivshadow: error: unknown option '--colour'\n", 0), 0u) << unlike.err;
+  EXPECT_FALSE(test::fileExists("x.png"));
   const test::ProcessResult viewer = run({test::viewerExe(), "--size"});
   EXPECT_EQ(viewer.exitCode, 2);
   EXPECT_EQ(viewer.err.rfind("ivshadow-viewer: error: --size", 0), 0u) << viewer.err;
@@ -229,6 +248,13 @@ TEST(CompareCommand, MeasuresTwoRendersAndWritesAHeatMap) {
       run({test::ivshadowExe(), "compare", dir + "/a.png", dir + "/none.png"});
   EXPECT_EQ(missing.exitCode, 2);
   EXPECT_EQ(test::lines(missing.err).size(), 1u) << missing.err;
+  // A scene given for a picture: compare reads it, so it cannot *read* that type.
+  const std::string iv = scene("lit_plane.iv");
+  const test::ProcessResult notAPicture = run({test::ivshadowExe(), "compare", iv, dir + "/a.png"});
+  EXPECT_EQ(notAPicture.exitCode, 2);
+  EXPECT_EQ(notAPicture.err,
+            iv + ": error: cannot read images of type '.iv' (the reference); compare "
+                 "reads PNG and JPEG: .png, .jpg, .jpeg\n");
 }
 
 // no_camera.iv has neither camera nor light. The added perspective camera looks down -z, so
@@ -308,6 +334,16 @@ TEST(RenderCommand, BadArgumentsExitTwoWithOneLineAndNoOutput) {
       {{lit, "-o", out, "--stats", dir + "/missing/s.json"}, "does not exist"},
       {{lit, "-o", dir + "/out.bmp"}, "cannot write images of type '.bmp'; supported: .png, .jpg"},
       {{lit, "-o", dir + "/out"}, "supported: .png, .jpg, .jpeg"},
+      // A directory is named as one, not as a file of no type.
+      {{lit, "-o", dir},
+       dir + ": error: -o names a directory; expected the name of an image file, e.g. " + dir +
+           "/picture.png"},
+      // An enum's names come from the node's field, all of them.
+      {{scene("coloured_shadows.iv"), "-o", out, "--set", "Scene.renderer=FOO"},
+       "cannot parse 'FOO' as SFEnum for Scene.renderer (Unknown enumeration value \"FOO\"); "
+       "expected one of RASTER, TRACER, AUTO"},
+      {{scene("coloured_shadows.iv"), "-o", out, "--set", "Lamp.method=MAPS"},
+       "; expected one of AUTO, MAP, RAYS, VOLUMES, OPACITY_MAP"},
   };
   for (const BadArguments& c : cases) {
     std::vector<std::string> arguments = {test::ivshadowExe(), "render"};

@@ -37,8 +37,18 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
   const test::ProcessResult result =
       run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o", dir,
            "--size", "160x120", "--resolution", "32,512", "--layers", "1,4", "--slices", "1,16",
-           "--precision", "float", "--filter", "none", "--frames", "2"});
+           "--precision", "float", "--filter", "none", "--frames", "2"},
+          // Unset, as over ssh or in a batch job, where Qt warned on starting the chart's
+          // application.
+          {"XDG_RUNTIME_DIR="});
   ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(result.err.find("XDG_RUNTIME_DIR"), std::string::npos) << result.err;
+  // The count said is the count the progress ran to: each row, the baselines with the
+  // settings (it once said "11 settings" after counting to 13).
+  EXPECT_NE(result.err.find("[13/13] "), std::string::npos) << result.err;
+  EXPECT_NE(result.out.find("trade.png: 13 rows, 11 shadow settings and 2 baselines"),
+            std::string::npos)
+      << result.out;
   std::ifstream in(dir + "/trade.csv");
   std::string line;
   std::getline(in, line);
@@ -83,7 +93,7 @@ TEST(TradeCommand, EverySettingIsTimedAndMeasuredAgainstTheReference) {
   EXPECT_LT(value("opacity 512 1S float", "rmse"), value("no shadows (plain Coin)", "rmse"));
   EXPECT_EQ(value("opacity 512 16S float", "map_bytes"), 512.0 * 512.0 * 6.0 * (4 + 16 * 16));
   EXPECT_EQ(value("opacity 32 1S float", "layers"), 1.0);
-  EXPECT_EQ(readPng(dir + "/trade.png").width(), 1000);
+  EXPECT_EQ(readPng(dir + "/trade.png").width(), 1100);
 }
 
 TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
@@ -91,7 +101,8 @@ TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
   for (const std::vector<std::string>& option :
        {std::vector<std::string>{"--layers", "0"}, std::vector<std::string>{"--slices", "33"},
         std::vector<std::string>{"--precision", "double"},
-        std::vector<std::string>{"--filter", "gauss"}}) {
+        std::vector<std::string>{"--filter", "gauss"},
+        std::vector<std::string>{"--method", "maps"}}) {
     std::vector<std::string> command{test::ivshadowExe(), "trade",
                                      test::scenesDir() + "/coloured_shadows.iv", "-o", dir};
     command.insert(command.end(), option.begin(), option.end());
@@ -99,11 +110,50 @@ TEST(TradeCommand, BadListsExitTwoNamingTheOption) {
     EXPECT_EQ(result.exitCode, 2) << option[0];
     EXPECT_NE(result.err.find(option[0]), std::string::npos) << result.err;
   }
+  // Every value the option accepts is listed, not the first and the last.
+  const test::ProcessResult method =
+      run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o", dir,
+           "--method", "rays,maps"});
+  EXPECT_EQ(method.err,
+            "--method maps: error: expected one or more of map, rays, volumes, opacity or tracer, "
+            "comma-separated\n");
+  const test::ProcessResult filter =
+      run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o", dir,
+           "--filter", "gauss"});
+  EXPECT_NE(filter.err.find("expected one or more of none, bilinear or pcf"), std::string::npos)
+      << filter.err;
   const test::ProcessResult noLight =
       run({test::ivshadowExe(), "trade", test::scenesDir() + "/lit_plane.iv", "-o", dir});
   EXPECT_EQ(noLight.exitCode, 2);
   EXPECT_NE(noLight.err.find("lit_plane.iv"), std::string::npos) << noLight.err;
   EXPECT_FALSE(test::fileExists(dir + "/trade.csv"));
+}
+
+// -o names a directory: a file there (or on the way to it), or no name at all, is refused at
+// once with exit 2, naming the path and what was expected, not with a raw filesystem error and
+// exit 1 after the reference was rendered.
+TEST(TradeCommand, AnOutputThatCannotBeADirectoryExitsTwoNamingIt) {
+  const std::string file = test::writeOutputFile("a-file", "not a directory\n");
+  const std::string what = "-o expects a directory for trade.csv, trade.png and reference.png";
+  const struct {
+    std::string output;
+    std::string expected;
+  } cases[] = {
+      {file, file + ": error: " + what + ", but " + file + " is a file\n"},
+      {file + "/trade",
+       file + "/trade: error: " + what + ", but " + file + " (in " + file + "/trade) is a file\n"},
+      {"",
+       "-o '': error: expected a directory for trade.csv, trade.png and reference.png, got an "
+       "empty name\n"},
+  };
+  for (const auto& c : cases) {
+    const test::ProcessResult result =
+        run({test::ivshadowExe(), "trade", test::scenesDir() + "/coloured_shadows.iv", "-o",
+             c.output, "--method", "rays", "--size", "32x24", "--frames", "1"});
+    EXPECT_EQ(result.exitCode, 2) << result.err;
+    EXPECT_EQ(result.err, c.expected);
+  }
+  EXPECT_EQ(test::readText(file), "not a directory\n");
 }
 
 TEST(TradeCommand, ASizeBeyondMemoryIsRefusedBeforeTheReference) {

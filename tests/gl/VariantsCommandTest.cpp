@@ -92,6 +92,21 @@ TEST(VariantsCommand, ARerunKeepsCurrentVariantsAndRendersStaleOnes) {
   const test::ProcessResult changed = test::run(stale);
   EXPECT_EQ(changed.exitCode, 2) << changed.err;
   EXPECT_EQ(changed.out.find("kept"), std::string::npos) << changed.out;
+  // A shard of a finished sweep has nothing to do, and says so: it once printed "rendered 0 of
+  // 0 variants", which reads as a failure.
+  std::vector<std::string> done = stale;
+  done.insert(done.end(), {"--shard", "0/2"});
+  const test::ProcessResult finished = test::run(done);
+  EXPECT_EQ(finished.exitCode, 0) << finished.err;
+  EXPECT_EQ(finished.out,
+            "shard 0/2: nothing left to render; all 2 of its variants were already rendered to " +
+                dir + "; `ivshadow variants-merge " + dir + "` writes the reports\n");
+  done.back() = "4/5";
+  const test::ProcessResult empty = test::run(done);
+  EXPECT_EQ(empty.exitCode, 0) << empty.err;
+  EXPECT_NE(empty.out.find("shard 4/5 holds none of the sweep's 4 variants; nothing to render"),
+            std::string::npos)
+      << empty.out;
   EXPECT_EQ(
       test::run({test::ivshadowExe(), "variants-merge", "--status", dir}).out,
       dir + ": done 3, failed 1, pending 0 of 4 variants\n  " + variants +
@@ -150,6 +165,67 @@ TEST(VariantsCommand, ABadShardOrVariantNameIsRefusedBeforeRendering) {
       << merge.err;
 }
 
+// An output directory that cannot be one is named with what was expected, before anything is
+// rendered: an empty -o once rendered the whole sweep into the current directory.
+TEST(VariantsCommand, AnOutputDirectoryThatIsAFileOrEmptyIsRefusedNamingIt) {
+  const std::string dir = test::outputDir();
+  const std::string file = test::writeOutputFile("a-file", "not a directory\n");
+  const std::vector<std::string> command = {
+      test::ivshadowExe(), "variants", test::scenesDir() + "/coloured_shadows.iv",
+      std::string(IVSHADOW_SOURCE_DIR) + "/tests/variants/with_a_bad_variant.variants"};
+  const struct {
+    std::vector<std::string> arguments;
+    std::string expected;
+  } cases[] = {
+      {{"-o", ""},
+       "-o '': error: expected a directory for the sweep's pictures, manifests and reports, got "
+       "an empty name"},
+      {{"-o", file},
+       file +
+           ": error: -o expects a directory for the sweep's pictures, manifests and reports, "
+           "but " +
+           file + " is a file"},
+      {{"-o", file + "/sweep"}, "but " + file + " (in " + file + "/sweep) is a file"},
+      {{"-o", dir + "/out", "--slurm", file},
+       file + ": error: --slurm expects a directory for the job scripts, but " + file +
+           " is a file"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> arguments = command;
+    arguments.insert(arguments.end(), c.arguments.begin(), c.arguments.end());
+    const test::ProcessResult result = test::run(arguments);
+    EXPECT_EQ(result.exitCode, 2) << c.expected;
+    ASSERT_EQ(test::lines(result.err).size(), 1u) << result.err;
+    EXPECT_NE(result.err.find(c.expected), std::string::npos) << result.err;
+    EXPECT_TRUE(result.out.empty()) << result.out;
+  }
+  EXPECT_FALSE(test::fileExists(dir + "/out"));
+  EXPECT_FALSE(test::fileExists("variants.csv")) << "nothing written where the test runs";
+}
+
+// submit.sh names the job scripts absolutely (docs/VARIANTS.md): written with a relative
+// --slurm, it submitted them relative to wherever the user stood when running it.
+TEST(VariantsCommand, SlurmScriptsNameEveryPathAbsolutely) {
+  namespace fs = std::filesystem;
+  const std::string dir = test::outputDir();
+  const std::string jobs = fs::relative(dir + "/jobs").string();
+  const std::string out = fs::relative(dir + "/out").string();
+  ASSERT_NE(jobs.front(), '/');
+  const test::ProcessResult result =
+      test::run({test::ivshadowExe(), "variants", test::scenesDir() + "/coloured_shadows.iv",
+                 std::string(IVSHADOW_SOURCE_DIR) + "/tests/variants/with_a_bad_variant.variants",
+                 "-o", out, "--slurm", jobs, "--shards", "2"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const std::string absoluteJobs = fs::absolute(jobs).lexically_normal().string();
+  EXPECT_NE(result.out.find("sh " + absoluteJobs + "/submit.sh"), std::string::npos) << result.out;
+  const std::string submit = readText(dir + "/jobs/submit.sh");
+  EXPECT_NE(submit.find("sbatch --parsable " + absoluteJobs + "/variants.sbatch"),
+            std::string::npos)
+      << submit;
+  EXPECT_NE(submit.find(" " + absoluteJobs + "/merge.sbatch"), std::string::npos) << submit;
+  EXPECT_EQ(submit.find(" " + jobs + "/"), std::string::npos) << submit;
+}
+
 // Splits a CSV line at commas outside double quotes; quotes are dropped.
 std::vector<std::string> csvFields(const std::string& line) {
   std::vector<std::string> fields(1);
@@ -168,8 +244,10 @@ std::vector<std::string> csvFields(const std::string& line) {
 TEST(VariantsCommand, ACrossedSweepRendersTheGridWithColumnsOfEachMethod) {
   const std::string dir = test::outputDir() + "/out";
   const std::string file = test::outputDir() + "/grid.variants";
+  // GL's path, where the light's method acts (the default, AUTO, traces on a software
+  // rasteriser, where it does not).
   std::ofstream(file) << "sweep grid Lamp.method = MAP | RAYS * Lamp.intensity = 0.5 | 1\n"
-                         "  Lamp.resolution = 64\n";
+                         "  Lamp.resolution = 512\n  Scene.renderer = RASTER\n";
   const test::ProcessResult result =
       test::run({test::ivshadowExe(), "variants", test::scenesDir() + "/coloured_shadows.iv", file,
                  "-o", dir, "--size", "64x48", "--frames", "1", "--jobs", "2"});
@@ -187,8 +265,8 @@ TEST(VariantsCommand, ACrossedSweepRendersTheGridWithColumnsOfEachMethod) {
     EXPECT_EQ(row[0], names[i]);
     EXPECT_EQ(readPng(dir + "/" + row[12]).width(), 64);
     const bool rays = i >= 2;
-    EXPECT_EQ(row[1], std::string("Lamp.method=") + (rays ? "RAYS" : "MAP") +
-                          "; Lamp.intensity=" + (i % 2 ? "1" : "0.5") + "; Lamp.resolution=64");
+    EXPECT_EQ(row[1], std::string("Lamp.method=") + (rays ? "RAYS" : "MAP") + "; Lamp.intensity=" +
+                          (i % 2 ? "1" : "0.5") + "; Lamp.resolution=512; Scene.renderer=RASTER");
     EXPECT_EQ(row[3], rays ? "RAYS" : "MAP");
     // A method's columns are filled for the lights that use it and empty otherwise.
     EXPECT_EQ(row[5].empty(), rays) << "dsm_build_ms: " << csv[std::size_t(i) + 1];
@@ -197,8 +275,13 @@ TEST(VariantsCommand, ACrossedSweepRendersTheGridWithColumnsOfEachMethod) {
     EXPECT_EQ(row[9].empty(), rays) << "dsm_bytes";
     EXPECT_EQ(row[10].empty(), !rays) << "bvh_bytes";
     EXPECT_EQ(row[11].empty(), rays) << "dsm_layers_used";
-    // What the method keeps is not nothing: a map of 64^2 texels a layer, the casters' BVH.
-    EXPECT_GT(std::stod(rays ? row[10] : row[9]), 0.0);
+    // What the method keeps is not nothing: a map of 512^2 texels a face and layer, the
+    // casters' BVH. Byte counts are written whole: the map's millions of bytes once read
+    // 6.29146e+06.
+    const std::string& bytes = rays ? row[10] : row[9];
+    EXPECT_GT(std::stod(bytes), 0.0);
+    EXPECT_EQ(bytes.find_first_not_of("0123456789"), std::string::npos) << bytes;
+    if (!rays) EXPECT_GT(std::stod(bytes), 1e6) << bytes;
     const std::size_t at = html.find("<figure id=\"" + std::string(names[i]) + "\">");
     ASSERT_NE(at, std::string::npos);
     const std::string caption = html.substr(at, html.find("</figure>", at) - at);

@@ -1,0 +1,30 @@
+#include "cli/ImageArguments.h"
+
+#include "image/ImageFile.h"
+#include "scene/InputError.h"
+
+#include <filesystem>
+
+namespace ivshadow {
+
+void checkImageOutput(const std::string& option, const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": error: " + option +
+                     " names a directory; expected the name of an image file, e.g. " +
+                     (std::filesystem::path(path) / "picture.png").string());
+}
+
+void checkImageInput(const std::string& argument, const std::string& path) {
+  try {
+    imageFormatFor(path);
+  } catch (const InputError&) {
+    // The types readImage reads are those imageFormatFor names (image/ImageFile.h).
+    const std::string extension = std::filesystem::path(path).extension().string();
+    throw InputError(path + ": error: cannot read images of type '" +
+                     (extension.empty() ? std::string("(no extension)") : extension) + "' (the " +
+                     argument + "); compare reads PNG and JPEG: .png, .jpg, .jpeg");
+  }
+}
+
+}  // namespace ivshadow

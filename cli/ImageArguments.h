@@ -1,0 +1,15 @@
+#pragma once
+
+#include <string>
+
+namespace ivshadow {
+
+// Refuses an image output (`render -o`, `reference -o`, `compare --diff`) that names an
+// existing directory, saying so: the format check alone reports a type '(no extension)'.
+void checkImageOutput(const std::string& option, const std::string& path);
+
+// Refuses an input picture of a type compare cannot read (a scene, `compare scene.iv x.png`)
+// as an input, with the types it reads: the format check alone says it cannot *write* them.
+void checkImageInput(const std::string& argument, const std::string& path);
+
+}  // namespace ivshadow
