@@ -186,6 +186,9 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   const bool scripted = options.scripted();
   window.setInteractive(!scripted);
   if (options.lightDragger || options.dragLight > 0) window.setLightDraggerShown(true);
+  // A screenshot that asks for the dragger shows it as a window does, in view; --drag-light
+  // keeps the file's camera, which its pictures are compared with.
+  if (options.lightDragger && options.dragLight == 0) window.setBringLightIntoView(true);
   if (options.noLightDragger) window.setLightDraggerShown(false);
 
   if (!options.scene.empty()) {

@@ -173,6 +173,7 @@ void ViewerWindow::buildMenus() {
 
 void ViewerWindow::setInteractive(bool interactive) {
   interactive_ = interactive;
+  frameLight_ = interactive;
   // Scripted screenshots show the scene only, as `ivshadow render` draws it.
   draggerAction_->setChecked(interactive);
 }
@@ -453,32 +454,44 @@ bool ViewerWindow::dragLight(TimedExaminerViewer::LightDrag phase, const SbVec2f
 void ViewerWindow::bringLightIntoView() {
   SbVec3f light;
   SoCamera* camera = viewer_ ? viewer_->getCamera() : nullptr;
-  if (!interactive_ || camera == nullptr || !dragger_.worldLocation(light)) return;
+  if (!frameLight_ || camera == nullptr || !dragger_.worldLocation(light)) return;
   const float aspect = viewer_->getViewportRegion().getViewportAspectRatio();
   // The light in the camera's coordinates: x right, y up, looking down -z.
   SbVec3f local;
   camera->orientation.getValue().inverse().multVec(light - camera->position.getValue(), local);
-  // The dragger's ball and arrows reach about two of its sizes from the light.
-  const float reach = 2.0f * dragger_.worldSize();
-  const float up = std::fabs(local[1]) + reach, side = std::fabs(local[0]) + reach;
   // The view's half-height per unit of distance (perspective) or in units (orthographic), as
   // ADJUST_CAMERA fits it to the viewport.
   const float widen = aspect < 1.0f ? 1.0f / aspect : 1.0f;
+  const bool perspective = camera->isOfType(SoPerspectiveCamera::getClassTypeId());
+  if (!perspective && !camera->isOfType(SoOrthographicCamera::getClassTypeId())) return;
+  const float halfY =
+      perspective
+          ? std::tan(0.5f * static_cast<SoPerspectiveCamera*>(camera)->heightAngle.getValue()) *
+                widen
+          : 0.5f * static_cast<SoOrthographicCamera*>(camera)->height.getValue() * widen;
+  const float depth = perspective ? -local[2] : 1.0f;
+  // A dragger whose ball (about one of its sizes across each way) lies whole in the view is
+  // left where it is: the camera moves only for one that cannot be grabbed.
+  const float ball = dragger_.worldSize();
+  if (-local[2] > ball && std::fabs(local[1]) + ball <= halfY * depth &&
+      std::fabs(local[0]) + ball <= halfY * aspect * depth)
+    return;
+  // Its ball and arrows reach about two of its sizes from the light: those come into view.
+  const float reach = 2.0f * ball;
+  const float up = std::fabs(local[1]) + reach, side = std::fabs(local[0]) + reach;
   SbVec3f back;
   camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, 1.0f), back);
-  if (camera->isOfType(SoPerspectiveCamera::getClassTypeId())) {
-    auto* perspective = static_cast<SoPerspectiveCamera*>(camera);
-    const float tanY = kLightInView * std::tan(0.5f * perspective->heightAngle.getValue()) * widen;
+  if (perspective) {
+    const float tanY = kLightInView * halfY;
     const float tanX = tanY * aspect;
-    const float depth = -local[2];
     const float away = std::max({0.0f, up / tanY - depth, side / tanX - depth});
     if (away <= 0.0f) return;
     camera->position.setValue(camera->position.getValue() + back * away);
     camera->focalDistance.setValue(camera->focalDistance.getValue() + away);
-  } else if (camera->isOfType(SoOrthographicCamera::getClassTypeId())) {
+  } else {
     auto* orthographic = static_cast<SoOrthographicCamera*>(camera);
-    const float halfY = 0.5f * orthographic->height.getValue() * widen * kLightInView;
-    const float needed = std::max(up / halfY, side / (halfY * aspect));
+    const float needed =
+        std::max(up / (kLightInView * halfY), side / (kLightInView * halfY * aspect));
     if (needed > 1.0f) orthographic->height.setValue(orthographic->height.getValue() * needed);
     // Behind the camera, the light would be clipped: the camera steps back past it.
     if (local[2] > -reach)

@@ -88,6 +88,9 @@ class ViewerWindow : public QMainWindow {
   void restoreFoldedSections();
   // Shrinks and moves the window so that it and its frame lie on the screen it is on.
   void fitToScreen();
+  // Whether the camera moves back to bring the dragger into view when a scene opens or a
+  // light is added: interactive windows, and scripted ones that ask to show the dragger.
+  void setBringLightIntoView(bool on) { frameLight_ = on; }
   // Shows or hides the dragger on the selected deep shadow light (View ▸ Light Dragger).
   void setLightDraggerShown(bool shown);
 
@@ -146,6 +149,7 @@ class ViewerWindow : public QMainWindow {
   QString path_;
   CoinRef<SoSeparator> scene_;
   bool interactive_ = true;
+  bool frameLight_ = true;
   // The light being moved by a Ctrl+drag: where it and the pointer's plane point started.
   CoinRef<SoDeepShadowLight> movingLight_;
   SbMatrix movingToWorld_;

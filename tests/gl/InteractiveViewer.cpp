@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <algorithm>
 #include <csignal>
 #include <thread>
 
@@ -128,6 +129,78 @@ int InteractiveViewer::quit() {
   }
   ADD_FAILURE() << "the viewer did not quit when its window was closed";
   return -1;
+}
+
+void InteractiveViewer::close() {
+  run({"wmctrl", "-i", "-c", window_}, {"DISPLAY=" + display_});
+}
+
+std::string InteractiveViewer::title() const {
+  const ProcessResult name = run({"xdotool", "getwindowname", window_}, {"DISPLAY=" + display_});
+  const std::vector<std::string> found = lines(name.out);
+  return found.empty() ? std::string() : found.front();
+}
+
+bool InteractiveViewer::waitForOtherWindow(const std::string& title) {
+  for (int i = 0; i < kPolls && running(); ++i) {
+    const ProcessResult search = run({"xdotool", "search", "--screen", std::to_string(screen_),
+                                      "--onlyvisible", "--name", title},
+                                     {"DISPLAY=" + display_});
+    if (!lines(search.out).empty()) return true;
+    std::this_thread::sleep_for(kPoll);
+  }
+  return false;
+}
+
+bool InteractiveViewer::running() {
+  if (pid_ <= 0) return false;
+  int status = 0;
+  if (waitpid(pid_, &status, WNOHANG) == pid_) pid_ = -1;
+  return pid_ > 0;
+}
+
+void InteractiveViewer::drag(int x0, int y0, int x1, int y1, bool ctrl) {
+  // xdotool's XTEST events: the server's modifier state goes with the button events to the
+  // window under the pointer, whichever window has the keyboard focus.
+  std::vector<std::string> command = {
+      "xdotool",          "mousemove",        "--screen", std::to_string(screen_),
+      std::to_string(x0), std::to_string(y0), "sleep",    "0.2"};
+  if (ctrl) command.insert(command.end(), {"keydown", "ctrl", "sleep", "0.1"});
+  command.insert(command.end(), {"mousedown", "1", "sleep", "0.2"});
+  constexpr int kSteps = 8;
+  for (int step = 1; step <= kSteps; ++step) {
+    command.insert(command.end(), {"mousemove", "--screen", std::to_string(screen_),
+                                   std::to_string(x0 + (x1 - x0) * step / kSteps),
+                                   std::to_string(y0 + (y1 - y0) * step / kSteps), "sleep", "0.1"});
+  }
+  command.insert(command.end(), {"mouseup", "1", "sleep", "0.1"});
+  if (ctrl) command.insert(command.end(), {"keyup", "ctrl"});
+  run(command, {"DISPLAY=" + display_});
+}
+
+void InteractiveViewer::wheelDown(int x, int y, int clicks) {
+  std::vector<std::string> command = {
+      "xdotool",         "mousemove",       "--screen", std::to_string(screen_),
+      std::to_string(x), std::to_string(y), "sleep",    "0.1"};
+  // Button 5: the wheel turned towards the user, which scrolls down.
+  for (int i = 0; i < clicks; ++i) command.insert(command.end(), {"click", "5", "sleep", "0.1"});
+  run(command, {"DISPLAY=" + display_});
+}
+
+Image InteractiveViewer::steadyGrab(const ScreenRect& rect) {
+  Image previous = crop(grabScreen(display_), rect);
+  for (int i = 0; i < kPolls; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    Image now = crop(grabScreen(display_), rect);
+    if (now.width() == previous.width() && now.height() == previous.height() &&
+        std::equal(now.data(),
+                   now.data() + std::size_t(now.width()) * std::size_t(now.height()) * 4u,
+                   previous.data()))
+      return now;
+    previous = std::move(now);
+  }
+  ADD_FAILURE() << "the screen kept changing";
+  return previous;
 }
 
 std::string InteractiveViewer::output() const {

@@ -37,6 +37,23 @@ class InteractiveViewer {
   // Closes the window as a user does (the window manager's close) and returns the viewer's
   // exit status.
   int quit();
+  // Asks the window manager to close the window, and returns at once.
+  void close();
+  // The window's title now (the viewer marks a changed scene with "*").
+  std::string title() const;
+  // Waits until a window titled `title` (a regular expression, as xdotool takes it) shows on
+  // the viewer's screen; false when none does, or the viewer exits first.
+  bool waitForOtherWindow(const std::string& title);
+  // Whether the viewer is still running.
+  bool running();
+  // Moves the pointer from (x0, y0) to (x1, y1) with the left button held (and Ctrl, when
+  // `ctrl`), in steps, as a hand does. Screen coordinates.
+  void drag(int x0, int y0, int x1, int y1, bool ctrl);
+  // Turns the mouse wheel `clicks` notches down with the pointer at (x, y).
+  void wheelDown(int x, int y, int clicks);
+  // The pixels of `rect` once two grabs a moment apart agree (the viewer has stopped
+  // drawing: a traced group's refined frame comes a quarter of a second after a motion).
+  Image steadyGrab(const ScreenRect& rect);
   std::string output() const;
 
  private:

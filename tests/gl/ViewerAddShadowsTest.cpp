@@ -149,5 +149,42 @@ TEST(ViewerAddShadows, SpotAndDirectionalLightsCastAsTheyAre) {
   EXPECT_LT(group, added.saved.find("DirectionalLight")) << added.saved;
 }
 
+TEST(ViewerAddShadows, AModelWithoutAFloorGetsAGroundThatCatchesItsShadow) {
+  // chess/king.iv (Debian's inventor-data) is a chess piece alone: wrapped, it cast its shadow
+  // into the void, and the lamp above lit one side, the rest black.
+  const std::string king = "/usr/share/inventor/data/models/chess/king.iv";
+  if (!test::fileExists(king)) GTEST_SKIP() << king << " is not installed (inventor-data)";
+  const std::string dir = test::outputDir();
+  const test::ProcessResult viewer = runOnTestDisplay(
+      {test::viewerExe(), king, "--add-light", "--add-ground", "--save-scene", dir + "/added.iv",
+       "--screenshot", dir + "/viewer.png", "--size", "320x240"});
+  ASSERT_EQ(viewer.exitCode, 0) << viewer.err;
+  const std::string saved = readText(dir + "/added.iv");
+  EXPECT_NE(saved.find("DEF ShadowGround Separator"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("DEF ShadowFill DirectionalLight"), std::string::npos) << saved;
+  EXPECT_EQ(occurrences(saved, "DeepShadowLight"), 1) << saved;
+
+  // Against the saved scene with its group inactive (the same lights, ground and camera, no
+  // shadows): the shadow is where the ground is darker, by more than 40 steps, on at least 2 %
+  // of the picture; and the fill light lights the side the lamp does not reach, so that a
+  // fifth of the picture is more than dark (without the ground and the fill, 9 %).
+  const test::ProcessResult render =
+      test::run({test::ivshadowExe(), "render", dir + "/added.iv", "-o", dir + "/unshadowed.png",
+                 "--size", "320x240", "--transparency", test::kViewerTransparency, "--set",
+                 "ShadowGroup.isActive=FALSE"});
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  const Image unshadowed = readPng(dir + "/unshadowed.png");
+  const Image picture = readPng(dir + "/viewer.png");
+  int darker = 0;
+  for (int y = 0; y < picture.height(); ++y)
+    for (int x = 0; x < picture.width(); ++x) {
+      const std::uint8_t* lit = unshadowed.pixel(x, y);
+      const std::uint8_t* shown = picture.pixel(x, y);
+      darker += lit[0] - shown[0] > 40 && lit[1] - shown[1] > 40 && lit[2] - shown[2] > 40 ? 1 : 0;
+    }
+  EXPECT_GT(darker, 320 * 240 / 50) << "no shadow on the ground";
+  EXPECT_GT(test::shareLit(picture), 0.2) << "the picture is mostly black";
+}
+
 }  // namespace
 }  // namespace ivshadow

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace ivshadow {
 namespace {
@@ -65,6 +67,56 @@ TEST(ViewerDragger, DraggerSitsOnTheLightAndCastsNoShadow) {
         floorWithout.pixel(x, y)[c] = without.pixel(x, y + 150)[c];
       }
   test::expectMostlyEqual(floorWith, floorWithout, 2, 0.999, "floor with and without dragger");
+}
+
+// The three numbers after `field` that follows `node` in an Inventor file's text.
+std::vector<float> vectorAfter(const std::string& text, const std::string& node,
+                               const std::string& field) {
+  const std::size_t at = text.find(field + " ", text.find(node));
+  if (at == std::string::npos) return {};
+  std::istringstream in(text.substr(at + field.size()));
+  std::vector<float> values(3);
+  in >> values[0] >> values[1] >> values[2];
+  return values;
+}
+
+TEST(ViewerDragger, ADraggerOutsideTheViewIsBroughtIntoIt) {
+  // coloured_shadows.iv's lamp hangs above the top edge of the file's view (it projects to
+  // 1.49 half-heights above the centre), where its dragger could be neither seen nor grabbed.
+  const std::string dir = test::outputDir();
+  const std::string scene = test::scenesDir() + "/coloured_shadows.iv";
+  const test::ProcessResult viewer =
+      runOnTestDisplay({test::viewerExe(), scene, "--light-dragger", "--screenshot",
+                        dir + "/with.png", "--save-scene", dir + "/saved.iv", "--size", "320x240",
+                        "--set", "Scene.renderer=RASTER", "--set", "Lamp.method=MAP"});
+  ASSERT_EQ(viewer.exitCode, 0) << viewer.err;
+  // The camera moved back, not the light: the saved scene keeps the lamp where it was.
+  const std::string saved = test::readText(dir + "/saved.iv");
+  EXPECT_EQ(vectorAfter(saved, "DEF Lamp", "location"), std::vector<float>({0.4f, -0.6f, 4.2f}))
+      << saved;
+  EXPECT_NE(vectorAfter(saved, "PerspectiveCamera", "position"),
+            std::vector<float>({0.0f, -7.5f, 5.2f}))
+      << "the camera did not move: " << saved;
+  // The saved scene (the moved camera, no dragger) rendered headlessly is the viewer's picture
+  // but for the dragger, which shows as a patch of changed pixels inside the picture. Without
+  // it in view the two agreed everywhere.
+  const test::ProcessResult render =
+      test::run({test::ivshadowExe(), "render", dir + "/saved.iv", "-o", dir + "/without.png",
+                 "--size", "320x240", "--transparency", test::kViewerTransparency});
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  const Image with = readPng(dir + "/with.png"), without = readPng(dir + "/without.png");
+  int changed = 0;
+  for (int y = 0; y < with.height(); ++y)
+    for (int x = 0; x < with.width(); ++x) {
+      int worst = 0;
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(with.pixel(x, y)[c] - without.pixel(x, y)[c]));
+      changed += worst > 10 ? 1 : 0;
+    }
+  // The dragger is some 0.3 units across at about 10 units' distance: 20 pixels at least; and
+  // it is all that differs (under 2 % of the picture).
+  EXPECT_GE(changed, 20) << "no dragger in the picture";
+  EXPECT_LT(changed, 320 * 240 / 50) << "more than the dragger differs";
 }
 
 }  // namespace

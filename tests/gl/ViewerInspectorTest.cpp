@@ -23,10 +23,11 @@ Inspection inspect(const std::string& what) {
   const std::string dir = test::outputDir();
   Inspection run;
   run.picture = dir + "/map.png";
-  run.result = runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/coloured_shadows.iv", "--set",
-                             "Lamp.resolution=256", "--set", "Lamp.method=MAP", "--screenshot",
-                             dir + "/viewer.png", "--size", "160x120", "--inspect", what,
-                             "--inspect-out", run.picture});
+  run.result =
+      runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/coloured_shadows.iv", "--set",
+                        "Scene.renderer=RASTER", "--set", "Lamp.resolution=256", "--set",
+                        "Lamp.method=MAP", "--screenshot", dir + "/viewer.png", "--size", "160x120",
+                        "--inspect", what, "--inspect-out", run.picture});
   return run;
 }
 
@@ -101,6 +102,36 @@ TEST(ViewerInspector, UnknownLightEmptyLayerAndBadSyntaxExitTwo) {
     EXPECT_NE(run.result.err.find(c.message), std::string::npos) << run.result.err;
     EXPECT_FALSE(test::fileExists(run.picture)) << c.inspect;
     EXPECT_FALSE(test::fileExists(test::outputDir() + "/viewer.png")) << c.inspect;
+  }
+}
+
+TEST(ViewerInspector, WithoutAMapItSaysWhatAutoChoseAndHowToSeeOne) {
+  const std::string dir = test::outputDir();
+  struct Case {
+    std::vector<std::string> sets;
+    std::vector<std::string> says;
+  };
+  // On llvmpipe the group left at renderer AUTO is traced on the CPU, and a light left at
+  // method AUTO in a RASTER group traces shadow rays: neither keeps a map, and the inspector
+  // says which choice did that and what to set instead (it asked "is its method RAYS?").
+  for (const Case& c : std::vector<Case>{
+           {{"Scene.renderer=AUTO", "Lamp.method=AUTO"},
+            {"renderer AUTO, which chose TRACER", "set the group's renderer to RASTER",
+             "method to MAP"}},
+           {{"Scene.renderer=RASTER", "Lamp.method=AUTO"},
+            {"method AUTO, which chose RAYS", "set its method to MAP"}},
+       }) {
+    std::vector<std::string> command = {
+        test::viewerExe(), test::scenesDir() + "/coloured_shadows.iv",
+        "--screenshot",    dir + "/viewer.png",
+        "--size",          "160x120",
+        "--inspect",       "Lamp:-z:1"};
+    for (const std::string& set : c.sets) command.insert(command.end(), {"--set", set});
+    const test::ProcessResult result = runOnTestDisplay(command);
+    EXPECT_EQ(result.exitCode, 2) << result.err;
+    for (const std::string& said : c.says)
+      EXPECT_NE(result.err.find(said), std::string::npos) << said << " not in: " << result.err;
+    EXPECT_EQ(result.err.find("is its method RAYS?"), std::string::npos) << result.err;
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace ivshadow {
@@ -93,12 +94,11 @@ void expectSameMaps(const PanelRun& run) {
 }
 
 TEST(ViewerPanel, LightFieldsSetThroughThePanelRenderAsHeadlessWithTheSameFields) {
-  const PanelRun run =
-      runPanel("coloured_shadows.iv",
-               {"Lamp.method=MAP", "Lamp.resolution=256", "Lamp.maxLayers=2",
-                "Lamp.colorModel=POWER", "Lamp.shadowColor=MONOCHROME", "Lamp.precision=HALF",
-                "Lamp.filter=PCF", "Lamp.filterSize=5", "Lamp.bias=3",
-                "Lamp.layerOverflow=TRUNCATE"});
+  const PanelRun run = runPanel(
+      "coloured_shadows.iv",
+      {"Scene.renderer=RASTER", "Lamp.method=MAP", "Lamp.resolution=256", "Lamp.maxLayers=2",
+       "Lamp.colorModel=POWER", "Lamp.shadowColor=MONOCHROME", "Lamp.precision=HALF",
+       "Lamp.filter=PCF", "Lamp.filterSize=5", "Lamp.bias=3", "Lamp.layerOverflow=TRUNCATE"});
   test::expectMostlyEqual(run.viewer, run.headless, 2, kSameShare, "viewer against headless");
   EXPECT_LT(test::shareWithin(run.viewer, run.headlessUnchanged, 2), kChangedShare)
       << "the settings made no visible difference";
@@ -129,8 +129,9 @@ TEST(ViewerPanel, TheBounceSwitchedOffThroughThePanelRendersAsHeadless) {
 
 TEST(ViewerPanel, PeelingAndLightLocationSetThroughThePanelRenderAsHeadless) {
   const PanelRun run =
-      runPanel("peeled_glasses.iv", {"Lamp.method=MAP", "Glasses.method=FRONT_TO_BACK",
-                                     "Glasses.maxPasses=2", "Lamp.location=-1 1 3"});
+      runPanel("peeled_glasses.iv",
+               {"Shelf.renderer=RASTER", "Lamp.method=MAP", "Glasses.method=FRONT_TO_BACK",
+                "Glasses.maxPasses=2", "Lamp.location=-1 1 3"});
   test::expectMostlyEqual(run.viewer, run.headless, 2, kSameShare, "viewer against headless");
   EXPECT_LT(test::shareWithin(run.viewer, run.headlessUnchanged, 2), kChangedShare);
   expectSameMaps(run);
@@ -171,11 +172,11 @@ TEST(ViewerPanel, SavedSceneHoldsThePanelsValues) {
 
 TEST(ViewerPanel, AddLightWrapsASceneWithoutDeepShadowsInAGroupWithALight) {
   const std::string dir = test::outputDir();
-  const test::ProcessResult result =
-      runOnTestDisplay({test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--add-light",
-                        "--set", "ShadowLight.resolution=128", "--set", "ShadowLight.method=MAP",
-                        "--save-scene", dir + "/wrapped.iv", "--screenshot", dir + "/viewer.png",
-                        "--figures", dir + "/figures.json", "--size", "320x240"});
+  const test::ProcessResult result = runOnTestDisplay(
+      {test::viewerExe(), test::scenesDir() + "/no_camera.iv", "--add-light", "--set",
+       "ShadowLight.resolution=128", "--set", "ShadowLight.method=MAP", "--set",
+       "ShadowGroup.renderer=RASTER", "--save-scene", dir + "/wrapped.iv", "--screenshot",
+       dir + "/viewer.png", "--figures", dir + "/figures.json", "--size", "320x240"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const std::string text = readText(dir + "/wrapped.iv");
   EXPECT_NE(text.find("DEF ShadowGroup TransparentShadowGroup"), std::string::npos) << text;
@@ -202,6 +203,64 @@ TEST(ViewerPanel, AddLightWrapsASceneWithoutDeepShadowsInAGroupWithALight) {
   for (int n : figures["dsm_layers_used"][0]["faces"]) layers += n;
   EXPECT_GT(layers, 0);
   EXPECT_EQ(figures["dsm_rebuilds"], 1);
+}
+
+// The panel's figures of one screenshot frame (the frame after the first, which built what the
+// scene needs: the screenshot frame is a still one).
+nlohmann::json frameFigures(const std::vector<std::string>& assignments) {
+  const std::string dir = test::outputDir();
+  std::vector<std::string> command = {test::viewerExe(), test::scenesDir() + "/coloured_shadows.iv",
+                                      "--screenshot",    dir + "/viewer.png",
+                                      "--figures",       dir + "/figures.json",
+                                      "--size",          "320x240"};
+  for (const std::string& a : setArguments(assignments)) command.push_back(a);
+  const test::ProcessResult result = runOnTestDisplay(command);
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  return result.exitCode == 0 ? readJson(dir + "/figures.json") : nlohmann::json();
+}
+
+// Every "N ms" of the panel's lines lies within the frame's wall time: no figure of an earlier
+// frame (a trace of 403 ms beside a frame of 92 ms) or an impossible timer is shown.
+void expectNoTimeAboveTheFrame(const nlohmann::json& figures) {
+  const std::string text = figures["panel_text"];
+  const double frame = figures["frame_ms"];
+  const std::regex time("([0-9.]+) ms");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), time); it != std::sregex_iterator();
+       ++it) {
+    EXPECT_LE(std::stod((*it)[1]), frame + 1.0) << text;
+  }
+  EXPECT_NE(text.find(" fps"), std::string::npos) << text;
+}
+
+TEST(ViewerPanel, FiguresNameWhatTheTracedPathDidThisFrame) {
+  const nlohmann::json figures = frameFigures({"Scene.renderer=TRACER"});
+  ASSERT_TRUE(figures.is_object());
+  const std::string text = figures["panel_text"];
+  EXPECT_EQ(figures["group_paths"]["Scene"], "TRACER");
+  EXPECT_NE(text.find("path  TRACER"), std::string::npos) << text;
+  // The traced group keeps its picture on a still frame and has no maps or shadow rays of its
+  // own: no line of the GL path's passes, and its light is not called a ray-traced light.
+  EXPECT_NE(text.find("trace kept picture"), std::string::npos) << text;
+  EXPECT_NE(text.find("Scene: traced, no maps"), std::string::npos) << text;
+  for (const char* stale : {"map ", "peel ", "rays ", "shade ", "Lamp:"})
+    EXPECT_EQ(text.find(stale), std::string::npos) << stale << " in\n" << text;
+  expectNoTimeAboveTheFrame(figures);
+}
+
+TEST(ViewerPanel, FiguresNameWhatTheGlPathDidThisFrame) {
+  const nlohmann::json figures = frameFigures({"Scene.renderer=RASTER", "Lamp.method=MAP"});
+  ASSERT_TRUE(figures.is_object());
+  const std::string text = figures["panel_text"];
+  EXPECT_EQ(figures["group_paths"]["Scene"], "RASTER");
+  EXPECT_NE(text.find("path  RASTER"), std::string::npos) << text;
+  // The still frame drew with the map the first frame built: the map is listed, its build
+  // time is not (it was not built this frame), and nothing was traced.
+  EXPECT_EQ(figures["this_frame"]["map_build"], false);
+  EXPECT_NE(text.find("Lamp: MAP 1024"), std::string::npos) << text;
+  for (const char* stale : {"map ", "trace ", "rays "})
+    EXPECT_EQ(text.find(stale), std::string::npos) << stale << " in\n" << text;
+  EXPECT_NE(text.find("shade "), std::string::npos) << text;
+  expectNoTimeAboveTheFrame(figures);
 }
 
 TEST(ViewerPanel, BadAssignmentsExitTwoNamingTheFieldAndWriteNothing) {

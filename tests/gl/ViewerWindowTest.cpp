@@ -123,5 +123,81 @@ TEST(ViewerWindow, ReopensWithTheGeometryItWasClosedWith) {
   EXPECT_EQ(second.quit(), 0) << second.output();
 }
 
+// Pixels of the black background (no surface drawn there), which only the camera can change.
+std::vector<bool> background(const Image& image) {
+  std::vector<bool> mask;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      mask.push_back(p[0] + p[1] + p[2] < 30);
+    }
+  return mask;
+}
+
+TEST(ViewerWindow, CtrlDragMovesTheLightNotTheCameraAndClosingAsksToSaveIt) {
+  // The light dragger stays on (as users start the viewer); the camera is brought back until
+  // it is in view, so the picture is not the file's.
+  InteractiveViewer viewer(kScreen1280, {scene(), "--size", "640x400"},
+                           test::outputDir() + "/config");
+  ASSERT_TRUE(viewer.waitForWindow(kTitle));
+  const ScreenRect view = InteractiveViewer::viewArea(viewer.settledTree());
+  const Image before = viewer.steadyGrab(view);
+  EXPECT_EQ(viewer.title(), kTitle) << "a scene just opened is marked as changed";
+
+  // In Coin's view mode, a plain drag turns the camera; with Ctrl held it moves the light:
+  // from the middle of the 3D area, a quarter of its width to the right.
+  const int x = view.x + view.width / 2, y = view.y + view.height / 2;
+  viewer.drag(x, y, x + view.width / 4, y + view.height / 10, true);
+  const Image after = viewer.steadyGrab(view);
+
+  // The camera did not move: the background is where it was (all but a few pixels of the
+  // dragger, which moved with the light and may cover some).
+  const std::vector<bool> was = background(before), is = background(after);
+  int moved = 0;
+  for (std::size_t i = 0; i < was.size(); ++i) moved += was[i] != is[i] ? 1 : 0;
+  EXPECT_LT(moved, int(was.size()) / 200) << "the background moved: the drag turned the camera";
+  // The light did: the shading and the shadows on the floor and the wall changed.
+  EXPECT_LT(test::shareWithin(after, before, 20), 0.97)
+      << "the Ctrl+drag left the picture as it was";
+  if (HasFailure()) {
+    writePng(test::outputDir() + "/before.png", before);
+    writePng(test::outputDir() + "/after.png", after);
+  }
+
+  // The scene changed: the title says so, and closing asks whether to save it instead of
+  // quitting (closing that question cancels it: the viewer goes on).
+  EXPECT_EQ(viewer.title(), "coloured_shadows.iv* - ivshadow viewer");
+  viewer.close();
+  EXPECT_TRUE(viewer.waitForOtherWindow("Save changes")) << viewer.output();
+  EXPECT_TRUE(viewer.running()) << "the viewer quit without asking to save the changed scene";
+}
+
+TEST(ViewerWindow, TheWheelScrollsThePanelWithoutChangingAField) {
+  // A small window, so that the panel's fields reach below its bottom and it scrolls.
+  InteractiveViewer viewer(kScreen1024, {scene(), "--size", "480x300", "--no-light-dragger"},
+                           test::outputDir() + "/config");
+  ASSERT_TRUE(viewer.waitForWindow(kTitle));
+  const test::WindowTree tree = viewer.settledTree();
+  const ScreenRect view = InteractiveViewer::viewArea(tree);
+  // The panel: the largest window right of the 3D area (the examiner's wheels lie between).
+  ScreenRect panel;
+  for (const ScreenRect& window : tree.all) {
+    if (window.x >= view.x + view.width &&
+        window.width * window.height > panel.width * panel.height)
+      panel = window;
+  }
+  ASSERT_GT(panel.height, 100) << "no panel right of the 3D area";
+  const Image before = viewer.steadyGrab(panel);
+  // Down the panel's right half, where the spin boxes and combo boxes are, a few notches each:
+  // under the pointer every moment is one field or another (maxLayers went from 6 to 1).
+  for (int y = panel.y + 30; y < panel.y + panel.height - 10; y += 24) {
+    viewer.wheelDown(panel.x + panel.width * 2 / 3, y, 2);
+  }
+  const Image after = viewer.steadyGrab(panel);
+  EXPECT_LT(test::shareWithin(after, before, 0), 0.9) << "the panel did not scroll";
+  EXPECT_EQ(viewer.title(), kTitle) << "the wheel changed a field of the scene";
+  EXPECT_EQ(viewer.quit(), 0) << viewer.output();
+}
+
 }  // namespace
 }  // namespace ivshadow
