@@ -354,9 +354,12 @@ def route_slurm(ivshadow, base, sweep, work, local):
     cluster = SlurmCluster(cluster_dir)
     try:
         cluster.start()
+        # --slurm given relative to where it is run, submit.sh run from elsewhere: the scripts
+        # name every path absolutely (docs/VARIANTS.md).
         scripts = os.path.join(work, "slurm-jobs")
         written = run([ivshadow, "variants", base, sweep, "-o", out, "--size", SIZE, "--frames",
-                       "1", "--slurm", scripts, "--shards", "4", "--limit", "2"], expect=[0])
+                       "1", "--slurm", "slurm-jobs", "--shards", "4", "--limit", "2"],
+                      expect=[0], cwd=work)
         if "sh " + os.path.join(scripts, "submit.sh") not in written.stdout:
             fail("--slurm does not say how to submit: %s" % written.stdout)
         with open(os.path.join(scripts, "variants.sbatch")) as f:
@@ -366,7 +369,8 @@ def route_slurm(ivshadow, base, sweep, work, local):
                 fail("variants.sbatch lacks %r:\n%s" % (needed, array))
         if status_counts(ivshadow, out) != "done 0, failed 0, pending 14 of 14 variants":
             fail("before submitting, --status says %s" % status_counts(ivshadow, out))
-        submitted = run(["sh", os.path.join(scripts, "submit.sh")], expect=[0], env=cluster.env)
+        submitted = run(["sh", os.path.join(scripts, "submit.sh")], expect=[0], env=cluster.env,
+                        cwd=cluster_dir)
         print(submitted.stdout.strip())
         deadline = time.time() + 300
         while any(line.strip() for line in cluster.jobs()):
