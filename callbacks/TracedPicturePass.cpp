@@ -16,13 +16,15 @@ constexpr int kDepthUnit = 1;
 
 }  // namespace
 
+bool TracedPicturePass::supported(std::string& whyNot) {
+  if (epoxy_gl_version() >= 45) return true;
+  whyNot = "OpenGL 4.5 is needed to draw a traced picture; this context offers " +
+           std::to_string(epoxy_gl_version() / 10) + "." + std::to_string(epoxy_gl_version() % 10);
+  return false;
+}
+
 std::unique_ptr<TracedPicturePass> TracedPicturePass::create(std::string& whyNot) {
-  if (epoxy_gl_version() < 45) {
-    whyNot = "OpenGL 4.5 is needed to draw a traced picture; this context offers " +
-             std::to_string(epoxy_gl_version() / 10) + "." +
-             std::to_string(epoxy_gl_version() % 10);
-    return nullptr;
-  }
+  if (!supported(whyNot)) return nullptr;
   std::unique_ptr<TracedPicturePass> pass(new TracedPicturePass);
   pass->program_ = GlProgram::link(composeShader(glsl::kPeelCompositeVert),
                                    composeShader(glsl::kTracedPictureFrag), whyNot);

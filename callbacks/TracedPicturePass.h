@@ -21,6 +21,8 @@ class IVSHADOW_INTERNAL TracedPicturePass {
  public:
   // Null, with the reason, when the context lacks what the pass needs (GL 4.5, its program).
   static std::unique_ptr<TracedPicturePass> create(std::string& whyNot);
+  // Whether the current context can draw a traced picture; `whyNot` says why not.
+  static bool supported(std::string& whyNot);
 
   // The draw framebuffer's window depths over `viewport` (x, y, width, height), rows bottom
   // to top. A multisampled framebuffer (an application's, FreeCAD's saveImage) is resolved

@@ -107,12 +107,18 @@ int main(int argc, char** argv) {
     scene->unref();
     return 1;
   }
-  // Statistics of the frame: the map was built once, the glasses peeled.
+  // Statistics of the frame: on a GPU the map was built once and the glasses peeled; on a
+  // software rasteriser the group's renderer (AUTO) traced the frame on the CPU instead.
   const ivshadow::DeepShadowStatistics stats = ivshadow::collectDeepShadowStatistics(scene);
   // Let the plugin free its GL resources while the context is still current.
   SoContextHandler::destructingContext(cacheContext);
   scene->unref();
-  std::cout << "wrote " << argv[1] << " (deep shadow map built " << stats.rebuilds << " time, "
-            << stats.lights.size() << " light)\n";
+  std::cout << "wrote " << argv[1];
+  if (stats.tracerFrames > 0)
+    std::cout << " (traced on the CPU: " << stats.tracerFrames << " frame, "
+              << stats.tracerCameraRays << " camera rays)\n";
+  else
+    std::cout << " (deep shadow map built " << stats.rebuilds << " time, " << stats.lights.size()
+              << " light)\n";
   return 0;
 }

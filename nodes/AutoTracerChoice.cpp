@@ -1,5 +1,6 @@
 #include "nodes/AutoTracerChoice.h"
 
+#include "callbacks/TracedPicturePass.h"
 #include "scene/SceneTriangles.h"
 
 #include <Inventor/elements/SoGLCacheContextElement.h>
@@ -13,14 +14,18 @@ bool AutoTracerChoice::traces(SoState* state, const SoNode* owner, const char* f
   const GlCapabilities* gl = capabilities_.get(SoGLCacheContextElement::get(state), [] {
     return std::make_unique<GlCapabilities>(GlCapabilities::queryCurrent());
   });
-  const bool software = gl->isSoftwareRenderer();
+  // A context too old to draw the traced picture (GL 3.3 on llvmpipe) takes GL's path, which
+  // says what it lacks in turn: tracing there would only fall back to it with one more warning.
+  std::string whyNot;
+  const bool traces = gl->isSoftwareRenderer() && TracedPicturePass::supported(whyNot);
   if (!said_) {
     said_ = true;
-    SoDebugError::postInfo(owner->getTypeId().getName().getString(), "%s: %s AUTO uses %s on %s",
-                           describeNode(owner).c_str(), field, software ? "TRACER" : otherwise,
-                           gl->renderer.c_str());
+    SoDebugError::postInfo(owner->getTypeId().getName().getString(), "%s: %s AUTO uses %s on %s%s",
+                           describeNode(owner).c_str(), field, traces ? "TRACER" : otherwise,
+                           gl->renderer.c_str(),
+                           whyNot.empty() ? "" : (" (" + whyNot + ")").c_str());
   }
-  return software;
+  return traces;
 }
 
 }  // namespace ivshadow

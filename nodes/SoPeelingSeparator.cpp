@@ -20,7 +20,7 @@ void SoPeelingSeparator::initClass() {
 
 SoPeelingSeparator::SoPeelingSeparator() : impl_(new ivshadow::PeelingSeparatorImpl(this)) {
   SO_NODE_CONSTRUCTOR(SoPeelingSeparator);
-  SO_NODE_ADD_FIELD(method, (FRAGMENT_LISTS));
+  SO_NODE_ADD_FIELD(method, (AUTO_METHOD));
   SO_NODE_ADD_FIELD(maxPasses, (0));
   SO_NODE_ADD_FIELD(earlyTermination, (TRUE));
   SO_NODE_DEFINE_ENUM_VALUE(Method, DUAL);

@@ -48,7 +48,7 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, PEELED);
   SO_NODE_DEFINE_ENUM_VALUE(Transparency, COIN_BLENDING);
   SO_NODE_SET_SF_ENUM_TYPE(transparency, Transparency);
-  SO_NODE_ADD_FIELD(renderer, (RASTER));
+  SO_NODE_ADD_FIELD(renderer, (AUTO_RENDERER));
   SO_NODE_DEFINE_ENUM_VALUE(Renderer, RASTER);
   SO_NODE_DEFINE_ENUM_VALUE(Renderer, TRACER);
   // Files say AUTO; the C++ name is AUTO_RENDERER, since SoSeparator's CacheEnabled has AUTO.
@@ -57,7 +57,7 @@ SoTransparentShadowGroup::SoTransparentShadowGroup()
   SO_NODE_ADD_FIELD(bounce, (FALSE));
   SO_NODE_ADD_FIELD(bounceLights, (ivshadow::kDefaultBounceLights));
   SO_NODE_ADD_FIELD(bounceMapSize, (ivshadow::kDefaultBounceMapSize));
-  SO_NODE_ADD_FIELD(movingResolution, (1.0f));
+  SO_NODE_ADD_FIELD(movingResolution, (0.5f));
 }
 
 SoTransparentShadowGroup::~SoTransparentShadowGroup() {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 namespace ivshadow {
 
 // What a traced group (renderer TRACER) or traced peeling separator (method TRACER) is doing
@@ -10,27 +12,26 @@ namespace ivshadow {
 //   plain separator meanwhile (their maps, peeling and pictures belong to the outer frame).
 // - RefineTouch: it touches itself to ask for its refined frame, a notification that changes
 //   nothing the group or any enclosing one holds.
-class TracerActivity {
+// Kept in the plugin library alone (tools such as the reference's GL overlay open scopes too):
+// an inline variable in this header would be one more copy per executable under hidden
+// visibility, and the nodes would never see the tools' scopes.
+class IVSHADOW_INTERNAL TracerActivity {
  public:
   enum Kind { DrawingUntraced, RefineTouch, kKinds };
 
-  static bool active(Kind kind) { return counts_[kind] > 0; }
+  static bool active(Kind kind);
 
   // Marks `kind` active for the scope's lifetime.
-  class Scope {
+  class IVSHADOW_INTERNAL Scope {
    public:
-    explicit Scope(Kind kind) : kind_(kind) { ++counts_[kind_]; }
-    ~Scope() { --counts_[kind_]; }
+    explicit Scope(Kind kind);
+    ~Scope();
     Scope(const Scope&) = delete;
     Scope& operator=(const Scope&) = delete;
 
    private:
     Kind kind_;
   };
-
- private:
-  // Per thread: Coin traverses and notifies on the thread that applies the action.
-  static inline thread_local int counts_[kKinds] = {};
 };
 
 }  // namespace ivshadow

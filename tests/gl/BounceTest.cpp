@@ -35,7 +35,8 @@ std::string bounceWall(const std::string& fields, const std::string& extra = {})
   text << file.rdbuf();
   std::string scene = text.str();
   const std::string on = "\n    bounce TRUE\n";  // the field, not the comment
-  scene.replace(scene.find(on), on.size(), "\n    " + fields + "\n");
+  // GL's bounce unless `fields` says otherwise (the default, AUTO, traces here).
+  scene.replace(scene.find(on), on.size(), "\n    renderer RASTER " + fields + "\n");
   const std::string pane = "    DEF Pane Separator {";
   scene.insert(scene.find(pane), extra);
   return scene;

@@ -28,7 +28,9 @@ std::string scene(double distance, const std::string& groupFields, bool group = 
   iv.precision(17);
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
      << "OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
-     << (group ? "TransparentShadowGroup { " + groupFields : std::string("Separator {")) << "\n"
+     << (group ? "TransparentShadowGroup { renderer RASTER " + groupFields
+               : std::string("Separator {"))
+     << "\n"
      << "PointLight { location " << 0.35 + along << " 0 " << 0.5 + along << " }\n"
      << "Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
      << "Coordinate3 { point [ -1.2 -1.2 0, 1.2 -1.2 0, 1.2 1.2 0, -1.2 1.2 0 ] }\n"

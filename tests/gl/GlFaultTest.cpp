@@ -29,7 +29,7 @@ std::string groupScene(const std::string& light, const std::string& lightFields,
          "Separator {\n"
          "  PerspectiveCamera { position 0 0 6 nearDistance 1 farDistance 20 "
          "heightAngle 0.785398 }\n"
-         "  DEF Scene TransparentShadowGroup {\n"
+         "  DEF Scene TransparentShadowGroup { renderer RASTER\n"
          "    castingLights DEEP_SHADOW_LIGHTS\n"
          "    transparency " +
          transparency +
@@ -132,7 +132,11 @@ void expectNoBounce(const std::string& fault, const std::string& warning) {
   std::ifstream file(test::scenesDir() + "/bounce_wall.iv");
   std::stringstream text;
   text << file.rdbuf();
-  const Rendered faulty = render("bounce_" + fault, text.str(), {"IVSHADOW_FAIL_GL=" + fault});
+  // GL's bounce (the default, AUTO, traces on a software rasteriser).
+  std::string scene = text.str();
+  const std::string group = "DEF Room TransparentShadowGroup {";
+  scene.insert(scene.find(group) + group.size(), " renderer RASTER");
+  const Rendered faulty = render("bounce_" + fault, scene, {"IVSHADOW_FAIL_GL=" + fault});
   ASSERT_EQ(faulty.result.exitCode, 0) << faulty.result.err;
   const std::string& err = faulty.result.err;
   const std::size_t at = err.find(warning);
@@ -269,8 +273,11 @@ TEST(GlFault, AGroupPeelBufferThatFailsIsBlendedByCoin) {
 TEST(GlFault, SeparatorPeelTargetsThatFailDrawAsAPlainSeparator) {
   for (const std::string fault : {"texture", "framebuffer", "buffer"}) {
     SCOPED_TRACE(fault);
-    const Rendered faulty = render("separator_peel_" + fault, separatorScene("PeelingSeparator"),
-                                   {"IVSHADOW_FAIL_GL=" + fault});
+    // GL's peeling (the default, AUTO, traces on a software rasteriser).
+    std::string scene = separatorScene("PeelingSeparator");
+    const std::string separator = "DEF Glass PeelingSeparator {";
+    scene.insert(scene.find(separator) + separator.size(), " method FRAGMENT_LISTS");
+    const Rendered faulty = render("separator_peel_" + fault, scene, {"IVSHADOW_FAIL_GL=" + fault});
     expectOneWarning(faulty, "PeelingSeparator 'Glass': ");
     const Rendered plain = render("separator_plain", separatorScene("Separator"));
     ASSERT_EQ(plain.result.exitCode, 0) << plain.result.err;

@@ -118,7 +118,7 @@ std::string groupScene(const std::string& groupFields, const std::string& conten
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
      << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height " << kViewHeight
      << " }\n"
-     << "  DEF Group TransparentShadowGroup { " << groupFields << "\n"
+     << "  DEF Group TransparentShadowGroup { renderer RASTER " << groupFields << "\n"
      << "    LightModel { model BASE_COLOR }\n"
      << "    ShapeHints { vertexOrdering UNKNOWN_ORDERING shapeType UNKNOWN_SHAPE_TYPE }\n"
      << content << "  }\n}\n";
@@ -208,7 +208,8 @@ TEST(GroupPeeling, ASmallIndexedFaceSetDrawnImmediatelyIsPeeledToo) {
   EXPECT_TRUE(failure.empty()) << failure;
   // And in a SoPeelingSeparator outside any group.
   const Rendered separated = render(
-      groupScene("isActive FALSE", std::string("PeelingSeparator {\n") + kIndexedPane + "}\n"));
+      groupScene("isActive FALSE",
+                 std::string("PeelingSeparator { method FRAGMENT_LISTS\n") + kIndexedPane + "}\n"));
   EXPECT_GE(separated.separators.passes, 1);
   failure = compareWithExpectation(separated.image, indexedPanePicture(), kExact);
   EXPECT_TRUE(failure.empty()) << failure;
@@ -392,8 +393,8 @@ TEST(GroupPeeling, APeelingSeparatorInsideAPeelingGroupPeelsOnce) {
 TEST(GroupPeeling, AGroupInsideAPeelingGroupIsPeeledWithIt) {
   // The inner group draws its children as part of the outer group's peeling (its own
   // programs would write into the peel targets): exact, with the outer group's one pass.
-  const Rendered rendered =
-      render(groupScene("", "    TransparentShadowGroup {\n" + crossingPanes() + "    }\n"));
+  const Rendered rendered = render(groupScene(
+      "", "    TransparentShadowGroup { renderer RASTER\n" + crossingPanes() + "    }\n"));
   const std::string failure = compareWithExpectation(rendered.image, panesPicture(exactOf), kExact);
   EXPECT_TRUE(failure.empty()) << failure;
   EXPECT_EQ(rendered.group.passes, 1) << "summed over both groups: only the outer one lists";

@@ -41,8 +41,11 @@ namespace {
 // blended once onto a black framebuffer in 32-bit floats, then rounded to 8 bits: one step.
 constexpr double kTolerance = 1.0;
 
+// Every frame traced in full (movingResolution 1): these tests count and check full frames;
+// the reduced frames of a motion have tests of their own below.
 ShadowScene traced(ShadowScene scene) {
-  scene.groupFields = "renderer TRACER";
+  scene.renderer = "TRACER";
+  scene.groupFields += " movingResolution 1";
   return scene;
 }
 
@@ -287,10 +290,10 @@ TEST(TracedGroup, ACameraInsideTheGroupIsTheOneTraced) {
 // the traced picture is the GL path's (RAYS, exact shadows; the outside light only lights).
 TEST(TracedGroup, ALightAboveAGroupWithItsOwnCameraStaysInPlace) {
   std::vector<Image> pictures;
-  for (const char* renderer : {"renderer TRACER", "renderer RASTER"}) {
+  for (const char* renderer : {"TRACER", "RASTER"}) {
     ShadowScene scene{};
     scene.method = "RAYS";
-    scene.groupFields = renderer;
+    scene.renderer = renderer;
     scene.filters = {kRedGlass};
     scene.aboveGroup = "PointLight { location 0.6 0.4 0.8 intensity 0.6 }";
     Rendering r(scene);
@@ -387,11 +390,11 @@ TEST(TracedGroup, LinesAreDrawnThroughGlAgainstThePicturesDepth) {
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerFrames, 1) << "the still frame traced";
 }
 
-// renderer AUTO traces on a software rasteriser (these machines: llvmpipe) and rasterises on
-// a GPU, and says which once.
+// renderer AUTO, the default, traces on a software rasteriser (these machines: llvmpipe) and
+// rasterises on a GPU, and says which once.
 TEST(TracedGroup, AutoTracesOnASoftwareRasteriserAndSaysSo) {
   ShadowScene scene = ShadowScene{};
-  scene.groupFields = "renderer AUTO";
+  scene.renderer = "";  // the group's default
   scene.filters = {kRedGlass};
   Rendering r(scene, true);
   ASSERT_TRUE(r.renderer);

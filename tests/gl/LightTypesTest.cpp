@@ -30,7 +30,7 @@ std::string sceneWith(const std::string& lights, const std::string& groupFields,
   std::ostringstream iv;
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
      << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
-     << "  TransparentShadowGroup {\n    " << groupFields << "\n    " << lights << "\n"
+     << "  TransparentShadowGroup { renderer RASTER\n    " << groupFields << "\n    " << lights << "\n"
      << "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
      << "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"
      << "    QuadMesh { verticesPerRow 2 verticesPerColumn 2 }\n"
@@ -415,7 +415,7 @@ TEST(LightTypesMap, APointLightBesideTheCastersCornerKeepsTheCornerInItsMap) {
   const std::string text =
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
-      "  TransparentShadowGroup { method MAP\n"
+      "  TransparentShadowGroup { renderer RASTER method MAP\n"
       "    PointLight { location 1.3 1.3 0.8 }\n"
       "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
       "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"

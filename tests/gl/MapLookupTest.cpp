@@ -29,7 +29,7 @@ class MapLookup : public ::testing::TestWithParam<Lookup> {};
 std::string scene(const std::string& light, const std::string& casters) {
   return "#Inventor V2.1 ascii\nSeparator {\n"
          "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
-         "  TransparentShadowGroup {\n" +
+         "  TransparentShadowGroup { renderer RASTER\n" +
          light +
          "\n    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
          "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"

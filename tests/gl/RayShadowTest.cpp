@@ -107,7 +107,7 @@ TEST(RayShadows, GrazingLightDoesNotShadowTheReceiverItself) {
   const std::string text =
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
-      "  TransparentShadowGroup {\n"
+      "  TransparentShadowGroup { renderer RASTER\n"
       "    DeepShadowLight { location -3 0 0.001 method RAYS }\n"
       "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
       "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"
@@ -218,7 +218,7 @@ TEST_P(ScreenShadows, ACameraInsideTheGroupMovedIsTracedAgain) {
   ASSERT_NE(text.find(camera), std::string::npos);
   text.erase(text.find(camera), camera.size());
   // After the group's fields, before its first child.
-  const std::string group = "isActive TRUE\n";
+  const std::string group = "renderer RASTER\n";
   text.insert(text.find(group) + group.size(),
               "    DEF Eye OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 "
               "height 2.4 }\n");
@@ -302,7 +302,8 @@ TEST(RayShadows, AutoTracesRaysOnThisSoftwareRendererAndSaysSo) {
   const std::string dir = outputDir();
   const ProcessResult result =
       run({ivshadowExe(), "render", sceneFile("coloured_shadows.iv"), "-o", dir + "/a.png",
-           "--size", "160x120", "--frames", "2", "--stats", dir + "/stats.json"});
+           "--size", "160x120", "--frames", "2", "--stats", dir + "/stats.json", "--set",
+           "Scene.renderer=RASTER"});  // the light's AUTO acts on GL's path
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const nlohmann::json stats = readJson(dir + "/stats.json");
   const std::string renderer = stats.at("gl_renderer");
@@ -328,10 +329,11 @@ TEST(RayShadows, AutoTracesRaysOnThisSoftwareRendererAndSaysSo) {
 
 TEST(RayShadows, WithoutRoomForTheCastersTheLightWarnsOnceAndKeepsAMap) {
   const std::string dir = outputDir();
-  const ProcessResult result = run(
-      {ivshadowExe(), "render", sceneFile("coloured_shadows.iv"), "-o", dir + "/a.png", "--size",
-       "160x120", "--frames", "2", "--stats", dir + "/stats.json", "--set", "Lamp.method=RAYS"},
-      {"IVSHADOW_EMBREE_MEMORY_LIMIT=1000"});
+  const ProcessResult result =
+      run({ivshadowExe(), "render", sceneFile("coloured_shadows.iv"), "-o", dir + "/a.png",
+           "--size", "160x120", "--frames", "2", "--stats", dir + "/stats.json", "--set",
+           "Lamp.method=RAYS", "--set", "Scene.renderer=RASTER"},
+          {"IVSHADOW_EMBREE_MEMORY_LIMIT=1000"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const nlohmann::json stats = readJson(dir + "/stats.json");
   EXPECT_EQ(stats.at("passes").at("shadow_method"), "MAP");
@@ -340,9 +342,9 @@ TEST(RayShadows, WithoutRoomForTheCastersTheLightWarnsOnceAndKeepsAMap) {
     if (line.find("'Lamp': cannot trace shadow rays") != std::string::npos) ++warned;
   EXPECT_EQ(warned, 1u) << result.err;
   // The map's picture: the MAP method rendered on purpose gives the same one.
-  const ProcessResult map =
-      run({ivshadowExe(), "render", sceneFile("coloured_shadows.iv"), "-o", dir + "/map.png",
-           "--size", "160x120", "--frames", "2", "--set", "Lamp.method=MAP"});
+  const ProcessResult map = run({ivshadowExe(), "render", sceneFile("coloured_shadows.iv"), "-o",
+                                 dir + "/map.png", "--size", "160x120", "--frames", "2", "--set",
+                                 "Lamp.method=MAP", "--set", "Scene.renderer=RASTER"});
   ASSERT_EQ(map.exitCode, 0) << map.err;
   const Image fallback = readPng(dir + "/a.png"), expected = readPng(dir + "/map.png");
   const std::string failure = compareWithExpectation(

@@ -44,7 +44,7 @@ TEST_P(ShadingFrameGLTest, ASteadyFrameLooksUpNoUniform) {
   groups.apply(loaded.root.get());
   for (int i = 0; i < groups.getPaths().getLength(); ++i)
     groups.getPaths()[i]->getTail()->set(
-        (std::string("transparency ") + GetParam().transparency).c_str());
+        (std::string("transparency ") + GetParam().transparency + " renderer RASTER").c_str());
   const ViewSetup view = ViewSetup::prepare(loaded.root.get(), SbViewportRegion(64, 64));
   // The first frame builds the maps and links the programs (reading their locations).
   renderer().render(view.root.get());

@@ -49,6 +49,7 @@ std::string ShadowScene::text() const {
      << "  " << aboveGroup << "\n"
      << "  DEF Group TransparentShadowGroup {\n"
      << "    isActive " << (shadowGroupActive ? "TRUE" : "FALSE")
+     << (renderer.empty() ? std::string() : " renderer " + renderer)
      << (groupFields.empty() ? std::string() : " " + groupFields) << "\n"
      << "    Rotation { rotation " << axis[0] << ' ' << axis[1] << ' ' << axis[2] << ' '
      << rotationAngle << " }\n";

@@ -57,8 +57,11 @@ struct ShadowScene {
   std::string floorNodes;      // Inventor nodes placed before the floor's mesh
   std::string aboveGroup;      // Inventor nodes placed just before the group, outside it
   std::string groupNodes;      // Inventor nodes placed in the group after the filters
-  std::string groupFields;     // fields of the group, e.g. "renderer TRACER"
-  std::string belowGroup;      // Inventor nodes placed just after the group, outside it
+  // The group's renderer: GL's, since these scenes test the GL path unless told ("": the
+  // node's default, AUTO).
+  std::string renderer = "RASTER";
+  std::string groupFields;  // other fields of the group, e.g. "castingLights DEEP_SHADOW_LIGHTS"
+  std::string belowGroup;   // Inventor nodes placed just after the group, outside it
   std::array<double, 3> rotationAxis{0.0, 0.0, 1.0};
   double rotationAngle = 0.0;
   int floorCells = 1;  // quads per side of the floor mesh

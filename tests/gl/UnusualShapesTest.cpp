@@ -20,7 +20,7 @@ std::string sceneWith(const std::string& shape) {
   return "#Inventor V2.1 ascii\n"
          "Separator {\n"
          "  PerspectiveCamera { position 0 0 8 heightAngle 0.785398 }\n"
-         "  DEF Scene TransparentShadowGroup {\n"
+         "  DEF Scene TransparentShadowGroup { renderer RASTER\n"
          "    transparency COIN_BLENDING\n"
          "    DEF Lamp DeepShadowLight { location 0 0 3 resolution 256 }\n"
          "    Separator {\n"

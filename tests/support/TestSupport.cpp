@@ -1,7 +1,11 @@
 #include "tests/support/TestSupport.h"
 
 #include "image/PngFile.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/InputError.h"
+
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoNode.h>
 
 #include <gtest/gtest.h>
 
@@ -237,6 +241,16 @@ ImageComparison renderAgainstReference(const std::string& scene, const std::stri
   const ImageComparison metrics = ImageComparison::compare(reference, actual, "reference", "gl");
   if (metrics.all.psnr < psnrFloor) writePng(dir + "/diff.png", errorHeatMap(reference, actual, 0));
   return metrics;
+}
+
+void setOnEveryGroup(SoNode* root, const std::string& field) {
+  SoSearchAction search;
+  search.setType(SoTransparentShadowGroup::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(TRUE);
+  search.apply(root);
+  for (int i = 0; i < search.getPaths().getLength(); ++i)
+    EXPECT_TRUE(search.getPaths()[i]->getTail()->set(field.c_str())) << field;
 }
 
 }  // namespace ivshadow::test

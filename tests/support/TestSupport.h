@@ -8,7 +8,13 @@
 #include <string>
 #include <vector>
 
+class SoNode;
+
 namespace ivshadow::test {
+
+// Sets `field` (e.g. "renderer RASTER") on every SoTransparentShadowGroup under `root`: the
+// tests that mean GL's path pin it, since the default, AUTO, traces on a software rasteriser.
+void setOnEveryGroup(SoNode* root, const std::string& field);
 
 // Paths fixed at build time by tests/CMakeLists.txt.
 std::string scenesDir();
