@@ -282,11 +282,12 @@ void addTradePlot(OutputFiles& outputs, const std::string& path, const std::stri
   painter.drawText(QRectF(0, 8, kWidth, 26), Qt::AlignCenter, QString::fromStdString(title));
   painter.setFont(font);
   painter.drawText(QRectF(0, 34, kWidth, 20), Qt::AlignCenter,
-                   "Take a setting on the black staircase (the Pareto front): none is both "
-                   "faster and closer to the reference.");
+                   "Take a setting on the Pareto front (outlined, on the black line): no "
+                   "other setting is both faster and closer to the reference.");
 
   // The front as a staircase: from each of its points the best error reached so far holds
-  // until a slower point of the front does better.
+  // until a slower point of the front does better, and from the last on to the frame's edge,
+  // so that a front of one point (the tracer, where it wins) still shows as a line.
   std::vector<const TradePoint*> front;
   for (const TradePoint& p : points)
     if (p.pareto) front.push_back(&p);
@@ -299,6 +300,7 @@ void addTradePlot(OutputFiles& outputs, const std::string& path, const std::stri
       stairs.lineTo(x(front[i]->timeMs), y(front[i - 1]->psnrDb));
       stairs.lineTo(x(front[i]->timeMs), y(front[i]->psnrDb));
     }
+    stairs.lineTo(kRight, y(front.back()->psnrDb));
     painter.setPen(QPen(QColor(0, 0, 0, 170), 2.5));
     painter.setBrush(Qt::NoBrush);
     painter.drawPath(stairs);
