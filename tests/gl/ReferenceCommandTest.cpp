@@ -64,6 +64,15 @@ TEST(ReferenceCommand, BadInputExitsTwoWithoutOutput) {
                                           "-o", dir + "/a.png", "--bounce", "-1"});
   EXPECT_EQ(bounce.exitCode, 2);
   EXPECT_NE(bounce.err.find("--bounce -1: error: expected 0"), std::string::npos) << bounce.err;
+  // A directory for the picture is named as one (it read "cannot write images of type '(no
+  // extension)'").
+  const test::ProcessResult directory =
+      run({test::ivshadowExe(), "reference", scene("lit_plane.iv"), "-o", dir});
+  EXPECT_EQ(directory.exitCode, 2);
+  EXPECT_EQ(directory.err, dir +
+                               ": error: -o names a directory; expected the name of an image "
+                               "file, e.g. " +
+                               dir + "/picture.png\n");
   EXPECT_FALSE(test::fileExists(dir + "/a.png"));
 }
 
@@ -193,8 +202,8 @@ TEST(ReferenceCommand, DrawsLinesTextAndMarkersAsGlDrawsThemOverTheTrace) {
       "Separator { BaseColor { rgb 1 1 1 } Translation { translation -0.5 -0.5 1 }\n"
       "  Text2 { string \"TEXT\" } }\n"
       "}\n");
-  const test::ProcessResult result =
-      run({test::ivshadowExe(), "reference", path, "-o", dir + "/overlay.png", "--size", "200x200"});
+  const test::ProcessResult result = run(
+      {test::ivshadowExe(), "reference", path, "-o", dir + "/overlay.png", "--size", "200x200"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const Image image = readPng(dir + "/overlay.png");
   int red = 0, green = 0, white = 0;
@@ -207,7 +216,7 @@ TEST(ReferenceCommand, DrawsLinesTextAndMarkersAsGlDrawsThemOverTheTrace) {
     }
   // One unit is 100 pixels: the line covers 100 of them, a pixel more or less at its ends.
   EXPECT_NEAR(red, 100, 2);
-  EXPECT_EQ(green, 0);  // behind the square
+  EXPECT_EQ(green, 0);   // behind the square
   EXPECT_GT(white, 20);  // the text's glyphs
   EXPECT_NE(result.err.find("GL draws it over the traced picture"), std::string::npos)
       << result.err;
