@@ -1,0 +1,105 @@
+"""The preferences page (Edit > Preferences > IvShadow), stored in FreeCAD's parameters at
+User parameter:BaseApp/Preferences/Mod/IvShadow (ivshadow.freecad.PARAMETERS)."""
+
+from PySide2 import QtGui, QtWidgets
+
+_PRESETS = [("OverTheShoulder", "Over the shoulder"), ("Top", "Top"),
+            ("FrontLeft", "Front left")]
+_RENDERERS = [("AUTO", "Automatic (CPU tracer without a GPU, GL on a GPU)"),
+              ("RASTER", "GL (fast on a GPU)"), ("TRACER", "CPU tracer (exact)")]
+
+
+class _ColourButton(QtWidgets.QPushButton):
+    def __init__(self):
+        super().__init__()
+        self.colour = (1.0, 1.0, 1.0)
+        self.clicked.connect(self._choose)
+
+    def set_colour(self, colour):
+        self.colour = tuple(colour)
+        r, g, b = (int(round(c * 255)) for c in self.colour)
+        self.setStyleSheet("background-color: rgb(%d, %d, %d)" % (r, g, b))
+
+    def _choose(self):
+        chosen = QtWidgets.QColorDialog.getColor(
+            QtGui.QColor.fromRgbF(*self.colour), self, "Colour")
+        if chosen.isValid():
+            self.set_colour((chosen.redF(), chosen.greenF(), chosen.blueF()))
+
+
+class PreferencesPage:
+    """What FreeCAD's preferences dialog asks of a Python page: `form`, loadSettings and
+    saveSettings."""
+
+    def __init__(self, parent=None):
+        self.form = QtWidgets.QWidget(parent)
+        self.form.setWindowTitle("IvShadow")
+        layout = QtWidgets.QVBoxLayout(self.form)
+
+        light = QtWidgets.QGroupBox("Light")
+        form = QtWidgets.QFormLayout(light)
+        self.preset = QtWidgets.QComboBox()
+        for key, text in _PRESETS:
+            self.preset.addItem(text, key)
+        form.addRow("Direction", self.preset)
+        self.light_color = _ColourButton()
+        form.addRow("Colour", self.light_color)
+        self.intensity = QtWidgets.QDoubleSpinBox()
+        self.intensity.setRange(0.0, 4.0)
+        self.intensity.setSingleStep(0.1)
+        form.addRow("Intensity", self.intensity)
+        layout.addWidget(light)
+
+        ground = QtWidgets.QGroupBox("Ground")
+        form = QtWidgets.QFormLayout(ground)
+        self.ground = QtWidgets.QCheckBox("A ground under the model that catches its shadows")
+        form.addRow(self.ground)
+        self.ground_size = QtWidgets.QDoubleSpinBox()
+        self.ground_size.setRange(1.0, 20.0)
+        self.ground_size.setSingleStep(0.5)
+        self.ground_size.setSuffix(" x the model")
+        form.addRow("Size", self.ground_size)
+        self.ground_color = _ColourButton()
+        form.addRow("Colour", self.ground_color)
+        self.ground_transparency = QtWidgets.QSpinBox()
+        self.ground_transparency.setRange(0, 100)
+        self.ground_transparency.setSuffix(" %")
+        form.addRow("Transparency", self.ground_transparency)
+        layout.addWidget(ground)
+
+        quality = QtWidgets.QGroupBox("Quality")
+        form = QtWidgets.QFormLayout(quality)
+        self.renderer = QtWidgets.QComboBox()
+        for key, text in _RENDERERS:
+            self.renderer.addItem(text, key)
+        form.addRow("Renderer", self.renderer)
+        layout.addWidget(quality)
+        layout.addStretch()
+
+    def loadSettings(self):
+        import ivshadow.freecad as shadows
+        settings = shadows.settings_from_preferences()
+        self.preset.setCurrentIndex(max(0, self.preset.findData(settings["preset"])))
+        self.light_color.set_colour(settings["light_color"])
+        self.intensity.setValue(settings["intensity"])
+        self.ground.setChecked(settings["ground"])
+        self.ground_size.setValue(settings["ground_size"])
+        self.ground_color.set_colour(settings["ground_color"])
+        self.ground_transparency.setValue(settings["ground_transparency"])
+        self.renderer.setCurrentIndex(max(0, self.renderer.findData(settings["renderer"])))
+
+    def saveSettings(self):
+        import ivshadow.freecad as shadows
+        settings = {
+            "preset": self.preset.currentData(),
+            "light_color": self.light_color.colour,
+            "intensity": self.intensity.value(),
+            "ground": self.ground.isChecked(),
+            "ground_size": self.ground_size.value(),
+            "ground_color": self.ground_color.colour,
+            "ground_transparency": self.ground_transparency.value(),
+            "renderer": self.renderer.currentData(),
+        }
+        shadows.save_preferences(settings)
+        # Views with shadows take the new settings at once.
+        shadows.refresh()
