@@ -183,6 +183,34 @@ def run():
           abs(grey(rgb(removed, cast)) - grey(lit_before)) < 10,
           before=lit_before, after=rgb(removed, cast))
 
+    # From below, the ground hides (the plane, a part, still shows): the picture matches
+    # FreeCAD's own from below at (170, -40, 0), beyond the plane (x <= 150) but on the ground.
+    shadows.disable(view)
+    view.viewBottom()
+    bottom_before = save(view, "freecad_bottom_before")
+    shadows.enable(view, light_direction=LIGHT)
+    bottom = save(view, "freecad_bottom")
+    beyond = pixel_of(view, (170, -40, 0))
+    check("ground hidden from below",
+          max(abs(a - b) for a, b in zip(rgb(bottom, beyond), rgb(bottom_before, beyond))) <= 3,
+          shadows=rgb(bottom, beyond), freecad=rgb(bottom_before, beyond))
+    view.viewIsometric()
+    view.fitAll()
+
+    # The command toggles the active view, and FreeCAD shows it in a toolbar of its own and in
+    # the View menu.
+    from PySide2 import QtWidgets
+    window = Gui.getMainWindow()
+    check("toolbar", any(bar.objectName() == "IvShadow" and bar.isVisible()
+                         for bar in window.findChildren(QtWidgets.QToolBar)))
+    check("View menu entry", any(action.objectName() == "IvShadow_Toggle"
+                                 for menu in window.findChildren(QtWidgets.QMenu)
+                                 if menu.objectName() == "&View" for action in menu.actions()))
+    Gui.runCommand("IvShadow_Toggle")
+    off_by_command = not shadows.is_enabled(view)
+    Gui.runCommand("IvShadow_Toggle")
+    check("command toggles", off_by_command and shadows.is_enabled(view))
+
     shadows.disable(view)
     check("disabled", not shadows.is_enabled(view))
     after = save(view, "freecad_after")
