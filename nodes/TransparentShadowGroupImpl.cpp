@@ -188,6 +188,7 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
     method = SoDeepShadowLight::MAP;
   // VOLUMES shares the capture and the shading lookup of RAYS; only what fills the
   // visibility differs (RayMethod).
+  idleFields_.used(*entry.light, group, method);
   map.rays = method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES;
   map.volumes = method == SoDeepShadowLight::VOLUMES;
   map.opacity = method == SoDeepShadowLight::OPACITY_MAP;
@@ -223,6 +224,7 @@ void TransparentShadowGroupImpl::buildMaps(SoGLRenderAction* action, Context& co
   std::optional<ViewCorners> view;
   for (std::size_t slot = 0; slot < lights; ++slot)
     buildSlot(action, context, slot, memoryBudget, view);
+  idleFields_.say();
   context.pass->keepSlots(int(lights));
   finishBuild(action, context, start);
   statistics_.casterTriangles = int(contents_.casters().triangleCount());
@@ -276,7 +278,10 @@ void TransparentShadowGroupImpl::refitToView(SoGLRenderAction* action, Context& 
     buildSlot(action, context, slot, mapMemoryBudget(context.softwareRenderer), view);
     rebuilt = true;
   }
-  if (rebuilt) finishBuild(action, context, start);
+  if (rebuilt) {
+    idleFields_.say();
+    finishBuild(action, context, start);
+  }
 }
 
 bool TransparentShadowGroupImpl::updateBounce(SoGLRenderAction* action, Context& context) {
@@ -407,14 +412,22 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   // fell on nothing below it (the floor around a nested group's glass stayed lit).
   if (ShadowGroupElement::capturing(state)) return false;
   // Traced, the group needs none of the GL path's programs or maps.
+  auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
   if (traced(action)) {
     contents_.update(action);
-    auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
+    const std::string why =
+        describeNode(owner_) + " traces its children (renderer " +
+        (group.renderer.getValue() == SoTransparentShadowGroup::TRACER ? "TRACER)"
+                                                                       : "AUTO uses TRACER here)");
+    for (const GroupContents::Light& light : contents_.lights())
+      IdleFields::traced(*light.light, group, why);
     TracerSettings settings;
     settings.movingResolution = resolveMovingResolution(group);
     settings.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
     if (tracer_.render(action, contents_, settings, statistics_)) return true;
   }
+  IdleFields::sayIfSet(group, "movingResolution",
+                       "GL draws the children (renderer RASTER), every frame in full");
   warnCoarseDepth(owner_, state);
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;

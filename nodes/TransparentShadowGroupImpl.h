@@ -12,6 +12,7 @@
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"
 #include "nodes/GroupTracer.h"
+#include "nodes/IdleFields.h"
 #include "nodes/MapMethod.h"
 #include "nodes/MapState.h"
 #include "nodes/PerContext.h"
@@ -119,6 +120,7 @@ class TransparentShadowGroupImpl {
   GroupBounce bounce_;
   GroupTracer tracer_;                     // renderer TRACER
   AutoTracerChoice autoTracer_;            // what renderer AUTO chooses
+  IdleFields idleFields_;                  // the methods this frame's lights used
   std::uint64_t bouncePlaced_ = 0;         // the mapsVersion the bounce's lights were placed for
   std::set<const SoLight*> methodLogged_;  // lights whose AUTO choice was said
 };

@@ -406,6 +406,47 @@ TEST(TracedGroup, AutoTracesOnASoftwareRasteriserAndSaysSo) {
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerFrames, software ? 1 : 0);
 }
 
+// A setting that cannot act says so, once per light and field, and only the ones the user set:
+// a traced group reads no light's method or map field; GL's path reads a map's fields for a
+// map alone (RAYS reads none, MAP no opacity map's slices), and movingResolution only traces.
+TEST(TracedGroup, FieldsThatCannotActSaySoOncePerLightAndField) {
+  const auto said = [](const Rendering& r, const std::string& field, const std::string& why) {
+    return r.messagesWith({"DeepShadowLight 'Lamp': " + field + " does nothing", why});
+  };
+  {
+    ShadowScene scene = traced(ShadowScene{});
+    scene.lightFields = "resolution 256 maxLayers 2";
+    Rendering r(scene, true);
+    r.frame();
+    r.lamp->location = SbVec3f(0.1f, 0.0f, 1.0f);
+    r.frame();
+    for (const char* field : {"method", "resolution", "maxLayers"})
+      EXPECT_EQ(said(r, field, "'Group' traces its children (renderer TRACER)"), 1) << field;
+    EXPECT_EQ(r.messagesWith({"does nothing"}), 3) << "fields left at their defaults are quiet";
+  }
+  {
+    ShadowScene scene{};  // RASTER
+    scene.method = "RAYS";
+    scene.lightFields = "resolution 256 filter NONE";
+    scene.groupFields = "movingResolution 0.25";
+    Rendering r(scene, true);
+    r.frame();
+    r.frame();
+    EXPECT_EQ(said(r, "resolution", "the light traces shadow rays (RAYS)"), 1);
+    EXPECT_EQ(said(r, "filter", "the light traces shadow rays (RAYS)"), 1);
+    EXPECT_EQ(r.messagesWith({"'Group': movingResolution does nothing", "renderer RASTER"}), 1);
+    EXPECT_EQ(r.messagesWith({"does nothing"}), 3);
+  }
+  {
+    ShadowScene scene{};
+    scene.lightFields = "resolution 256 maxLayers 2 slices 8";  // method MAP
+    Rendering r(scene, true);
+    r.frame();
+    EXPECT_EQ(said(r, "slices", "the light builds a deep shadow map (MAP)"), 1);
+    EXPECT_EQ(r.messagesWith({"does nothing"}), 1) << "a map reads resolution and maxLayers";
+  }
+}
+
 // The analytic picture where it is flat: pixels whose every neighbour within `radius` has the
 // same expected colour (within one step). A picture traced at a lower resolution and
 // stretched is exact there, whatever its filter; nearer an edge it blends both sides.
