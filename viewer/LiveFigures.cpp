@@ -97,9 +97,11 @@ QString LiveFigures::pathSummary() const {
 
 QString LiveFigures::text() const {
   QStringList lines;
-  QString frame = QString("frame %1  %2 fps").arg(ms(frameMs)).arg(framesPerSecond, 0, 'f', 1);
-  if (gpuFramePlausible()) frame += "  GL " + ms(gpuFrameMs);
-  lines << frame;
+  // Short lines: the first ones, which every page shows, fit the panel at its narrowest.
+  lines << QString("frame %1  %2 fps")
+               .arg(ms(frameMs))
+               .arg(framesPerSecond, 0, 'f', framesPerSecond < 10.0 ? 1 : 0);
+  if (gpuFramePlausible()) lines << "GL    " + ms(gpuFrameMs) + " (timer)";
   lines << "path  " + pathSummary();
   double passes = 0.0;
   if (rebuiltThisFrame && withinFrame(shadows.lastBuildMs, frameMs)) {
@@ -110,7 +112,7 @@ QString LiveFigures::text() const {
   }
   if (peeledThisFrame && withinFrame(peeling.peelMs, frameMs)) {
     lines << (peeling.passes > 0
-                  ? QString("peel  %1%2  %3 passes")
+                  ? QString("peel  %1%2  passes %3")
                         .arg(ms(peeling.peelMs), gpuBeside(peeling.gpuPeelMs, peeling.peelMs))
                         .arg(peeling.passes)
                   : QString("peel  %1  traced").arg(ms(peeling.peelMs)));
@@ -132,7 +134,7 @@ QString LiveFigures::text() const {
   } else if (shadows.tracerScenes > 0 &&
              std::any_of(groups.begin(), groups.end(), [](const Group& g) { return g.traced; })) {
     // A still frame of a traced group draws the picture it kept: nothing is traced.
-    lines << QString("trace kept picture  %1 refined").arg(shadows.tracerRefines);
+    lines << QString("trace kept (%1 refined)").arg(shadows.tracerRefines);
   }
   const bool raster =
       std::any_of(groups.begin(), groups.end(), [](const Group& g) { return !g.traced; });
@@ -160,16 +162,17 @@ QString LiveFigures::text() const {
       }
       total += light.bytes;
       ++maps;
-      const QString build = light.mapBuild == "FRAGMENT_LISTS" ? " lists"
-                            : light.mapBuild == "PEELING"      ? " peeled"
+      const QString build = light.mapBuild == "FRAGMENT_LISTS" ? ", lists"
+                            : light.mapBuild == "PEELING"      ? ", peeled"
                                                                : "";
-      lines << QString("%1: %2 %3 %4%5 %6")
+      lines << QString("%1: %2 %3 %4")
                    .arg(name, opacity ? "OPACITY" : "MAP")
                    .arg(light.resolution)
-                   .arg(light.coloured ? "colour" : "mono", build, mebibytes(light.bytes));
+                   .arg(light.coloured ? "colour" : "mono");
       QStringList faces;
       for (int layers : light.layersUsed) faces << QString::number(layers);
       lines << QString("  %1 %2").arg(opacity ? "slices" : "layers", faces.join(' '));
+      lines << "  " + mebibytes(light.bytes) + build;
     }
   }
   if (maps > 1) lines << "maps  " + mebibytes(total);

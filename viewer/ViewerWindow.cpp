@@ -399,9 +399,8 @@ std::string ViewerWindow::addDeepShadowLight(bool ground) {
   inspector_->setScene(scene_.get());
   setSceneModified(true);
   showMessage(added->isOfType(SoDeepShadowLight::getClassTypeId())
-                  ? "Added shadows: a shadow group and a deep shadow light; File > Save Scene As "
-                    "keeps them"
-                  : "Added shadows: the scene's lights cast; File > Save Scene As keeps them");
+                  ? "Added shadows and a light (Save Scene As keeps them)"
+                  : "Added shadows: the scene's lights cast (Save Scene As keeps them)");
   return {};
 }
 
