@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 namespace ivshadow {
 namespace {
@@ -245,6 +246,7 @@ int runVariants(const VariantsOptions& options) {
       return options.outputDir + "/." + variants[i].name + what;
     };
     bool stopping = false;
+    std::set<std::string> saidIdle;
     while ((next < todo.size() && !interrupted) || !children.empty()) {
       if (interrupted && !stopping) {
         // The terminal sent Ctrl-C to the renders too; a signal sent to this process alone
@@ -296,6 +298,22 @@ int runVariants(const VariantsOptions& options) {
       if (done.exitCode == 0) {
         std::ifstream in(scratch(i, ".stats.json"));
         outcome.stats = nlohmann::json::parse(in, nullptr, false);
+        // A setting that did nothing on the path this machine renders by: said once here for
+        // the sweep, and kept with the variant for its report.
+        if (outcome.stats.is_object()) {
+          std::ifstream log(scratch(i, ".log"));
+          nlohmann::json idle = nlohmann::json::array();
+          for (std::string line; std::getline(log, line);) {
+            const std::size_t at = line.find("): ");
+            if (line.find(" does nothing: ") == std::string::npos) continue;
+            const std::string what = at == std::string::npos ? line : line.substr(at + 3);
+            idle.push_back(what);
+            if (saidIdle.insert(what).second)
+              std::cerr << "ivshadow: warning: variant " << variants[i].name << ": " << what
+                        << '\n';
+          }
+          if (!idle.empty()) outcome.stats["idle_settings"] = idle;
+        }
       } else {
         const std::string message = readFirstLine(scratch(i, ".log"));
         const char* fallback =

@@ -169,8 +169,8 @@ void writeVariantsReports(const std::string& outputDir, const std::string& base,
        << htmlEscape(base) << "</title>\n<style>body{font-family:sans-serif}"
        << "figure{display:inline-block;margin:8px;width:260px;vertical-align:top}"
        << "img{width:256px;border:1px solid #999}figcaption{font-size:12px}"
-       << ".failed{color:#a00}</style></head><body>\n<h1>Variants of " << htmlEscape(base)
-       << "</h1>\n";
+       << ".failed{color:#a00}.idle{color:#a60}</style></head><body>\n<h1>Variants of "
+       << htmlEscape(base) << "</h1>\n";
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& variant = variants[i];
     const VariantManifest& outcome = outcomes[i];
@@ -183,10 +183,15 @@ void writeVariantsReports(const std::string& outputDir, const std::string& base,
            << "\" alt=\"" << htmlEscape(variant.name) << "\"></a>";
     html << "<figcaption><b>" << htmlEscape(variant.name) << "</b><br>"
          << htmlEscape(assignmentsText(variant)) << "<br>";
-    if (ok)
-      html << htmlEscape(captionFigures(outcome.stats));
-    else
+    if (!ok) {
       html << "<span class=\"failed\">" << htmlEscape(outcome.error) << "</span>";
+    } else {
+      html << htmlEscape(captionFigures(outcome.stats));
+      // The settings that did nothing on the path this variant rendered by.
+      if (outcome.stats.contains("idle_settings"))
+        for (const nlohmann::json& idle : outcome.stats.at("idle_settings"))
+          html << "<br><span class=\"idle\">" << htmlEscape(idle.get<std::string>()) << "</span>";
+    }
     html << "</figcaption></figure>\n";
   }
   html << "</body></html>\n";

@@ -40,12 +40,19 @@ constexpr FieldUse kFieldUses[] = {
     {"farRadius", kMaps},
 };
 
-const char* methodNames(unsigned methods) {
-  if (methods == bit(SoDeepShadowLight::RAYS)) return "traces shadow rays (RAYS)";
-  if (methods == bit(SoDeepShadowLight::VOLUMES)) return "draws shadow volumes (VOLUMES)";
-  if (methods == bit(SoDeepShadowLight::MAP)) return "builds a deep shadow map (MAP)";
-  if (methods == bit(SoDeepShadowLight::OPACITY_MAP)) return "builds an opacity map (OPACITY_MAP)";
-  return "casts by several methods";
+// What the lights did this frame, as the verb phrase of a sentence whose subject is one light
+// or several.
+std::string methodNames(unsigned methods, bool several) {
+  const char* s = several ? "" : "s";
+  if (methods == bit(SoDeepShadowLight::RAYS))
+    return std::string("trace") + s + " shadow rays (RAYS)";
+  if (methods == bit(SoDeepShadowLight::VOLUMES))
+    return std::string("draw") + s + " shadow volumes (VOLUMES)";
+  if (methods == bit(SoDeepShadowLight::MAP))
+    return std::string("build") + s + " a deep shadow map (MAP)";
+  if (methods == bit(SoDeepShadowLight::OPACITY_MAP))
+    return std::string("build") + s + " an opacity map (OPACITY_MAP)";
+  return std::string("cast") + s + " by several methods";
 }
 
 }  // namespace
@@ -67,7 +74,7 @@ void IdleFields::say() {
     const bool group = fields->isOfType(SoTransparentShadowGroup::getClassTypeId());
     const std::string why =
         std::string(group ? "the lights that cast with the group's fields " : "the light ") +
-        methodNames(methods) + ", which does not read it";
+        methodNames(methods, group) + ", which does not read it";
     for (const FieldUse& use : kFieldUses)
       if ((use.methods & methods) == 0) sayIfSet(*fields, use.name, why);
   }

@@ -401,8 +401,9 @@ TEST(TracedGroup, AutoTracesOnASoftwareRasteriserAndSaysSo) {
   r.frame();
   r.expectAnalytic(scene, "renderer AUTO");
   const bool software = GlCapabilities::queryCurrent().isSoftwareRenderer();
-  EXPECT_EQ(r.messagesWith({software ? "renderer AUTO uses TRACER" : "renderer AUTO uses RASTER"}),
-            1);
+  EXPECT_EQ(
+      r.messagesWith({software ? "renderer AUTO uses TRACER on" : "renderer AUTO uses RASTER on"}),
+      1);
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerFrames, software ? 1 : 0);
 }
 

@@ -1,4 +1,6 @@
 #include "headless/OffscreenRenderer.h"
+#include "image/ImageComparison.h"
+#include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
@@ -142,7 +144,21 @@ TEST(SceneLibraryVariants, TheDemoVariantsRender) {
                  test::scenesDir() + "/coloured_shadows.variants", "-o", dir, "--size", "96x72",
                  "--frames", "1", "--jobs", "2"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  EXPECT_NE(result.out.find("rendered 12 of 12 variants"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("rendered 10 of 10 variants"), std::string::npos) << result.out;
+  // Each varies what acts on the path it renders by: no two pictures are the same, and no
+  // setting said it did nothing.
+  EXPECT_EQ(result.err.find("does nothing"), std::string::npos) << result.err;
+  std::vector<std::pair<std::string, Image>> pictures;
+  for (const std::string& file : test::filesIn(dir))
+    if (file.size() > 4 && file.compare(file.size() - 4, 4, ".png") == 0)
+      pictures.emplace_back(file, readPng(dir + "/" + file));
+  ASSERT_EQ(pictures.size(), 10u);
+  for (std::size_t i = 0; i < pictures.size(); ++i)
+    for (std::size_t j = i + 1; j < pictures.size(); ++j)
+      EXPECT_GT(
+          ImageComparison::compare(pictures[i].second, pictures[j].second, "a", "b").all.maxError,
+          0)
+          << pictures[i].first << " and " << pictures[j].first << " are the same picture";
 }
 
 }  // namespace

@@ -28,16 +28,23 @@ constexpr int kWidth = 160, kHeight = 120;
 constexpr int kFrames = 3;  // per graph: the first builds or traces, the others reuse
 
 // The bundled demo (coloured panes, a glass sphere, a textured tile, peeled transparency)
-// with its deep shadow light's method and a map small enough for llvmpipe.
+// on GL's path, with its deep shadow light's method and a map small enough for llvmpipe.
 std::string demoScene(const std::string& method) {
   std::ifstream in(test::scenesDir() + "/coloured_shadows.iv");
   std::stringstream text;
   text << in.rdbuf();
   std::string scene = text.str();
-  const std::string from = "resolution 1024";
-  const std::size_t at = scene.find(from);
-  if (at == std::string::npos) throw std::runtime_error("coloured_shadows.iv changed");
-  scene.replace(at, from.size(), "resolution 256 method " + method);
+  // GL's path (the default, AUTO, traces on a software rasteriser); a map's size for a map.
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"DEF Scene TransparentShadowGroup {",
+                                            "DEF Scene TransparentShadowGroup { renderer RASTER"},
+        {"intensity 0.95",
+         "intensity 0.95 method " + method +
+             (method == "MAP" ? std::string(" resolution 256") : std::string())}}) {
+    const std::size_t at = scene.find(from);
+    if (at == std::string::npos) throw std::runtime_error("coloured_shadows.iv changed");
+    scene.replace(at, from.size(), to);
+  }
   return scene;
 }
 

@@ -22,7 +22,7 @@ std::string sceneWith(const std::string& shape) {
          "  PerspectiveCamera { position 0 0 8 heightAngle 0.785398 }\n"
          "  DEF Scene TransparentShadowGroup { renderer RASTER\n"
          "    transparency COIN_BLENDING\n"
-         "    DEF Lamp DeepShadowLight { location 0 0 3 resolution 256 }\n"
+         "    DEF Lamp DeepShadowLight { location 0 0 3 }\n"
          "    Separator {\n"
          "      Translation { translation -0.9 -0.4 1.5 }\n"
          "      Scale { scaleFactor 0.15 0.15 0.15 }\n"

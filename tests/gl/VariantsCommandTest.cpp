@@ -241,6 +241,32 @@ std::vector<std::string> csvFields(const std::string& line) {
   return fields;
 }
 
+// A setting that does nothing on the path a variant renders by (a map's resolution in a group
+// that traces) is said once for the sweep, naming the variant, and shown in its report.
+TEST(VariantsCommand, ASettingThatDoesNothingIsSaidOnceAndReported) {
+  const std::string dir = test::outputDir() + "/out";
+  const std::string file = test::outputDir() + "/idle.variants";
+  std::ofstream(file) << "sweep idle Lamp.resolution = 128 | 256\n  Scene.renderer = TRACER\n"
+                         "variant acting\n  Lamp.intensity = 0.5\n";
+  const test::ProcessResult result =
+      test::run({test::ivshadowExe(), "variants", test::scenesDir() + "/coloured_shadows.iv", file,
+                 "-o", dir, "--size", "64x48", "--frames", "1", "--jobs", "2"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const std::string warning =
+      "DeepShadowLight 'Lamp': resolution does nothing: TransparentShadowGroup 'Scene' traces "
+      "its children (renderer TRACER)";
+  std::size_t said = 0;
+  for (const std::string& line : test::lines(result.err))
+    if (line.find(warning) != std::string::npos) ++said;
+  EXPECT_EQ(said, 1u) << result.err;
+  const std::string html = readText(dir + "/index.html");
+  std::size_t shown = 0;
+  for (std::size_t at = html.find(warning); at != std::string::npos;
+       at = html.find(warning, at + 1))
+    ++shown;
+  EXPECT_EQ(shown, 2u) << "under each of the two variants that set it";
+}
+
 TEST(VariantsCommand, ACrossedSweepRendersTheGridWithColumnsOfEachMethod) {
   const std::string dir = test::outputDir() + "/out";
   const std::string file = test::outputDir() + "/grid.variants";

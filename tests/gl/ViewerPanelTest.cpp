@@ -256,7 +256,7 @@ TEST(ViewerPanel, FiguresNameWhatTheGlPathDidThisFrame) {
   // The still frame drew with the map the first frame built: the map is listed, its build
   // time is not (it was not built this frame), and nothing was traced.
   EXPECT_EQ(figures["this_frame"]["map_build"], false);
-  EXPECT_NE(text.find("Lamp: MAP 1024"), std::string::npos) << text;
+  EXPECT_NE(text.find("Lamp: MAP 512"), std::string::npos) << text;
   for (const char* stale : {"map ", "trace ", "rays "})
     EXPECT_EQ(text.find(stale), std::string::npos) << stale << " in\n" << text;
   EXPECT_NE(text.find("shade "), std::string::npos) << text;

@@ -106,12 +106,13 @@ def main():
         fail("the example did not show the refused assignment: %s" % ran.stdout)
     sys.path.insert(0, os.path.dirname(example))
     from variants import VARIANTS
-    for name, colour, layers in VARIANTS:
+    for name, colour, transparency in VARIANTS:
         mine = os.path.join(out, name + ".png")
         cli = os.path.join(work, "cli-" + name + ".png")
         subprocess.run([ivshadow_exe, "render", pane, "-o", cli, "--size", "160x120",
                         "--frames", "1", "--set", "PaneMaterial.diffuseColor=" + colour,
-                        "--set", "Lamp.maxLayers=%d" % layers], check=True, capture_output=True)
+                        "--set", "PaneMaterial.transparency=%g" % transparency], check=True,
+                       capture_output=True)
         difference = largest_difference(ivshadow_exe, cli, mine, work)
         if difference != 0:
             fail("%s: the pivy render differs from the CLI's by up to %d steps" %
@@ -120,7 +121,7 @@ def main():
 
     # render() returns the --stats; of a path, and with assignments.
     stats = ivshadow.render(coloured, os.path.join(work, "path.png"), size=(96, 72),
-                            sets=["Lamp.maxLayers=2"])
+                            sets=["Lamp.intensity=0.8"])
     if "frame_ms_median" not in stats or png_size(os.path.join(work, "path.png")) != (96, 72):
         fail("render() of a path: %r" % stats)
     # reference() of a pivy scene graph.
