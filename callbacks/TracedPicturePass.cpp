@@ -161,6 +161,12 @@ std::string TracedPicturePass::upload(int width, int height, const float* rgba,
   return {};
 }
 
+void TracedPicturePass::drawDepth(const std::array<int, 4>& viewport) const {
+  GlStateScope scope(GlStateScope::kColourMask, {});
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  draw(viewport);
+}
+
 void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   GlStateScope scope(GlStateScope::kProgram | GlStateScope::kVertexArray |
                          GlStateScope::kBlendFunction | GlStateScope::kDepth |

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "callbacks/GlHandles.h"
-#include "ivshadow/Export.h"
 #include "callbacks/GlProgram.h"
+#include "ivshadow/Export.h"
 #include "scene/ShadowTypes.h"
 
 #include <array>
@@ -40,6 +40,9 @@ class IVSHADOW_INTERNAL TracedPicturePass {
   // while the scene moves) is stretched over it: its depth the nearest pixel's, its colour
   // interpolated among the pixels at that depth (traced_picture.frag).
   void draw(const std::array<int, 4>& viewport) const;
+  // The picture's depth alone, written again over `viewport` (colours untouched): what the
+  // framebuffer's depth held after draw(), for GL to test against once more.
+  void drawDepth(const std::array<int, 4>& viewport) const;
 
  private:
   TracedPicturePass() = default;

@@ -268,8 +268,21 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   context->pass->draw(viewport);
   // GL is restored; Coin must not trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
-  if (!scene_->untracedPaths().empty()) drawUntraced(action);
+  if (!scene_->untracedPaths().empty()) {
+    drawingUntraced_ = context;
+    untracedViewport_ = viewport;
+    drawUntraced(action);
+    drawingUntraced_ = nullptr;
+  }
   return true;
+}
+
+void GroupTracer::restoreDepth(SoGLRenderAction* action) {
+  if (drawingUntraced_ == nullptr) return;
+  drawingUntraced_->pass->drawDepth(untracedViewport_);
+  drawingUntraced_ = nullptr;
+  SoState* state = action->getState();
+  SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
 }
 
 void GroupTracer::drawUntraced(SoGLRenderAction* action) {

@@ -52,6 +52,12 @@ class GroupTracer {
   // GL does).
   bool render(SoGLRenderAction* action, const GroupContents& contents,
               const TracerSettings& settings, DeepShadowStatistics& statistics);
+  // Called by the owner when the render action that draws its untraced shapes reaches it:
+  // writes the picture's depth again (once), since the nodes above the owner that this action
+  // traverses again to set the state may have cleared the depth buffer (FreeCAD's saveImage
+  // clears it in a callback after its background), and the shapes must be hidden by the
+  // picture's surfaces.
+  void restoreDepth(SoGLRenderAction* action);
 
  private:
   struct Context {
@@ -88,6 +94,9 @@ class GroupTracer {
 
   SoSeparator* owner_;
   const char* setting_;
+  // While drawUntraced runs: the picture to write the depth of again, and where.
+  const Context* drawingUntraced_ = nullptr;
+  std::array<int, 4> untracedViewport_{};
   std::unique_ptr<SceneTracer> scene_;
   std::uint64_t sceneVersion_ = 0;   // counts the reads
   std::uint64_t shapesVersion_ = 0;  // counts the reads of the shapes (not of lights alone)

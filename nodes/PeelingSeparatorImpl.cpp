@@ -70,6 +70,7 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
       statistics_.passes = 0;
       statistics_.peelMs = statistics_.gpuPeelMs = 0.0;
     }
+    tracer_.restoreDepth(action);
     renderPlainly(action, inPath);
     return;
   }

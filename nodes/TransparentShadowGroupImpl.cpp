@@ -397,7 +397,10 @@ bool TransparentShadowGroupImpl::traced(SoGLRenderAction* action) {
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
   // A traced group draws the shapes it does not trace through paths that may run through this
   // group, or are its own: as a separator.
-  if (TracerActivity::active(TracerActivity::DrawingUntraced)) return false;
+  if (TracerActivity::active(TracerActivity::DrawingUntraced)) {
+    tracer_.restoreDepth(action);
+    return false;
+  }
   SoState* state = action->getState();
   // Inside a peeling (an enclosing peeling group's or a SoPeelingSeparator's) every pass has
   // its variant of the enclosing shading bound; this group's own programs would write colours

@@ -62,21 +62,10 @@ def main():
         print("FAIL: the macro did not finish; FreeCAD's output ends:")
         with open(log) as f:
             print(f.read()[-3000:])
-    # Known: the CPU tracer's picture does not hide FreeCAD's edges behind the parts in
-    # saveImage (issue 36, "One scene, one picture"). Where AUTO picked the tracer (it says so
-    # once, in FreeCAD's output) that check is expected to fail, and its passing is reported
-    # as a failure, so that the expectation goes when the issue is fixed.
-    with open(log) as f:
-        traced = "renderer AUTO uses TRACER" in f.read()
-    known = {"no hidden edge through the box"} if traced else set()
     failed = 0
     for entry in checks:
-        expected = entry["name"] not in known
-        if entry["passed"] == expected:
-            verdict = "ok" if expected else "known failure (issue 36)"
-        else:
-            verdict = "FAIL" if expected else "FAIL (passes now: drop it from the known failures)"
-            failed += 1
+        verdict = "ok" if entry["passed"] else "FAIL"
+        failed += 0 if entry["passed"] else 1
         print("%s: %s %s" % (verdict, entry["name"], json.dumps(entry["measured"])))
     print("pictures in %s" % work)
     finished = bool(checks) and checks[-1]["name"] == "macro finished"

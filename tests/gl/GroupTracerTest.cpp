@@ -13,7 +13,9 @@
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoPath.h>
+#include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCallback.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoLight.h>
 #include <Inventor/nodes/SoMaterial.h>
@@ -22,6 +24,7 @@
 #include <Inventor/nodes/SoTranslation.h>
 #include <Inventor/sensors/SoNodeSensor.h>
 #include <Inventor/sensors/SoSensorManager.h>
+#include <epoxy/gl.h>
 
 #include <gtest/gtest.h>
 
@@ -405,6 +408,47 @@ TEST(TracedGroup, AutoTracesOnASoftwareRasteriserAndSaysSo) {
       r.messagesWith({software ? "renderer AUTO uses TRACER on" : "renderer AUTO uses RASTER on"}),
       1);
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerFrames, software ? 1 : 0);
+}
+
+// The shapes the tracer leaves to GL are drawn by a second render action, which traverses the
+// state nodes above the group again: an application's callback there that clears the depth
+// buffer (FreeCAD's saveImage clears it after its background) must not let a line behind the
+// traced square show through it.
+TEST(TracedGroup, ALineBehindATracedSurfaceStaysHiddenWhenACallbackAboveClearsTheDepth) {
+  SoSeparator* root = readIv(
+      "#Inventor V2.1 ascii\nSeparator {\n"
+      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+      "  TransparentShadowGroup { renderer TRACER\n"
+      "    LightModel { model BASE_COLOR }\n"
+      "    BaseColor { rgb 0 0 1 }\n"
+      "    Coordinate3 { point [ -0.5 -0.5 0.5, 0.5 -0.5 0.5, 0.5 0.5 0.5, -0.5 0.5 0.5 ] }\n"
+      "    FaceSet { numVertices 4 }\n"
+      "    BaseColor { rgb 1 1 0 }\n"
+      "    Coordinate3 { point [ -1 0 0, 1 0 0 ] }\n"
+      "    LineSet { numVertices 2 }\n"
+      "  }\n}\n");
+  auto* clear = new SoCallback;
+  clear->setCallback(
+      [](void*, SoAction* action) {
+        if (action->isOfType(SoGLRenderAction::getClassTypeId())) glClear(GL_DEPTH_BUFFER_BIT);
+      },
+      nullptr);
+  root->insertChild(clear, 0);
+  std::string error;
+  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  renderer->render(root);
+  const Image image = renderer->read();
+  root->unref();
+  // 100 pixels per unit: the line crosses the middle row; the square covers x in -0.5 .. 0.5.
+  const int middle = ShadowScene::kSize / 2;
+  for (int x : {middle - 30, middle, middle + 30}) {
+    const std::uint8_t* behind = image.pixel(x, middle);
+    EXPECT_EQ(int(behind[0]), 0) << "the line shows through the square at x = " << x;
+    EXPECT_EQ(int(behind[2]), 255) << "x = " << x;
+  }
+  // Beside the square the line is drawn.
+  EXPECT_EQ(int(image.pixel(middle + 80, middle)[0]), 255) << "no line beside the square";
 }
 
 // A setting that cannot act says so, once per light and field, and only the ones the user set:
