@@ -1,6 +1,7 @@
 #include "scene/SceneLoader.h"
 
 #include "scene/CoinMessageCapture.h"
+#include "scene/ForeignNodes.h"
 #include "scene/InputError.h"
 #include "scene/SceneFileCheck.h"
 #include "scene/ShapeValidation.h"
@@ -55,6 +56,7 @@ LoadedScene loadScene(const std::string& path) {
   }
 
   checkSceneFile(path);
+  registerForeignNodes();
   CoinMessageCapture capture;
   SoInput input;
   if (!input.openFile(path.c_str(), TRUE)) {
@@ -84,6 +86,8 @@ LoadedScene loadScene(const std::string& path) {
   for (const CoinMessageCapture::Message& message : capture.messages()) {
     scene.warnings.push_back(locationPrefix(path, message.line) + "warning: " + message.text);
   }
+  for (std::string& warning : unknownNodeWarnings(root, path))
+    scene.warnings.push_back(std::move(warning));
   for (std::string& warning : removeDefectiveShapes(root, path))
     scene.warnings.push_back(std::move(warning));
   return scene;

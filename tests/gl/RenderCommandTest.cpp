@@ -200,6 +200,54 @@ TEST(RenderCommand, DualPeelingStopsEarlyOnEveryFrame) {
   EXPECT_LE(stats.at("peel_passes").get<int>(), 4) << "the last of three frames";
 }
 
+// A FreeCAD export (its node types, their fields declared) wrapped in a shadow group renders as
+// the same scene written with the Coin classes FreeCAD's derive from, on the default path and
+// on GL's: the model, its shadows and its edges, where Coin alone would draw nothing of it.
+TEST(RenderCommand, AFreeCadExportRendersAsItsCoinTwin) {
+  const std::string dir = test::outputDir();
+  const auto scene = [](bool freecad, const std::string& renderer) {
+    const std::string root =
+        freecad ? "SoFCSelectionRoot {\n fields [ SFEnum selectionStyle ]\n" : "Separator {\n";
+    const std::string faces = freecad ? "SoBrepFaceSet { fields [ MFInt32 coordIndex, "
+                                        "MFInt32 partIndex ] partIndex [ 1 ] "
+                                      : "IndexedFaceSet { ";
+    const std::string edges =
+        freecad ? "SoBrepEdgeSet { fields [ MFInt32 coordIndex ] " : "IndexedLineSet { ";
+    return "#Inventor V2.1 ascii\nSeparator {\n"
+           "  OrthographicCamera { position 0 0 5 height 2.4 nearDistance 1 farDistance 10 }\n"
+           "  TransparentShadowGroup { renderer " +
+           renderer +
+           "\n    DeepShadowLight { location 0.3 0.2 2 }\n"
+           "    Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] }\n"
+           "    FaceSet { numVertices 4 }\n  " +
+           root +
+           "    Material { diffuseColor 1 0 0 transparency 0.5 }\n"
+           "    Coordinate3 { point [ -0.4 -0.4 0.6, 0.4 -0.4 0.6, 0.4 0.4 0.6, -0.4 0.4 0.6 ] }\n"
+           "    " +
+           faces +
+           "coordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ] }\n"
+           "    Material { diffuseColor 0 0 0 transparency 0 }\n    " +
+           edges + "coordIndex [ 0, 1, 2, 3, 0, -1 ] }\n  }\n  }\n}\n";
+  };
+  for (const std::string renderer : {"AUTO", "RASTER"}) {
+    std::vector<Image> pictures;
+    for (bool freecad : {true, false}) {
+      const std::string name = std::string(freecad ? "freecad_" : "coin_") + renderer;
+      const std::string file = test::writeOutputFile(name + ".iv", scene(freecad, renderer));
+      const test::ProcessResult result = run({test::ivshadowExe(), "render", file, "-o",
+                                              dir + "/" + name + ".png", "--size", "120x120"});
+      ASSERT_EQ(result.exitCode, 0) << result.err;
+      EXPECT_EQ(result.err.find("known neither"), std::string::npos) << result.err;
+      pictures.push_back(readPng(dir + "/" + name + ".png"));
+    }
+    EXPECT_EQ(ImageComparison::compare(pictures[0], pictures[1], "export", "twin").all.maxError, 0)
+        << renderer;
+    // The pane is drawn: red over the floor at the middle.
+    const std::uint8_t* middle = pictures[0].pixel(60, 60);
+    EXPECT_GT(int(middle[0]), int(middle[1]) + 40) << renderer;
+  }
+}
+
 TEST(RenderCommand, WithoutTheGlFeaturesTheGroupWarnsOnceAndRendersPlainly) {
   const std::string dir = test::outputDir();
   // Mesa then offers a 3.3 context: no clip control, no direct state access.

@@ -3,7 +3,11 @@
 #include "scene/SceneLoader.h"
 #include "tests/support/TestSupport.h"
 
+#include <Inventor/SbString.h>
 #include <Inventor/SoDB.h>
+#include <Inventor/fields/SoField.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoIndexedLineSet.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
@@ -60,6 +64,59 @@ INSTANTIATE_TEST_SUITE_P(EveryFile, MalformedScene, ::testing::ValuesIn(malforme
                            }
                            return name;
                          });
+
+// FreeCAD's exports name its own node types, declaring their fields: each reads as the Coin
+// class it derives from, with the fields the file gave it, so that the model is drawn; a type
+// neither Coin nor the plugin knows is named once, since it draws nothing, nor what it holds.
+TEST(SceneLoader, FreeCadsNodeTypesReadAsTheirCoinBaseClassesAndUnknownOnesAreNamed) {
+  init();
+  const std::string path = test::writeOutputFile(
+      "freecad_export.iv",
+      "#Inventor V2.1 ascii\n\nSeparator {\n"
+      "  DEF Root SoFCSelectionRoot {\n"
+      "    fields [ SFEnum selectionStyle ]\n"
+      "    selectionStyle Full\n"
+      "    Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n"
+      "    DEF Faces SoBrepFaceSet {\n"
+      "      fields [ SFNode vertexProperty, MFInt32 coordIndex, MFInt32 partIndex ]\n"
+      "      coordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ]\n"
+      "      partIndex [ 2 ]\n"
+      "    }\n"
+      "    SoFCSelectionRoot {\n"
+      "      fields [ SFEnum selectionStyle, SFBool onlyHere ]\n"
+      "      onlyHere TRUE\n"
+      "      DEF Edges SoBrepEdgeSet { fields [ MFInt32 coordIndex ] coordIndex [ 0, 1, 2, -1 ] }\n"
+      "    }\n"
+      "  }\n"
+      "  SoNotAType { fields [ SFFloat x ] x 1 Cube { } }\n"
+      "  SoNotAType { fields [ SFFloat x ] x 2 }\n"
+      "}\n");
+  const LoadedScene scene = loadScene(path);
+  SoNode* root = SoNode::getByName("Root");
+  ASSERT_NE(root, nullptr);
+  EXPECT_TRUE(root->isOfType(SoSeparator::getClassTypeId()));
+  EXPECT_EQ(static_cast<SoSeparator*>(root)->getNumChildren(), 3);
+  auto* faces = static_cast<SoIndexedFaceSet*>(SoNode::getByName("Faces"));
+  ASSERT_NE(faces, nullptr);
+  ASSERT_TRUE(faces->isOfType(SoIndexedFaceSet::getClassTypeId()));
+  const std::vector<int> indices = {0, 1, 2, -1, 0, 2, 3, -1};
+  ASSERT_EQ(faces->coordIndex.getNum(), int(indices.size()));
+  for (int i = 0; i < int(indices.size()); ++i) EXPECT_EQ(faces->coordIndex[i], indices[i]);
+  // The fields only FreeCAD's class has are kept on the node that declared them.
+  SbString value;
+  ASSERT_NE(faces->getField("partIndex"), nullptr);
+  faces->getField("partIndex")->get(value);
+  EXPECT_EQ(std::string(value.getString()), "2");
+  EXPECT_EQ(root->getField("onlyHere"), nullptr) << "a field declared by another node";
+  SoNode* edges = SoNode::getByName("Edges");
+  ASSERT_NE(edges, nullptr);
+  EXPECT_TRUE(edges->isOfType(SoIndexedLineSet::getClassTypeId()));
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0], path +
+                                   ": warning: node type 'SoNotAType' is known neither to "
+                                   "Coin nor to the plugin: it is not drawn, nor anything "
+                                   "inside it");
+}
 
 TEST(SceneLoader, MissingFileAndDirectoryAreNamed) {
   init();
