@@ -1,5 +1,6 @@
 #include "scene/ForeignNodes.h"
 
+#include <Inventor/SoDB.h>
 #include <Inventor/SoOutput.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/SoType.h>
@@ -130,6 +131,7 @@ std::string writtenTypeName(SoNode* node) {
 
 void registerForeignNodes() {
   static const bool registered = [] {
+    SoDB::init();  // a loader may be the first to use Coin; init is idempotent
     registerAll(std::make_index_sequence<kForeign.size()>());
     return true;
   }();
