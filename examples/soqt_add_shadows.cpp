@@ -1,6 +1,7 @@
 // An existing SoQt application — read a file, show it in an examiner viewer — that gains
-// transparent, coloured shadows with the few lines marked "plugin": one init() call, and the
-// application's root wrapped in a SoTransparentShadowGroup with a SoDeepShadowLight.
+// transparent, coloured shadows with the few lines marked "plugin": one init() call, the
+// application's root wrapped in a SoTransparentShadowGroup with a SoDeepShadowLight, and the
+// viewer's headlight turned off.
 // Usage: soqt_add_shadows SCENE.iv [--quit-after-ms N]
 #include <ivshadow/IvShadowInit.h>              // plugin
 #include <ivshadow/SoDeepShadowLight.h>         // plugin
@@ -46,6 +47,9 @@ int main(int argc, char** argv) {
 
   auto* viewer = new SoQtExaminerViewer(window);
   viewer->setSceneGraph(shadows);
+  // plugin: the viewer's headlight lies outside the group, so it lights without casting and
+  // would wash the shadows out to mid-grey; the deep shadow light above lights the scene.
+  viewer->setHeadlight(FALSE);
   viewer->show();
   SoQt::show(window);
   if (argc == 4 && std::string(argv[2]) == "--quit-after-ms")
