@@ -34,7 +34,7 @@ echo "demo" >&2
   for run in 1 2 3; do
     start=$EPOCHREALTIME
     MESA_SHADER_CACHE_DISABLE=true "$build/bin/ivshadow" render iv_scenes/coloured_shadows.iv \
-      -o "$tmp/demo.png" --size 800x600 --set Scene.renderer=AUTO >/dev/null
+      -o "$tmp/demo.png" --size 800x600 >/dev/null
     awk -v run="$run" -v start="$start" -v end="$EPOCHREALTIME" 'BEGIN { print run, end - start }'
   done
 } >"$out/demo.txt"
