@@ -70,7 +70,7 @@ struct Expectation {
 };
 
 // The floor of a model without an entry below. Measured at 160 x 120 on llvmpipe
-// (docs/CORPUS.md, every run the same): 59 of the 96 readable models are identical to the
+// (docs/CORPUS.md, every run the same): 57 of the 96 readable models are identical to the
 // reference, and the worst model without an entry, vehicles/spacestation.iv, is at 44.1 dB
 // (a few silhouette pixels where the rasteriser and the ray tracer find different surfaces).
 // 43 dB is an RMSE of 1.8/255 over the picture.
@@ -84,6 +84,10 @@ const std::map<std::string, Expectation>& expectations() {
       // 32.8 dB: Text2 labels, which the group's shading program colours nearly black under
       // RASTER, where the reference draws them as Coin does (docs/KNOWN_ISSUES.md).
       {"simple/axis.iv", {31.5, "Text2 coloured by the group's program under RASTER"}},
+      // 31.3 dB, the same cause: its Text2 strings. (The reference matched before only because
+      // its GL overlay drew the group by GL's path too, the scope that should have made it a
+      // plain separator being the executable's copy.)
+      {"simple/text.iv", {30.0, "Text2 coloured by the group's program under RASTER"}},
       // 30.8 dB: the logo's strips lie in the case's faces: the two renderers pick different
       // surfaces where they coincide.
       {"sgi/indigo.iv", {29.5, "coplanar decal strips"}},
@@ -250,9 +254,12 @@ void checkModel(const std::string& model) {
 
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
+  // GL's path: the traced group (the default here, AUTO) is the reference's own code, so only
+  // GL's picture is an answer found apart from it (they share the reading of the scene alone).
   const int renderPid =
-      test::startProcess({test::ivshadowExe(), "render", wrapped, "-o", gl, "--size", kSize}, {},
-                         dir + "/render.out", dir + "/render.err");
+      test::startProcess({test::ivshadowExe(), "render", wrapped, "-o", gl, "--size", kSize,
+                          "--set", "ShadowGroup.renderer=RASTER"},
+                         {}, dir + "/render.out", dir + "/render.err");
   const int referencePid = test::startProcess({test::ivshadowExe(), "reference", wrapped, "-o",
                                                reference, "--size", kSize, "--threads", "1"},
                                               {}, dir + "/reference.out", dir + "/reference.err");
