@@ -20,7 +20,8 @@ std::string opaqueScene(bool coin, bool casting) {
      << (coin ? "  ShadowGroup { quality 1 precision 1\n"
                 "    ShadowSpotLight { location 0.3 0.2 4 direction 0 0 -1 cutOffAngle 0.9"
                 " dropOffRate 0 }\n"
-              : "  TransparentShadowGroup {\n    DeepShadowLight { location 0.3 0.2 4 }\n")
+              : "  TransparentShadowGroup { renderer RASTER\n"
+                "    DeepShadowLight { location 0.3 0.2 4 }\n")
      << "    Material { diffuseColor 0.9 0.9 0.9 }\n"
      << "    Coordinate3 { point [ -3 -3 0, 3 -3 0, 3 3 0, -3 3 0 ] }\n"
      << "    FaceSet { numVertices 4 }\n"

@@ -155,8 +155,8 @@ std::string scaledScene(double s, const char* method) {
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
      << "  OrthographicCamera { position 0 0 " << 5 * s << " nearDistance " << s << " farDistance "
      << 10 * s << " height " << 2.4 * s << " }\n"
-     << "  TransparentShadowGroup {\n    DeepShadowLight { location 0 0 " << s << " method "
-     << method << " }\n"
+     << "  TransparentShadowGroup { renderer RASTER\n    DeepShadowLight { location 0 0 " << s
+     << " method " << method << " }\n"
      << "    Separator { Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
      << "      Coordinate3 { point [ " << -s << ' ' << s << " 0, " << s << ' ' << s << " 0, " << -s
      << ' ' << -s << " 0, " << s << ' ' << -s << " 0 ] }\n"

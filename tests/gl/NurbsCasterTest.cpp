@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace ivshadow {
 namespace {
@@ -48,12 +50,21 @@ constexpr double kTolerance = 1.0;
 // display, crashed on (SGI's teapot and glider samples). Headless runs now give Coin EGL
 // contexts (headless/CoinOffscreenContexts.h): the patch is drawn and casts its shadow.
 TEST(NurbsCaster, RenderShowsTheAnalyticShadowOfANurbsPatchWithEachMethod) {
-  for (const std::string method : {"RAYS", "MAP"}) {
+  // GL's path with each of the light's methods, and the default (traced here).
+  for (const std::string method : {"RAYS", "MAP", "default"}) {
     SCOPED_TRACE(method);
     const std::string out = test::outputDir() + "/" + method + ".png";
-    const test::ProcessResult result =
-        test::run({test::ivshadowExe(), "render", test::scenesDir() + "/nurbs_caster.iv", "-o", out,
-                   "--size", "400x400", "--set", "Lamp.method=" + method});
+    std::vector<std::string> command = {test::ivshadowExe(),
+                                        "render",
+                                        test::scenesDir() + "/nurbs_caster.iv",
+                                        "-o",
+                                        out,
+                                        "--size",
+                                        "400x400"};
+    if (method != "default")
+      command.insert(command.end(),
+                     {"--set", "Lamp.method=" + method, "--set", "Scene.renderer=RASTER"});
+    const test::ProcessResult result = test::run(command);
     ASSERT_EQ(result.exitCode, 0) << result.err;
     const std::string failure =
         test::compareWithExpectation(readPng(out), nurbsCasterPicture, kTolerance);
