@@ -1,9 +1,8 @@
 #include "nodes/IdleFields.h"
 
-#include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
-#include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/CastingLight.h"
 #include "scene/SceneTriangles.h"
 #include "scene/WarnOnce.h"
 
@@ -57,11 +56,9 @@ std::string methodNames(unsigned methods, bool several) {
 
 }  // namespace
 
-SoFieldContainer& IdleFields::owner(SoLight& light, SoTransparentShadowGroup& group) {
-  if (light.isOfType(SoDeepShadowLight::getClassTypeId()) ||
-      light.isOfType(SoDeepShadowSpotLight::getClassTypeId()) ||
-      light.isOfType(SoDeepShadowDirectionalLight::getClassTypeId()))
-    return light;
+SoNode& IdleFields::owner(SoLight& light, SoTransparentShadowGroup& group) {
+  // As castingSettings chooses: a deep shadow light's own fields, the group's for the others.
+  if (isDeepShadowLight(light)) return light;
   return group;
 }
 
@@ -82,18 +79,17 @@ void IdleFields::say() {
 }
 
 void IdleFields::traced(SoLight& light, SoTransparentShadowGroup& group, const std::string& why) {
-  SoFieldContainer& fields = owner(light, group);
+  SoNode& fields = owner(light, group);
   sayIfSet(fields, "method", why);
   for (const FieldUse& use : kFieldUses) sayIfSet(fields, use.name, why);
 }
 
-void IdleFields::sayIfSet(SoFieldContainer& node, const char* field, const std::string& why) {
+void IdleFields::sayIfSet(SoNode& node, const char* field, const std::string& why) {
   const SoField* f = node.getField(field);
   if (f == nullptr || f->isDefault()) return;
   if (!firstWarning(&node, std::string("idle field: ") + field)) return;
-  const auto* shown = static_cast<const SoNode*>(&node);
-  SoDebugError::postWarning(shown->getTypeId().getName().getString(), "%s: %s does nothing: %s",
-                            describeNode(shown).c_str(), field, why.c_str());
+  SoDebugError::postWarning(node.getTypeId().getName().getString(), "%s: %s does nothing: %s",
+                            describeNode(&node).c_str(), field, why.c_str());
 }
 
 }  // namespace ivshadow

@@ -3,7 +3,7 @@
 #include <map>
 #include <string>
 
-class SoFieldContainer;
+class SoNode;
 class SoLight;
 class SoTransparentShadowGroup;
 
@@ -18,7 +18,7 @@ class IdleFields {
  public:
   // The node whose shadow fields `light` casts with in `group` (castingSettings' choice): the
   // light itself for the deep shadow lights, the group for any other light.
-  static SoFieldContainer& owner(SoLight& light, SoTransparentShadowGroup& group);
+  static SoNode& owner(SoLight& light, SoTransparentShadowGroup& group);
 
   // A frame of GL's path: `light` cast with `method` (SoDeepShadowLight::Method, resolved).
   void used(SoLight& light, SoTransparentShadowGroup& group, int method);
@@ -29,11 +29,11 @@ class IdleFields {
   // what the group does instead.
   static void traced(SoLight& light, SoTransparentShadowGroup& group, const std::string& why);
   // Says, once per node and field, that `field`, when the user set it, does nothing: `why`.
-  static void sayIfSet(SoFieldContainer& node, const char* field, const std::string& why);
+  static void sayIfSet(SoNode& node, const char* field, const std::string& why);
 
  private:
   // Per owner: a bit per method (SoDeepShadowLight::Method) used this frame.
-  std::map<SoFieldContainer*, unsigned> methods_;
+  std::map<SoNode*, unsigned> methods_;
 };
 
 }  // namespace ivshadow

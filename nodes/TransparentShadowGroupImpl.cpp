@@ -418,19 +418,22 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
   if (traced(action)) {
     contents_.update(action);
-    const std::string why =
-        describeNode(owner_) + " traces its children (renderer " +
-        (group.renderer.getValue() == SoTransparentShadowGroup::TRACER ? "TRACER)"
-                                                                       : "AUTO uses TRACER here)");
-    for (const GroupContents::Light& light : contents_.lights())
-      IdleFields::traced(*light.light, group, why);
     TracerSettings settings;
     settings.movingResolution = resolveMovingResolution(group);
     settings.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
-    if (tracer_.render(action, contents_, settings, statistics_)) return true;
+    if (tracer_.render(action, contents_, settings, statistics_)) {
+      const std::string why = describeNode(owner_) + " traces its children (renderer " +
+                              (group.renderer.getValue() == SoTransparentShadowGroup::TRACER
+                                   ? "TRACER)"
+                                   : "AUTO uses TRACER here)");
+      for (const GroupContents::Light& light : contents_.lights())
+        IdleFields::traced(*light.light, group, why);
+      return true;
+    }
   }
   IdleFields::sayIfSet(group, "movingResolution",
-                       "GL draws the children (renderer RASTER), every frame in full");
+                       "GL draws the children here, every frame in full (only a traced group "
+                       "reduces its frames)");
   warnCoarseDepth(owner_, state);
   Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;

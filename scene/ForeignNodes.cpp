@@ -32,6 +32,9 @@ class ForeignNode : public Base {
  public:
   explicit ForeignNode(SoType type) : type_(type), fields_(Base::getFieldData()) {
     baseFields_ = fields_.getNumFields();
+    // Written back with its fields declared, as FreeCAD writes it: a reader without the type
+    // (plain Coin, or this reader) needs the declaration for the fields Base does not have.
+    this->isBuiltIn = FALSE;
   }
 
   SoType getTypeId() const override { return type_; }

@@ -436,7 +436,11 @@ bool ViewerWindow::dragLight(TimedExaminerViewer::LightDrag phase, const SbVec2f
   SbLine ray;
   volume.projectPointToLine(position, ray);
   SbVec3f pointer;
-  if (!SbPlane(volume.getProjectionDirection(), movingStart_).intersect(ray, pointer)) return true;
+  if (!SbPlane(volume.getProjectionDirection(), movingStart_).intersect(ray, pointer)) {
+    // A drag that ends off the plane still lets the light go.
+    if (phase == TimedExaminerViewer::LightDrag::Finish) movingLight_.reset();
+    return true;
+  }
   if (phase == TimedExaminerViewer::LightDrag::Start) {
     pointerStart_ = pointer;
     showMessage("Moving the light " + QString(movingLight_->getName().getString()));

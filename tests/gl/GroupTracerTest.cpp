@@ -479,7 +479,8 @@ TEST(TracedGroup, FieldsThatCannotActSaySoOncePerLightAndField) {
     r.frame();
     EXPECT_EQ(said(r, "resolution", "the light traces shadow rays (RAYS)"), 1);
     EXPECT_EQ(said(r, "filter", "the light traces shadow rays (RAYS)"), 1);
-    EXPECT_EQ(r.messagesWith({"'Group': movingResolution does nothing", "renderer RASTER"}), 1);
+    EXPECT_EQ(r.messagesWith({"'Group': movingResolution does nothing", "GL draws the children"}),
+              1);
     EXPECT_EQ(r.messagesWith({"does nothing"}), 3);
   }
   {

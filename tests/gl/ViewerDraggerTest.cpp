@@ -94,8 +94,9 @@ TEST(ViewerDragger, ADraggerOutsideTheViewIsBroughtIntoIt) {
   const std::string saved = test::readText(dir + "/saved.iv");
   EXPECT_EQ(vectorAfter(saved, "DEF Lamp", "location"), std::vector<float>({0.4f, -0.6f, 4.2f}))
       << saved;
-  EXPECT_NE(vectorAfter(saved, "PerspectiveCamera", "position"),
-            std::vector<float>({0.0f, -7.5f, 5.2f}))
+  const std::vector<float> camera = vectorAfter(saved, "PerspectiveCamera", "position");
+  ASSERT_EQ(camera.size(), 3u) << "no camera position in the saved scene: " << saved;
+  EXPECT_NE(camera, std::vector<float>({0.0f, -7.5f, 5.2f}))
       << "the camera did not move: " << saved;
   // The saved scene (the moved camera, no dragger) rendered headlessly is the viewer's picture
   // but for the dragger, which shows as a patch of changed pixels inside the picture. Without

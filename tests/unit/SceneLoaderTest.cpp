@@ -5,6 +5,9 @@
 
 #include <Inventor/SbString.h>
 #include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/SoOutput.h>
+#include <Inventor/actions/SoWriteAction.h>
 #include <Inventor/fields/SoField.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoIndexedLineSet.h>
@@ -111,6 +114,29 @@ TEST(SceneLoader, FreeCadsNodeTypesReadAsTheirCoinBaseClassesAndUnknownOnesAreNa
   SoNode* edges = SoNode::getByName("Edges");
   ASSERT_NE(edges, nullptr);
   EXPECT_TRUE(edges->isOfType(SoIndexedLineSet::getClassTypeId()));
+  // Written back (the viewer saves a changed scene), the types keep their declared fields: the
+  // file reads again, the field FreeCAD's class alone has included.
+  const std::string again = test::outputDir() + "/freecad_export_again.iv";
+  {
+    SoOutput out;
+    ASSERT_TRUE(out.openFile(again.c_str()));
+    SoWriteAction write(&out);
+    write.apply(root);
+  }
+  SoSeparator* reread = nullptr;
+  {
+    SoInput in;
+    ASSERT_TRUE(in.openFile(again.c_str()));
+    reread = SoDB::readAll(&in);
+  }
+  ASSERT_NE(reread, nullptr) << test::readText(again);
+  reread->ref();
+  auto* rereadFaces = static_cast<SoIndexedFaceSet*>(reread->getChild(1));
+  ASSERT_TRUE(rereadFaces->isOfType(SoIndexedFaceSet::getClassTypeId())) << test::readText(again);
+  ASSERT_NE(rereadFaces->getField("partIndex"), nullptr) << test::readText(again);
+  rereadFaces->getField("partIndex")->get(value);
+  EXPECT_EQ(std::string(value.getString()), "2");
+  reread->unref();
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_EQ(scene.warnings[0], path +
                                    ": warning: node type 'SoNotAType' is known neither to "
