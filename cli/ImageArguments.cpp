@@ -19,11 +19,11 @@ void checkImageInput(const std::string& argument, const std::string& path) {
   try {
     imageFormatFor(path);
   } catch (const InputError&) {
-    // The types readImage reads are those imageFormatFor names (image/ImageFile.h).
+    // The types readImage reads are those imageFormatFor knows (image/ImageFile.h).
     const std::string extension = std::filesystem::path(path).extension().string();
     throw InputError(path + ": error: cannot read images of type '" +
                      (extension.empty() ? std::string("(no extension)") : extension) + "' (the " +
-                     argument + "); compare reads PNG and JPEG: .png, .jpg, .jpeg");
+                     argument + "); compare reads PNG and JPEG: " + kImageExtensions);
   }
 }
 

@@ -66,7 +66,7 @@ struct Setting {
 
 struct Row {
   Setting setting;
-  std::string kind;  // "deep shadow map", "baseline"
+  std::string kind;  // one of trade_kind (cli/TradePlot.h)
   double buildMs = 0.0;
   double frameMs = 0.0;
   std::uint64_t bytes = 0;
@@ -216,7 +216,7 @@ int runTrade(const TradeOptions& options) {
     std::vector<Row> rows;
     Row referenceRow;
     referenceRow.setting.label = "exact (CPU reference)";
-    referenceRow.kind = "baseline";
+    referenceRow.kind = trade_kind::kBaseline;
     referenceRow.frameMs = referenceMs;
     referenceRow.metrics = ImageComparison::compare(exact, exact, "reference", "reference");
     rows.push_back(referenceRow);
@@ -225,7 +225,7 @@ int runTrade(const TradeOptions& options) {
     renderer->render(view.root.get());
     Row plain;
     plain.setting.label = "no shadows (plain Coin)";
-    plain.kind = "baseline";
+    plain.kind = trade_kind::kBaseline;
     plain.frameMs = frameMedian(*renderer, view.root.get(), options.frames);
     plain.metrics = ImageComparison::compare(exact, renderer->read(), "reference", "plain");
     rows.push_back(plain);
@@ -260,11 +260,11 @@ int runTrade(const TradeOptions& options) {
       Row row;
       row.setting = setting;
       const bool wholeFrame = setting.method != SoDeepShadowLight::MAP;
-      row.kind = setting.tracer                                     ? "tracer"
-                 : setting.method == SoDeepShadowLight::RAYS        ? "rays"
-                 : setting.method == SoDeepShadowLight::VOLUMES     ? "shadow volumes"
-                 : setting.method == SoDeepShadowLight::OPACITY_MAP ? "opacity map"
-                                                                    : "deep shadow map";
+      row.kind = setting.tracer                                     ? trade_kind::kTracer
+                 : setting.method == SoDeepShadowLight::RAYS        ? trade_kind::kRays
+                 : setting.method == SoDeepShadowLight::VOLUMES     ? trade_kind::kVolumes
+                 : setting.method == SoDeepShadowLight::OPACITY_MAP ? trade_kind::kOpacityMap
+                                                                    : trade_kind::kMap;
       // Each build is timed on its own (touching a light forces one), median of --frames.
       // A deep shadow map is built when the light moves: its build waits for each pass.
       // Traced shadows are traced again, or the volumes drawn, within the frame, and GL draws
@@ -301,7 +301,7 @@ int runTrade(const TradeOptions& options) {
       csv << csvLine(row) << '\n';
       points.push_back(TradePoint{row.setting.label, row.kind, row.buildMs + row.frameMs,
                                   row.metrics.all.rmse, row.metrics.all.psnr,
-                                  row.kind == "baseline", false});
+                                  row.kind == trade_kind::kBaseline, false});
     }
     markParetoFront(points);
     // The reference, the table and the chart together or none.

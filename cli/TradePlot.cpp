@@ -34,12 +34,12 @@ struct Style {
 
 // One colour and shape per method (a colour-blind-safe palette), in the legend's order.
 const Style kStyles[] = {
-    {"deep shadow map", QColor(0, 114, 178), Shape::Circle},
-    {"opacity map", QColor(230, 159, 0), Shape::Diamond},
-    {"rays", QColor(0, 158, 115), Shape::TriangleUp},
-    {"shadow volumes", QColor(204, 121, 167), Shape::Square},
-    {"tracer", QColor(213, 94, 0), Shape::TriangleDown},
-    {"baseline", QColor(40, 40, 40), Shape::HollowSquare},
+    {trade_kind::kMap, QColor(0, 114, 178), Shape::Circle},
+    {trade_kind::kOpacityMap, QColor(230, 159, 0), Shape::Diamond},
+    {trade_kind::kRays, QColor(0, 158, 115), Shape::TriangleUp},
+    {trade_kind::kVolumes, QColor(204, 121, 167), Shape::Square},
+    {trade_kind::kTracer, QColor(213, 94, 0), Shape::TriangleDown},
+    {trade_kind::kBaseline, QColor(40, 40, 40), Shape::HollowSquare},
 };
 
 const Style& styleOf(const TradePoint& point) {
@@ -325,7 +325,8 @@ void addTradePlot(OutputFiles& outputs, const std::string& path, const std::stri
   for (const TradePoint* p : front)
     labels.place(QPointF(x(p->timeMs), y(p->psnrDb)), QString::fromStdString(p->label));
   for (const TradePoint& p : points)
-    if (!p.pareto && !p.baseline && p.method != "deep shadow map" && p.method != "opacity map")
+    if (!p.pareto && !p.baseline && p.method != trade_kind::kMap &&
+        p.method != trade_kind::kOpacityMap)
       labels.place(QPointF(x(p.timeMs), y(p.psnrDb)), QString::fromStdString(p.label));
 
   // The legend: the methods the chart shows, then what the outlines and the line mean.

@@ -7,11 +7,20 @@ namespace ivshadow {
 
 class OutputFiles;
 
+// The kinds of trade's rows (trade.csv's `kind` column), each the legend's entry that gives its
+// points their colour and shape.
+namespace trade_kind {
+inline constexpr const char* kMap = "deep shadow map";
+inline constexpr const char* kOpacityMap = "opacity map";
+inline constexpr const char* kRays = "rays";
+inline constexpr const char* kVolumes = "shadow volumes";
+inline constexpr const char* kTracer = "tracer";
+inline constexpr const char* kBaseline = "baseline";
+}  // namespace trade_kind
+
 struct TradePoint {
   std::string label;
-  // The legend's entry, which gives the point its colour and shape: "deep shadow map",
-  // "opacity map", "rays", "shadow volumes", "tracer" or "baseline".
-  std::string method;
+  std::string method;   // one of trade_kind
   double timeMs = 0.0;  // x: cost
   double rmse = 0.0;    // RMSE in 8-bit steps against the reference: what the front minimises
   double psnrDb = 0.0;  // y: the same error in dB; infinite for the reference itself

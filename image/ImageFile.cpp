@@ -22,7 +22,7 @@ ImageFormat imageFormatFor(const std::string& path) {
   if (AtomicFile::writesInPlace(path)) return ImageFormat::Png;
   throw InputError(path + ": error: cannot write images of type '" +
                    (extension.empty() ? std::string("(no extension)") : extension) +
-                   "'; supported: .png, .jpg, .jpeg");
+                   "'; supported: " + kImageExtensions);
 }
 
 void writeImage(const std::string& path, const Image& image) {

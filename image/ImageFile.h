@@ -8,6 +8,9 @@ namespace ivshadow {
 
 enum class ImageFormat { Png, Jpeg };
 
+// The extensions imageFormatFor knows, as messages list them: ".png, .jpg, .jpeg".
+inline constexpr const char* kImageExtensions = ".png, .jpg, .jpeg";
+
 // The format `path`'s extension names, case-insensitively: .png, .jpg or .jpeg; PNG for an
 // existing device or pipe of another name (`/dev/null`), which is written in place. Throws
 // InputError naming `path` and the supported extensions for any other (or none), so a
