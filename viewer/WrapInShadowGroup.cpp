@@ -32,10 +32,20 @@ SoNode* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
   }
   auto* group = new SoTransparentShadowGroup;
   group->setName("ShadowGroup");
-  // The scene's own lights cast the shadows when it has any (the group's castingLights
-  // ALL_LIGHTS): a light added beside them would light the scene twice over.
+  // The nodes after the scene's last top-level camera go into the group; those before it stay
+  // where they are: a transform there places the camera, a light there is fixed to the eye,
+  // and either would mean something else after it. The camera stays at the top, where the
+  // viewer and a reader of the saved file look for it.
+  int first = 0;
+  for (int i = 0; i < root->getNumChildren(); ++i)
+    if (root->getChild(i)->isOfType(SoCamera::getClassTypeId())) first = i + 1;
+  bool lit = false;
+  for (int i = first; i < root->getNumChildren() && !lit; ++i)
+    lit = ViewSetup::hasActiveLight(root->getChild(i));
+  // The scene's own lights in the group cast the shadows when it has any (the group's
+  // castingLights ALL_LIGHTS): a light added beside them would light the scene twice over.
   SoNode* added = group;
-  if (!ViewSetup::hasActiveLight(root)) {
+  if (!lit) {
     SbVec3f up(0.0f, 1.0f, 0.0f), back(0.0f, 0.0f, 1.0f), right(1.0f, 0.0f, 0.0f);
     if (camera != nullptr) {
       const SbRotation orientation = camera->orientation.getValue();
@@ -56,21 +66,12 @@ SoNode* wrapInShadowGroup(SoSeparator* root, const SoCamera* camera,
     added = light;
   }
 
-  int insertAt = -1;
-  for (int i = 0; i < root->getNumChildren();) {
-    SoNode* child = root->getChild(i);
-    // A camera inside the group would still work, but only there: kept at the top it stays
-    // where the viewer and a reader of the saved file look for it.
-    if (child->isOfType(SoCamera::getClassTypeId())) {
-      ++i;
-      continue;
-    }
-    if (insertAt < 0) insertAt = i;
+  while (root->getNumChildren() > first) {
     // Added to the group first, so the child keeps a reference while it leaves the root.
-    group->addChild(child);
-    root->removeChild(i);
+    group->addChild(root->getChild(first));
+    root->removeChild(first);
   }
-  root->insertChild(group, insertAt < 0 ? root->getNumChildren() : insertAt);
+  root->addChild(group);
   return added;
 }
 

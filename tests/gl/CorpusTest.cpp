@@ -6,6 +6,8 @@
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
+#include "ivshadow/SoDeepShadowLight.h"
+#include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/CoinRef.h"
 #include "tests/support/TestSupport.h"
 #include "viewer/WrapInShadowGroup.h"
@@ -19,8 +21,12 @@
 #include <Inventor/actions/SoWriteAction.h>
 #include <Inventor/errors/SoReadError.h>
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoCube.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoFile.h>
+#include <Inventor/nodes/SoRotation.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTranslation.h>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +36,7 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -209,6 +216,35 @@ const bool registered = [] {
   }
   return true;
 }();
+
+// The wrap leaves what comes before the scene's last camera where it is: a rotation there turns
+// the camera, a light there is fixed to the eye. A light before the camera casts nothing, so the
+// group, unlit, gets a light of its own.
+TEST(Corpus, TheWrapLeavesWhatComesBeforeTheCameraInPlace) {
+  SoDB::init();
+  ivshadow::init();
+  SoInput input;
+  const char* text =
+      "#Inventor V2.1 ascii\nSeparator { Rotation { rotation 0 0 1 0.5 } "
+      "DirectionalLight { direction 0 0 -1 } PerspectiveCamera { position 0 0 5 } "
+      "Translation { translation 1 0 0 } Cube { } }\n";
+  input.setBuffer(text, std::strlen(text));
+  CoinRef<SoSeparator> root(SoDB::readAll(&input));
+  ASSERT_TRUE(root);
+  const SoNode* added =
+      wrapInShadowGroup(root.get(), activeCamera(root.get()), SbViewportRegion(kWidth, kHeight));
+  ASSERT_EQ(root->getNumChildren(), 4);
+  EXPECT_TRUE(root->getChild(0)->isOfType(SoRotation::getClassTypeId()));
+  EXPECT_TRUE(root->getChild(1)->isOfType(SoDirectionalLight::getClassTypeId()));
+  EXPECT_TRUE(root->getChild(2)->isOfType(SoCamera::getClassTypeId()));
+  ASSERT_TRUE(root->getChild(3)->isOfType(SoTransparentShadowGroup::getClassTypeId()));
+  const auto* group = static_cast<SoTransparentShadowGroup*>(root->getChild(3));
+  ASSERT_EQ(group->getNumChildren(), 3);
+  EXPECT_EQ(group->getChild(0), added);
+  EXPECT_TRUE(added->isOfType(SoDeepShadowLight::getClassTypeId()));
+  EXPECT_TRUE(group->getChild(1)->isOfType(SoTranslation::getClassTypeId()));
+  EXPECT_TRUE(group->getChild(2)->isOfType(SoCube::getClassTypeId()));
+}
 
 TEST(Corpus, InventorDataIsInstalled) {
   EXPECT_EQ(corpusModels().size(), kModelCount)
