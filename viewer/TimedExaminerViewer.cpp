@@ -71,8 +71,17 @@ void TimedExaminerViewer::actualRedraw() {
 }
 
 SbBool TimedExaminerViewer::processSoEvent(const SoEvent* event) {
-  if (!lightDrag_ || !isViewing()) return inherited::processSoEvent(event);
+  if (!lightDrag_) return inherited::processSoEvent(event);
   const SbVec2f position = event->getNormalizedPosition(getViewportRegion());
+  // A drag ends with its button's release whatever the mode is by then (Esc turns to pick mode
+  // mid-drag), so that the window lets the light go.
+  if (draggingLight_ &&
+      SoMouseButtonEvent::isButtonReleaseEvent(event, SoMouseButtonEvent::BUTTON1)) {
+    draggingLight_ = false;
+    lightDrag_(LightDrag::Finish, position);
+    return TRUE;
+  }
+  if (!isViewing()) return inherited::processSoEvent(event);
   if (SoMouseButtonEvent::isButtonPressEvent(event, SoMouseButtonEvent::BUTTON1)) {
     // Ctrl alone: Ctrl+Shift is the examiner's zoom.
     const bool wanted = moveLightMode_ || (event->wasCtrlDown() && !event->wasShiftDown());
@@ -82,11 +91,6 @@ SbBool TimedExaminerViewer::processSoEvent(const SoEvent* event) {
     }
   } else if (draggingLight_ && event->isOfType(SoLocation2Event::getClassTypeId())) {
     lightDrag_(LightDrag::Move, position);
-    return TRUE;
-  } else if (draggingLight_ &&
-             SoMouseButtonEvent::isButtonReleaseEvent(event, SoMouseButtonEvent::BUTTON1)) {
-    draggingLight_ = false;
-    lightDrag_(LightDrag::Finish, position);
     return TRUE;
   }
   return inherited::processSoEvent(event);
