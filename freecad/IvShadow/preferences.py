@@ -27,6 +27,14 @@ class _ColourButton(QtWidgets.QPushButton):
             self.set_colour((chosen.redF(), chosen.greenF(), chosen.blueF()))
 
 
+def _choices(items):
+    """A combo box of (key, text) items, each text shown and its key the item's data."""
+    box = QtWidgets.QComboBox()
+    for key, text in items:
+        box.addItem(text, key)
+    return box
+
+
 class PreferencesPage:
     """What FreeCAD's preferences dialog asks of a Python page: `form`, loadSettings and
     saveSettings."""
@@ -38,9 +46,7 @@ class PreferencesPage:
 
         light = QtWidgets.QGroupBox("Light")
         form = QtWidgets.QFormLayout(light)
-        self.preset = QtWidgets.QComboBox()
-        for key, text in _PRESETS:
-            self.preset.addItem(text, key)
+        self.preset = _choices(_PRESETS)
         form.addRow("Direction", self.preset)
         self.light_color = _ColourButton()
         form.addRow("Colour", self.light_color)
@@ -69,9 +75,7 @@ class PreferencesPage:
 
         quality = QtWidgets.QGroupBox("Quality")
         form = QtWidgets.QFormLayout(quality)
-        self.renderer = QtWidgets.QComboBox()
-        for key, text in _RENDERERS:
-            self.renderer.addItem(text, key)
+        self.renderer = _choices(_RENDERERS)
         form.addRow("Renderer", self.renderer)
         layout.addWidget(quality)
         layout.addStretch()

@@ -37,7 +37,7 @@ struct AddedShadows {
   Image picture;
 };
 
-// The viewer's "Add deep shadow light" on a bundled scene: the saved result and the picture.
+// The viewer's "Add shadows" on a bundled scene: the saved result and the picture.
 AddedShadows addShadows(const std::string& sceneName) {
   const std::string dir = test::outputDir();
   AddedShadows added;
@@ -47,6 +47,17 @@ AddedShadows addShadows(const std::string& sceneName) {
   added.saved = readText(dir + "/added.iv");
   if (added.run.exitCode == 0) added.picture = readPng(dir + "/viewer.png");
   return added;
+}
+
+// The scene the viewer saved in `dir` (added.iv) rendered headlessly with its group inactive:
+// the same lights, camera and ground, no shadows. Empty when the render failed (said).
+Image unshadowedRender(const std::string& dir) {
+  const test::ProcessResult render =
+      test::run({test::ivshadowExe(), "render", dir + "/added.iv", "-o", dir + "/unshadowed.png",
+                 "--size", "320x240", "--transparency", test::kViewerTransparency, "--set",
+                 "ShadowGroup.isActive=FALSE"});
+  EXPECT_EQ(render.exitCode, 0) << render.err;
+  return render.exitCode == 0 ? readPng(dir + "/unshadowed.png") : Image();
 }
 
 TEST(ViewerAddShadows, TheLampOfGlassOverFloorCastsTheGlasssRedShadowInsteadOfASecondLight) {
@@ -113,12 +124,8 @@ TEST(ViewerAddShadows, ASceneWithoutLightsGetsOneWhoseShadowIsSeen) {
   // green and blue. Counted: pixels whose green and blue drop by more than 20 steps while red
   // keeps more than 35 % and exceeds green by 20 (a coloured shadow, not rounding); at least
   // 1 % of the picture (the shadow covers some 4 %).
-  const test::ProcessResult render =
-      test::run({test::ivshadowExe(), "render", dir + "/added.iv", "-o", dir + "/unshadowed.png",
-                 "--size", "320x240", "--transparency", test::kViewerTransparency, "--set",
-                 "ShadowGroup.isActive=FALSE"});
-  ASSERT_EQ(render.exitCode, 0) << render.err;
-  const Image unshadowed = readPng(dir + "/unshadowed.png");
+  const Image unshadowed = unshadowedRender(dir);
+  ASSERT_GT(unshadowed.width(), 0);
   const Image picture = readPng(dir + "/viewer.png");
   int tinted = 0;
   for (int y = 0; y < picture.height(); ++y)
@@ -168,12 +175,8 @@ TEST(ViewerAddShadows, AModelWithoutAFloorGetsAGroundThatCatchesItsShadow) {
   // shadows): the shadow is where the ground is darker, by more than 40 steps, on at least 2 %
   // of the picture; and the fill light lights the side the lamp does not reach, so that a
   // fifth of the picture is more than dark (without the ground and the fill, 9 %).
-  const test::ProcessResult render =
-      test::run({test::ivshadowExe(), "render", dir + "/added.iv", "-o", dir + "/unshadowed.png",
-                 "--size", "320x240", "--transparency", test::kViewerTransparency, "--set",
-                 "ShadowGroup.isActive=FALSE"});
-  ASSERT_EQ(render.exitCode, 0) << render.err;
-  const Image unshadowed = readPng(dir + "/unshadowed.png");
+  const Image unshadowed = unshadowedRender(dir);
+  ASSERT_GT(unshadowed.width(), 0);
   const Image picture = readPng(dir + "/viewer.png");
   int darker = 0;
   for (int y = 0; y < picture.height(); ++y)
