@@ -7,6 +7,7 @@
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DepthPeeling.h"
+#include "nodes/IdleFields.h"
 #include "nodes/NodesOfType.h"
 #include "nodes/ShadowGroupElement.h"
 #include "scene/SceneTriangles.h"
@@ -58,6 +59,13 @@ PeelPass* PeelingSeparatorImpl::passFor(SoState* state) {
   });
 }
 
+void PeelingSeparatorImpl::sayFieldsIdle(const char* why, bool methodActs) {
+  auto& separator = *static_cast<SoPeelingSeparator*>(owner_);
+  if (!methodActs) IdleFields::sayIfSet(separator, "method", why);
+  for (const char* field : {"maxPasses", "earlyTermination"})
+    IdleFields::sayIfSet(separator, field, why);
+}
+
 void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   SoState* state = action->getState();
   // A group capturing surfaces for its RAYS lights wants every layer drawn with its program;
@@ -69,6 +77,7 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
     if (ShadowGroupElement::peeling(state)) {
       statistics_.passes = 0;
       statistics_.peelMs = statistics_.gpuPeelMs = 0.0;
+      sayFieldsIdle("the peeling above peels its children with the rest, each pixel once", false);
     }
     tracer_.restoreDepth(action);
     renderPlainly(action, inPath);
@@ -78,6 +87,8 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
   // peel targets the children are blended by Coin with them, as under the group's
   // COIN_BLENDING.
   if (GroupShading* group = ShadowGroupElement::activeGroup(state)) {
+    sayFieldsIdle("inside a shadow group it lists its fragments in one pass, shaded by the group",
+                  false);
     if (!peel(action, inPath, *group)) renderPlainly(action, inPath);
     return;
   }
@@ -101,6 +112,7 @@ void PeelingSeparatorImpl::render(SoGLRenderAction* action, bool inPath) {
     TracerSettings settings;
     settings.bounceSamples = bounceSamples_;
     if (tracer_.render(action, contents_, settings, tracerStatistics_)) {
+      sayFieldsIdle("it traces its children", true);
       const int frames = statistics_.frames;
       statistics_ = PeelStatistics{};
       statistics_.frames = frames;

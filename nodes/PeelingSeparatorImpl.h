@@ -31,6 +31,9 @@ class PeelingSeparatorImpl {
   PeelingSeparatorImpl& operator=(const PeelingSeparatorImpl&) = delete;
 
   void render(SoGLRenderAction* action, bool inPath);
+  // Says once per field the user set that maxPasses and earlyTermination (and the method, unless
+  // `methodActs`) do nothing on the path this frame took: `why`.
+  void sayFieldsIdle(const char* why, bool methodActs);
   void changed(SoNotList* list) {
     // A traced group asking for its refined frame changes nothing here.
     if (!TracerActivity::active(TracerActivity::RefineTouch)) contents_.changed(list);

@@ -493,6 +493,48 @@ TEST(TracedGroup, FieldsThatCannotActSaySoOncePerLightAndField) {
   }
 }
 
+// A peeling separator's passes do nothing where it does not peel by passes of its own: traced
+// (its default here), or inside a peeling shadow group, which peels its children with the
+// rest; its method does nothing in the group either. Said once per field the user set.
+TEST(TracedGroup, APeelingSeparatorsFieldsThatCannotActSaySo) {
+  const auto messages = [](const std::string& separator) {
+    SoSeparator* root = readIv(
+        "#Inventor V2.1 ascii\nSeparator {\n"
+        "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n" +
+        separator +
+        "\n    Material { diffuseColor 1 0 0 transparency 0.5 }\n    Cube { }\n  }\n  }\n}\n");
+    CoinMessageCapture capture;
+    std::string error;
+    auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+    EXPECT_TRUE(renderer) << error;
+    if (renderer) {
+      renderer->render(root);
+      renderer->render(root);
+    }
+    root->unref();
+    std::string said;
+    for (const CoinMessageCapture::Message& message : capture.messages())
+      if (message.text.find("does nothing") != std::string::npos) said += message.text + "\n";
+    return said;
+  };
+  const std::string traced =
+      messages("Separator { DEF Glass PeelingSeparator { maxPasses 8 earlyTermination FALSE");
+  EXPECT_EQ(test::lines(traced).size(), 2u) << traced;
+  EXPECT_NE(traced.find("'Glass': maxPasses does nothing: it traces its children"),
+            std::string::npos)
+      << traced;
+  const std::string grouped = messages(
+      "TransparentShadowGroup { renderer RASTER DirectionalLight { direction 0 0 -1 }\n"
+      "  DEF Glass PeelingSeparator { method DUAL maxPasses 8");
+  EXPECT_EQ(test::lines(grouped).size(), 2u) << grouped;
+  EXPECT_NE(grouped.find("'Glass': method does nothing: the peeling above peels"),
+            std::string::npos)
+      << grouped;
+  EXPECT_NE(grouped.find("'Glass': maxPasses does nothing: the peeling above peels"),
+            std::string::npos)
+      << grouped;
+}
+
 // The analytic picture where it is flat: pixels whose every neighbour within `radius` has the
 // same expected colour (within one step). A picture traced at a lower resolution and
 // stretched is exact there, whatever its filter; nearer an edge it blends both sides.
