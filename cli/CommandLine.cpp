@@ -6,6 +6,7 @@
 #include "cli/TradeCommand.h"
 #include "cli/VariantsCommand.h"
 #include "cli/VariantsMerge.h"
+#include "cli/VariantsWorker.h"
 #include "ivshadow/IvShadowInit.h"
 #include "viewer/ViewerApplication.h"
 
@@ -75,7 +76,8 @@ std::string unknownCommand(int argc, char** argv, const CLI::App& app) {
   const auto all = [](const CLI::App*) { return true; };
   std::string valid;
   for (const CLI::App* command : app.get_subcommands(all))
-    valid += (valid.empty() ? "" : ", ") + command->get_name();
+    if (!command->get_group().empty())  // the hidden variants-worker is no user's command
+      valid += (valid.empty() ? "" : ", ") + command->get_name();
   if (argc < 2) return "ivshadow: error: expected a command: " + valid;
   const std::string first = argv[1];
   if (first.empty() || first[0] == '-') return {};
@@ -277,6 +279,11 @@ CommandLine::CommandLine()
                               "Heat map: error in 8-bit steps shown as white (0: the largest)");
   compareCommand_->add_option("--json", compare_.jsonPath, "Write the metrics as JSON");
 
+  // Started by `variants` (cli/VariantsWorker.h); not for users, so in no help or list.
+  workerCommand_ =
+      app_.add_subcommand("variants-worker", "Render the variants a sweep sends on stdin")
+          ->group("");
+
   CLI::App* viewCommand = app_.add_subcommand("view", "Open an .iv file in the viewer");
   viewCommand->footer(footer(kViewExamples));
   addViewerOptions(*viewCommand, view_);
@@ -311,6 +318,7 @@ int CommandLine::run(const char* programName) {
   if (renderCommand_->parsed()) return runRender(render_);
   if (variantsCommand_->parsed()) return runVariants(variants_);
   if (mergeCommand_->parsed()) return runVariantsMerge(merge_);
+  if (workerCommand_->parsed()) return runVariantsWorker();
   if (compareCommand_->parsed()) return runCompare(compare_);
   if (referenceCommand_->parsed()) {
     reference_.bounceGiven = bounceOption_->count() > 0;

@@ -49,6 +49,7 @@ class CommandLine {
   CLI::App* referenceCommand_ = nullptr;
   CLI::App* tradeCommand_ = nullptr;
   CLI::App* compareCommand_ = nullptr;
+  CLI::App* workerCommand_ = nullptr;
   CLI::Option* bounceOption_ = nullptr;
 };
 

@@ -8,6 +8,7 @@
 #include "cli/RenderMemory.h"
 #include "cli/SlurmScript.h"
 #include "cli/VariantManifest.h"
+#include "cli/VariantRenders.h"
 #include "cli/VariantShard.h"
 #include "cli/VariantsMerge.h"
 #include "cli/VariantsPlan.h"
@@ -234,10 +235,9 @@ int runVariants(const VariantsOptions& options) {
       if (!before.outcomes[i].ok()) todo.push_back(i);
     const int kept = int(selected.size() - todo.size());
 
-    const std::string self = currentExecutable();
     const std::string host = hostName();
     ProgressBar bar;
-    ChildProcesses children(options.jobs);
+    const std::unique_ptr<VariantRenders> renders = VariantRenders::create(options.jobs);
     std::vector<std::chrono::steady_clock::time_point> started(variants.size());
     std::size_t next = 0;
     int finished = 0, rendered = 0, failed = 0, badInput = 0;
@@ -247,35 +247,31 @@ int runVariants(const VariantsOptions& options) {
     };
     bool stopping = false;
     std::set<std::string> saidIdle;
-    while ((next < todo.size() && !interrupted) || !children.empty()) {
+    while ((next < todo.size() && !interrupted) || !renders->empty()) {
       if (interrupted && !stopping) {
         // The terminal sent Ctrl-C to the renders too; a signal sent to this process alone
         // reaches them here.
         stopping = true;
-        children.signalAll(SIGINT);
+        renders->signalAll(SIGINT);
       }
-      while (next < todo.size() && !children.full() && !interrupted) {
+      while (next < todo.size() && !renders->full() && !interrupted) {
         const std::size_t i = todo[next];
-        std::vector<std::string> command = {self,
-                                            "render",
-                                            options.base,
-                                            "-o",
-                                            options.outputDir + "/" + variants[i].name + ".png",
-                                            "--size",
-                                            options.size,
-                                            "--frames",
-                                            std::to_string(options.frames),
-                                            "--stats",
-                                            scratch(i, ".stats.json")};
-        for (const Variant::Assignment& assignment : variants[i].assignments) {
-          command.push_back("--set");
-          command.push_back(assignment.text);
-        }
+        RenderOptions render;
+        render.scene = options.base;
+        render.output = options.outputDir + "/" + variants[i].name + ".png";
+        render.size = options.size;
+        render.frames = options.frames;
+        render.statsPath = scratch(i, ".stats.json");
+        for (const Variant::Assignment& assignment : variants[i].assignments)
+          render.assignments.push_back(assignment.text);
         started[i] = std::chrono::steady_clock::now();
-        children.start(int(i), command, scratch(i, ".log"));
+        renders->start(int(i), render, scratch(i, ".log"));
         ++next;
       }
-      const ChildProcesses::Finished done = children.waitAny();
+      if (renders->empty()) continue;  // interrupted before any render started
+      const std::optional<VariantRenders::Finished> ended = renders->waitAny();
+      if (!ended) continue;  // a signal: the loop sees to it
+      const VariantRenders::Finished& done = *ended;
       const std::size_t i = std::size_t(done.id);
       if (interrupted && done.exitCode != 0) {
         // Interrupted, not failed: no manifest, so a rerun renders it.

@@ -32,4 +32,9 @@ void forgetWarnings(const void* subject) {
             set.lower_bound({static_cast<const char*>(subject) + 1, std::string()}));
 }
 
+void forgetAllWarnings() {
+  const std::lock_guard<std::mutex> lock(warnedMutex());
+  warned().clear();
+}
+
 }  // namespace ivshadow

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <string>
 
 namespace ivshadow {
@@ -16,5 +18,10 @@ bool firstWarning(const void* subject, const std::string& what = std::string());
 // Forgets what was said of `subject`: the plugin's nodes call it as they are destroyed, so
 // that a node made later at the same address is warned about in its own right.
 void forgetWarnings(const void* subject);
+
+// Forgets every warning said: a process that renders one scene after another (a variants
+// worker) says each scene's warnings as a process of its own would, those of the process as a
+// whole and of Coin's own nodes (which do not call forgetWarnings) included.
+IVSHADOW_INTERNAL void forgetAllWarnings();
 
 }  // namespace ivshadow
