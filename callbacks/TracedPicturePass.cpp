@@ -1,6 +1,7 @@
 #include "callbacks/TracedPicturePass.h"
 
 #include "GlslSources.h"
+#include "callbacks/FramebufferFormats.h"
 #include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/PixelStoreScope.h"
@@ -49,42 +50,6 @@ GLint depthParameter(GLuint framebuffer, GLenum name) {
   glGetNamedFramebufferAttachmentParameteriv(framebuffer, depthAttachment(framebuffer), name,
                                              &value);
   return value;
-}
-
-// The internal format of the framebuffer's depth, as a single-sampled copy must have it to
-// be the target of a depth blit (GL asks the formats to match); GL_NONE without depth.
-GLenum depthFormat(GLuint framebuffer) {
-  GLint format = GL_NONE;
-  if (framebuffer != 0) {
-    const GLint type = depthParameter(framebuffer, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE);
-    const auto name = GLuint(depthParameter(framebuffer, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME));
-    if (type == GL_RENDERBUFFER)
-      glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_INTERNAL_FORMAT, &format);
-    else if (type == GL_TEXTURE)
-      glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-    return GLenum(format);
-  }
-  // The default framebuffer names no format: the one its sizes say. Sizes are asked only of
-  // buffers it has (GL raises an error for the others, into the application's error queue).
-  if (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) == GL_NONE) return GL_NONE;
-  GLint stencilType = GL_NONE, stencil = 0;
-  glGetNamedFramebufferAttachmentParameteriv(0, GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
-                                             &stencilType);
-  if (stencilType != GL_NONE)
-    glGetNamedFramebufferAttachmentParameteriv(0, GL_STENCIL,
-                                               GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
-  if (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) == GL_FLOAT)
-    return stencil > 0 ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
-  switch (depthParameter(0, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE)) {
-    case 0:
-      return GL_NONE;
-    case 16:
-      return GL_DEPTH_COMPONENT16;
-    case 32:
-      return GL_DEPTH_COMPONENT32;
-    default:
-      return stencil > 0 ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
-  }
 }
 
 }  // namespace

@@ -85,8 +85,9 @@ void GroupTracer::refine(void* self, SoSensor*) {
   tracer->owner_->touch();
 }
 
-const float* GroupTracer::reducedLimit(Context& context, const std::array<int, 4>& viewport,
-                                       int width, int height) {
+const float* GroupTracer::reducedLimit(Context& context, const std::vector<float>& depth,
+                                       const std::array<int, 4>& viewport, int width,
+                                       int height) {
   context.depthReduced.resize(std::size_t(width) * std::size_t(height));
   for (int y = 0; y < height; ++y) {
     const int fullY =
@@ -95,7 +96,7 @@ const float* GroupTracer::reducedLimit(Context& context, const std::array<int, 4
       const int fullX =
           std::min(viewport[2] - 1, int((float(x) + 0.5f) * float(viewport[2]) / float(width)));
       context.depthReduced[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
-          context.depthNow[std::size_t(fullY) * std::size_t(viewport[2]) + std::size_t(fullX)];
+          depth[std::size_t(fullY) * std::size_t(viewport[2]) + std::size_t(fullX)];
     }
   }
   return context.depthReduced.data();
@@ -195,16 +196,23 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const SbMatrix& viewing = cameraInside ? scene_->viewing() : SoViewingMatrixElement::get(state);
   const SbMatrix& projection =
       cameraInside ? scene_->projection() : SoProjectionMatrixElement::get(state);
-  if (const std::string error = context->pass->readDepth(viewport, context->depthNow);
-      !error.empty() && firstWarning(owner_, "depth read: " + error))
-    SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                              "%s: the framebuffer's depth could not be read (%s); the traced "
-                              "picture covers what GL drew before it",
-                              describeNode(owner_).c_str(), error.c_str());
+  // What GL drew before the group, as stored: while its depth is the one traced at, the
+  // depths need no reading as floats.
+  context->frame.readBefore(viewport);
+  const bool depthAsTraced = context->frame.depthAsTraced();
+  if (!depthAsTraced) {
+    if (const std::string error = context->pass->readDepth(viewport, context->depthNow);
+        !error.empty() && firstWarning(owner_, "depth read: " + error))
+      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                "%s: the framebuffer's depth could not be read (%s); the traced "
+                                "picture covers what GL drew before it",
+                                describeNode(owner_).c_str(), error.c_str());
+  }
+  const std::vector<float>& depthNow = depthAsTraced ? context->depthTraced : context->depthNow;
   // The same camera rays through the same shapes: they meet the surfaces kept.
   const bool sameView = context->shapes == shapesVersion_ && context->viewing == viewing &&
                         context->projection == projection && context->viewport == viewport &&
-                        context->depthNow == context->depthTraced;
+                        (depthAsTraced || context->depthNow == context->depthTraced);
   const bool kept = sameView && context->scene == sceneVersion_;
   // A reduced picture is refined by the first frame that finds nothing changed.
   const bool refining = kept && context->reduced;
@@ -221,8 +229,9 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     options.depthBuffer = TracedPicturePass::drawDepthBuffer();
     options.viewportWidth = viewport[2];
     options.viewportHeight = viewport[3];
-    const float* limit = reduced ? reducedLimit(*context, viewport, options.width, options.height)
-                                 : context->depthNow.data();
+    const float* limit = reduced ? reducedLimit(*context, depthNow, viewport, options.width,
+                                                options.height)
+                                 : depthNow.data();
     // The first picture keeps no surfaces: a single frame (a batch render) would only pay for
     // them (about 15 MB at 800 x 600, each page a fault); the first change traces its camera
     // rays again and keeps them for the changes after it.
@@ -239,6 +248,7 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
                                   describeNode(owner_).c_str(), error.c_str());
       context->scene = 0;
       context->surfaces.rows.clear();
+      context->frame.forget();
       return false;
     }
     context->scene = sceneVersion_;
@@ -246,7 +256,8 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     context->viewing = viewing;
     context->projection = projection;
     context->viewport = viewport;
-    context->depthTraced.swap(context->depthNow);
+    if (!depthAsTraced) context->depthTraced.swap(context->depthNow);
+    context->frame.markTraced();
     context->reduced = reduced;
     if (reduced) {
       if (refineSensor_.isScheduled()) refineSensor_.unschedule();
@@ -265,7 +276,15 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   // A motion: this frame traced because something changed since a picture was drawn. The
   // first picture and a refined one are not (the next change is then traced in full).
   context->tracedLastFrame = !kept && hadPicture;
-  context->pass->draw(viewport);
+  // A frame that traced nothing puts back the framebuffer the picture left last, when what GL
+  // drew before it is the same; else it composites the picture and keeps what that leaves.
+  // A frame that traced keeps nothing: a single frame (a batch render) or a motion would only
+  // pay for the copy.
+  const bool traced = !kept || refining;
+  if (traced || !context->frame.restore()) {
+    context->pass->draw(viewport);
+    if (!traced) context->frame.keep();
+  }
   // GL is restored; Coin must not trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
   if (!scene_->untracedPaths().empty()) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "callbacks/KeptFrame.h"
 #include "nodes/PerContext.h"
 #include "nodes/SceneTracer.h"
 
@@ -33,7 +34,8 @@ struct TracerSettings {
 // the framebuffer with its depth (TracedPicturePass). The subgraph is read again when it
 // changes (its shapes or the inherited state), only its lights when they or the camera moved;
 // the picture is traced again when the subgraph, the camera, the viewport or the depth drawn
-// before it changed, else the one kept is drawn. While the scene moves (a frame traces right
+// before it changed, else the one kept is drawn (and while what GL drew before it stays the
+// same, the framebuffer that left is put back by a blit: KeptFrame). While the scene moves (a frame traces right
 // after one that traced) the picture is traced at the settings' movingResolution and refined,
 // in full, by the first frame that finds nothing changed; the tracer schedules that frame
 // itself (kRefineDelaySeconds after the last reduced one) by touching its owner. Shapes drawn with
@@ -69,19 +71,21 @@ class GroupTracer {
     SbMatrix projection;
     std::array<int, 4> viewport{};
     std::vector<float> depthTraced;   // the depth GL had drawn before the group
-    std::vector<float> depthNow;      // read this frame
+    std::vector<float> depthNow;      // read this frame, when not the one traced at
     std::vector<float> depthReduced;  // depthNow at a reduced picture's pixels
     bool reduced = false;             // the picture kept was traced at movingResolution
     bool tracedLastFrame = false;     // the previous frame traced for a change (a motion)
     // The surfaces the picture's camera rays met: composited again when only the lights
     // changed.
     SurfacesMet surfaces;
+    // The framebuffer the picture left, put back while nothing changes.
+    KeptFrame frame;
   };
 
-  // The depth limit of a picture of `width` x `height` pixels over the viewport whose depth
-  // `context` read: each pixel's centre's depth.
-  static const float* reducedLimit(Context& context, const std::array<int, 4>& viewport, int width,
-                                   int height);
+  // The depth limit of a picture of `width` x `height` pixels over the viewport whose window
+  // depths are `depth`: each pixel's centre's depth.
+  static const float* reducedLimit(Context& context, const std::vector<float>& depth,
+                                   const std::array<int, 4>& viewport, int width, int height);
   static void refine(void* self, SoSensor*);
   // Draws the shapes drawn with lines, points or screen-aligned pixels through GL, after the
   // picture, depth-tested against it.
