@@ -65,11 +65,12 @@ bool KeptFrame::readBefore(const std::array<int, 4>& viewport) {
   glReadPixels(viewport[0], viewport[1], viewport[2], viewport[3], depth.format, depth.type,
                now_.depth.data());
   readable_ = true;
+  depthAsTraced_ = now_.depth == tracedDepth_;
   return true;
 }
 
 bool KeptFrame::depthAsTraced() const {
-  return readable_ && now_.depth == tracedDepth_;
+  return readable_ && depthAsTraced_;
 }
 
 void KeptFrame::markTraced() {
@@ -77,6 +78,7 @@ void KeptFrame::markTraced() {
     tracedDepth_ = now_.depth;
   else
     tracedDepth_.clear();
+  depthAsTraced_ = readable_;
   forget();
 }
 
@@ -85,7 +87,10 @@ void KeptFrame::forget() {
 }
 
 bool KeptFrame::restore() {
-  if (!readable_ || !valid_ || !(layout_ == keptLayout_) || !(now_ == keptBefore_)) return false;
+  if (!readable_ || !valid_ || !(layout_ == keptLayout_)) return false;
+  // Two depths equal to the one traced at are equal without a second comparison.
+  const bool sameDepth = (depthAsTraced_ && keptAtTracedDepth_) || now_.depth == keptBefore_.depth;
+  if (!sameDepth || now_.colour != keptBefore_.colour) return false;
   GlStateScope scope(GlStateScope::kFramebuffers);
   blit(framebuffer_.get(), GLuint(scope.drawFramebuffer()), false);
   return true;
@@ -117,6 +122,7 @@ void KeptFrame::keep() {
   GlStateScope scope(GlStateScope::kFramebuffers);
   blit(GLuint(scope.drawFramebuffer()), framebuffer_.get(), true);
   keptBefore_ = now_;
+  keptAtTracedDepth_ = depthAsTraced_;
   valid_ = true;
 }
 

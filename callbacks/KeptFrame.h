@@ -40,9 +40,6 @@ class IVSHADOW_INTERNAL KeptFrame {
   struct Stored {
     std::vector<unsigned char> colour;
     std::vector<unsigned char> depth;
-    bool operator==(const Stored& other) const {
-      return colour == other.colour && depth == other.depth;
-    }
   };
   // What the draw framebuffer is, as the copies need it to be the same.
   struct Layout {
@@ -62,9 +59,11 @@ class IVSHADOW_INTERNAL KeptFrame {
   Layout layout_;          // this frame's
   Stored now_;             // read this frame
   std::vector<unsigned char> tracedDepth_;
-  bool valid_ = false;  // a frame is kept
+  bool depthAsTraced_ = false;  // now_.depth == tracedDepth_
+  bool valid_ = false;          // a frame is kept
   Layout keptLayout_;
-  Stored keptBefore_;  // what the kept frame was composed over
+  Stored keptBefore_;               // what the kept frame was composed over
+  bool keptAtTracedDepth_ = false;  // keptBefore_.depth == tracedDepth_
   GlFramebuffer framebuffer_;
   GlRenderbuffer colour_;
   GlRenderbuffer depth_;
