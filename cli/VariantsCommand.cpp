@@ -247,13 +247,9 @@ int runVariants(const VariantsOptions& options) {
     };
     bool stopping = false;
     std::set<std::string> saidIdle;
-    while ((next < todo.size() && !interrupted) || !renders->empty()) {
-      if (interrupted && !stopping) {
-        // The terminal sent Ctrl-C to the renders too; a signal sent to this process alone
-        // reaches them here.
-        stopping = true;
-        renders->signalAll(SIGINT);
-      }
+    // Keeps every worker busy: called again as soon as a render ends, so that the next
+    // variant renders while this process files the one that ended.
+    const auto startRenders = [&] {
       while (next < todo.size() && !renders->full() && !interrupted) {
         const std::size_t i = todo[next];
         RenderOptions render;
@@ -268,11 +264,21 @@ int runVariants(const VariantsOptions& options) {
         renders->start(int(i), render, scratch(i, ".log"));
         ++next;
       }
+    };
+    while ((next < todo.size() && !interrupted) || !renders->empty()) {
+      if (interrupted && !stopping) {
+        // The terminal sent Ctrl-C to the renders too; a signal sent to this process alone
+        // reaches them here.
+        stopping = true;
+        renders->signalAll(SIGINT);
+      }
+      startRenders();
       if (renders->empty()) continue;  // interrupted before any render started
       const std::optional<VariantRenders::Finished> ended = renders->waitAny();
       if (!ended) continue;  // a signal: the loop sees to it
       const VariantRenders::Finished& done = *ended;
       const std::size_t i = std::size_t(done.id);
+      startRenders();
       if (interrupted && done.exitCode != 0) {
         // Interrupted, not failed: no manifest, so a rerun renders it.
         std::filesystem::remove(scratch(i, ".stats.json"), made);

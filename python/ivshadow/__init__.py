@@ -16,8 +16,12 @@ Coin's loader is never needed.
 render() and reference() run the `ivshadow` executable (the same renderer as `ivshadow render`
 and `ivshadow reference`) in a child process: a crash of a GL driver or a refused scene comes
 back as an IvShadowError with the command's message, never as a crash of the interpreter.
+render() keeps that process (`ivshadow variants-worker`, ivshadow/_worker.py) for the renders
+that follow, so that a loop of renders pays for the process and its GL context once;
+IVSHADOW_VARIANTS_WORKERS=0 runs `ivshadow render` for each instead.
 """
 
+import atexit
 import ctypes
 import ctypes.util
 import json
@@ -27,6 +31,7 @@ import tempfile
 import time
 
 from . import _paths
+from . import _worker
 
 __all__ = ["IvShadowError", "render", "reference", "executable", "library"]
 
@@ -118,13 +123,19 @@ def _run(command, scene):
     return result
 
 
+def _set_list(sets):
+    return [sets] if isinstance(sets, str) else list(sets)
+
+
 def _assignments(sets):
-    if isinstance(sets, str):
-        sets = [sets]
     words = []
-    for assignment in sets:
+    for assignment in _set_list(sets):
         words += ["--set", assignment]
     return words
+
+
+_render_worker = _worker.RenderWorker()
+atexit.register(_render_worker.close)
 
 
 def render(scene, output, size=(800, 600), frames=1, sets=(), transparency=None):
@@ -133,12 +144,27 @@ def render(scene, output, size=(800, 600), frames=1, sets=(), transparency=None)
     statistics of `ivshadow render --stats` as a dict."""
     with _SceneFile(scene) as file, tempfile.TemporaryDirectory(prefix="ivshadow-") as scratch:
         stats = os.path.join(scratch, "stats.json")
-        command = [executable(), "render", file.path, "-o", os.fspath(output), "--size",
-                   _size_text(size), "--frames", str(int(frames)), "--stats", stats]
-        command += _assignments(sets)
-        if transparency:
-            command += ["--transparency", transparency]
-        _run(command, file)
+        status = None
+        if os.environ.get("IVSHADOW_VARIANTS_WORKERS") != "0":
+            log = os.path.join(scratch, "render.log")
+            status = _render_worker.try_render(executable(), {
+                "scene": file.path, "output": os.fspath(output), "size": _size_text(size),
+                "frames": int(frames), "stats": stats, "sets": _set_list(sets),
+                "transparency": transparency or "", "log": log})
+            if status is not None and status != 0:
+                # The render's stderr, as _run reports a render process's.
+                text = ""
+                if os.path.exists(log):
+                    with open(log, errors="replace") as f:
+                        text = f.read().strip()
+                raise IvShadowError(file.message(text or "render exited %d" % status), status)
+        if status is None:
+            command = [executable(), "render", file.path, "-o", os.fspath(output), "--size",
+                       _size_text(size), "--frames", str(int(frames)), "--stats", stats]
+            command += _assignments(sets)
+            if transparency:
+                command += ["--transparency", transparency]
+            _run(command, file)
         with open(stats) as f:
             return json.load(f)
 
