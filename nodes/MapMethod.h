@@ -1,5 +1,9 @@
 #pragma once
 
+// fitMapFrame, fitSlices and mapServesView are exported for their GL-free test
+// (tests/unit/MapFitTest.cpp).
+#include "ivshadow/Export.h"
+
 #include <Inventor/SbVec3f.h>
 
 #include <array>
@@ -29,7 +33,8 @@ ViewCorners viewCorners(const SbViewVolume& volume, const SbMatrix& groupToWorld
 // narrower than a cube face), the narrower, else the cube; a directional light's orthographic face
 // over the casters' bounds clipped to `view`. The range comes from the light's settings or, where
 // they are not set, from the casters' bounds.
-void fitMapFrame(MapState& map, const SbBox3f& casterBounds, const ViewCorners& view);
+IVSHADOW_INTERNAL void fitMapFrame(MapState& map, const SbBox3f& casterBounds,
+                                   const ViewCorners& view);
 
 // The cone a point or spot light sees its casters within: the way to the centre of their
 // bounding sphere and asin(radius / distance). False for a directional light, for no casters
@@ -45,12 +50,13 @@ inline constexpr float kMinMapConeAngle = 1e-4f;
 // transparent casters' distances along the map's axes, within its depth range. Opaque casters
 // need no slice (their depth is kept apart), and receivers beyond the last transparent caster
 // count every slice fully wherever the range ends. Radii the light sets are used as they are.
-void fitSlices(MapState& map, const SbBox3f& transparentBounds);
+IVSHADOW_INTERNAL void fitSlices(MapState& map, const SbBox3f& transparentBounds);
 
 // Whether a directional light's map fitted before still serves `view`: everything the view
 // shows of the casters lies inside it, and it is not over three times as wide as that (the
 // texels would be wasted). Other maps do not depend on the view.
-bool mapServesView(const MapState& map, const SbBox3f& casterBounds, const ViewCorners& view);
+IVSHADOW_INTERNAL bool mapServesView(const MapState& map, const SbBox3f& casterBounds,
+                                     const ViewCorners& view);
 
 // The memory a map build may take in the current context: what GL says it can give
 // (callbacks/GlMemoryBudget.h), capped by IVSHADOW_GL_MEMORY_LIMIT (bytes; a value that is

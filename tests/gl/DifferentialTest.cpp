@@ -5,7 +5,6 @@
 // scenes (CI: 12; bench/differential.sh: hundreds, with the corpus's wrapped models).
 #include "cli/MethodAgreement.h"
 #include "cli/ReferenceOverlay.h"
-#include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
@@ -16,6 +15,7 @@
 #include "raytrace/ReferenceRenderer.h"
 #include "scene/CoinMessageCapture.h"
 #include "scene/ViewSetup.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 #include "tests/support/RandomScene.h"
 #include "tests/support/TestSupport.h"
@@ -86,7 +86,7 @@ Drawn draw(const std::string& text, const MethodAgreement* path) {
     }
   } else {
     std::string error;
-    auto renderer = OffscreenRenderer::create(kWidth, kHeight, error);
+    auto renderer = CheckedRenderer::create(kWidth, kHeight, error);
     if (!renderer) throw std::runtime_error(error);
     renderer->render(view.root.get());
     drawn.image = renderer->read();

@@ -1,7 +1,7 @@
 #include "callbacks/GlCapabilities.h"
-#include "headless/OffscreenRenderer.h"
 #include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +41,7 @@ TEST(Examples, SceneGraphBuiltInCxxRendersWithShadowsAndPeeling) {
   // 640 x 480 picture), a map on a GPU; this process's EGL context is the example's.
   ivshadow::init();  // Coin first: the context asks it for a cache context
   std::string error;
-  const auto context = OffscreenRenderer::create(1, 1, error);
+  const auto context = test::CheckedRenderer::create(1, 1, error);
   ASSERT_TRUE(context) << error;
   const bool software = context->capabilities().isSoftwareRenderer();
   EXPECT_NE(result.out.find(software ? "traced on the CPU: 1 frame, 307200 camera rays"

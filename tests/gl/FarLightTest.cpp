@@ -4,7 +4,6 @@
 // light's distance overflows a float and the group's RASTER picture was black, where plain
 // Coin, TRACER and the reference draw the unlit scene. Every method gives the analytic shadow
 // (or traces it, saying why), and the overflowing light draws what plain Coin draws.
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"

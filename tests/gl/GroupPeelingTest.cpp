@@ -4,11 +4,11 @@
 // blend equations (seeds/000 eq. 2.5-2.8: C = a c + (1 - a) C_behind, over black), from the
 // scene's own numbers, without the plugin's extraction or reference renderer.
 
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/PeelStatistics.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/SoOutput.h>
@@ -87,7 +87,7 @@ struct Rendered {
 Rendered render(const std::string& text) {
   init();
   std::string error;
-  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  auto renderer = CheckedRenderer::create(kSize, kSize, error);
   if (!renderer) throw std::runtime_error(error);
   renderer->action().setTransparencyType(SoGLRenderAction::BLEND);
   SoSeparator* root = readIv(text);

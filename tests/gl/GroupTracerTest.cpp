@@ -4,11 +4,12 @@
 // picture is checked against an expectation computed without the tracer (ShadowScene's
 // analytic picture, or a colour set in the scene).
 #include "callbacks/GlCapabilities.h"
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/CoinMessageCapture.h"
+#include "tests/gl/CheckedRenderer.h"
+#include "tests/gl/CoinClock.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/SoDB.h>
@@ -29,12 +30,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace ivshadow::test {
@@ -122,7 +121,7 @@ TEST(TracedGroup, WhatGlDrawsAfterTheGroupDepthTestsAgainstItsPicture) {
 
 struct Rendering {
   SoSeparator* root = nullptr;
-  std::unique_ptr<OffscreenRenderer> renderer;
+  std::unique_ptr<CheckedRenderer> renderer;
   SoDeepShadowLight* lamp = nullptr;
   std::unique_ptr<CoinMessageCapture> capture;  // with captureMessages
 
@@ -131,7 +130,7 @@ struct Rendering {
     // After the read, which initialises Coin, which sets its handlers.
     if (captureMessages) capture = std::make_unique<CoinMessageCapture>();
     std::string error;
-    renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+    renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
     EXPECT_TRUE(renderer) << error;
     lamp = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
   }
@@ -435,7 +434,7 @@ TEST(TracedGroup, ALineBehindATracedSurfaceStaysHiddenWhenACallbackAboveClearsTh
       nullptr);
   root->insertChild(clear, 0);
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   renderer->render(root);
   const Image image = renderer->read();
@@ -505,7 +504,7 @@ TEST(TracedGroup, APeelingSeparatorsFieldsThatCannotActSaySo) {
         "\n    Material { diffuseColor 1 0 0 transparency 0.5 }\n    Cube { }\n  }\n  }\n}\n");
     CoinMessageCapture capture;
     std::string error;
-    auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+    auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
     EXPECT_TRUE(renderer) << error;
     if (renderer) {
       renderer->render(root);
@@ -608,11 +607,11 @@ TEST(TracedGroup, AMotionIsTracedAtMovingResolutionAndStillnessRefinesIt) {
   // about 4 pixels, and those edges run for hundreds of pixels: over 100 pixels off.
   EXPECT_GT(pixelsOff(moving, exact), 100) << "the moving frame is not coarser";
 
-  // Nothing moves for a quarter of a second: the group asks for a frame through Coin's timer
-  // queue, without reading its subgraph again.
+  // Nothing moves for a quarter of a second (Coin's clock moved on, CoinClock.h): the group
+  // asks for a frame through Coin's timer queue, without reading its subgraph again.
   SoNodeSensor redraw;
   redraw.attach(r.root);
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  advanceCoinClock(0.25);
   SoDB::getSensorManager()->processTimerQueue();
   EXPECT_TRUE(redraw.isScheduled()) << "the group did not ask for the refined frame";
   redraw.detach();
@@ -652,7 +651,7 @@ TEST(TracedGroup, AskingForTheRefinedFrameRebuildsNoEnclosingGroup) {
   r.lamp->location = place;
   ASSERT_EQ(r.frame().tracerReduced, 1);
   const int builds = outer->getStatistics().rebuilds;
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  advanceCoinClock(0.25);  // a quarter of a second still (CoinClock.h)
   SoDB::getSensorManager()->processTimerQueue();
   EXPECT_EQ(r.frame().tracerRefines, 1);
   EXPECT_EQ(outer->getStatistics().rebuilds, builds) << "the enclosing group built its map again";

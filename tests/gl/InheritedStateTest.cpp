@@ -1,9 +1,9 @@
 // State set above a SoTransparentShadowGroup, outside it, reaches its casters in both methods
 // (InheritedStateCases.h), and a change there is seen in the next frame.
-#include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "scene/CoinMessageCapture.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/InheritedStateCases.h"
 
 #include <Inventor/nodes/SoMaterial.h>
@@ -69,7 +69,7 @@ TEST_P(InheritedStateChange, AMaterialChangedAboveTheGroupIsSeenInTheNextFrame) 
   material.scene.method = GetParam();
   SoSeparator* root = readIv(material.scene.text());
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   renderer->render(root);
   std::string failure = compareWithExpectation(renderer->read(), material.expected, kTolerance);
@@ -112,7 +112,7 @@ TEST_P(InheritedStateChange, ATransformMovedAboveTheGroupTakesNoCastersAgain) {
   moved.scene.method = GetParam();
   SoSeparator* root = readIv(moved.scene.text());
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   renderer->render(root);
   std::string failure = compareWithExpectation(renderer->read(), moved.expected, kTolerance);
@@ -164,7 +164,7 @@ TEST(InheritedState, AGroupInstancedUnderTwoMaterialsCastsWithEach) {
          "0.5 }\n    " + glass + "diffuseColor 1 0 0 transparency 0 }\n    USE Group\n  }\n}\n";
   SoSeparator* root = readIv(text);
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   CoinMessageCapture messages;
   renderer->render(root);

@@ -1,7 +1,7 @@
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/SceneLoader.h"
 #include "scene/ViewSetup.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/LitPlane.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -15,7 +15,8 @@ namespace {
 TEST(HeadlessRendering, PointLitPlaneMatchesLambertEverywhere) {
   init();
   std::string error;
-  auto renderer = OffscreenRenderer::create(test::LitPlane::kSize, test::LitPlane::kSize, error);
+  auto renderer =
+      test::CheckedRenderer::create(test::LitPlane::kSize, test::LitPlane::kSize, error);
   ASSERT_TRUE(renderer) << error;
   LoadedScene scene = loadScene(test::scenesDir() + "/lit_plane.iv");
   const ViewSetup view = ViewSetup::prepare(scene.root.get(), SbViewportRegion(240, 240));
@@ -30,7 +31,7 @@ TEST(HeadlessRendering, PointLitPlaneMatchesLambertEverywhere) {
 TEST(HeadlessRendering, RepeatedFramesAreIdentical) {
   init();
   std::string error;
-  auto renderer = OffscreenRenderer::create(64, 48, error);
+  auto renderer = test::CheckedRenderer::create(64, 48, error);
   ASSERT_TRUE(renderer) << error;
   LoadedScene scene = loadScene(test::scenesDir() + "/coloured_glasses.iv");
   const ViewSetup view = ViewSetup::prepare(scene.root.get(), SbViewportRegion(64, 48));

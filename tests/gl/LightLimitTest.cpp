@@ -3,10 +3,10 @@
 // draws what Coin draws: the group by GL (RASTER), by the tracer (TRACER) and the reference,
 // with lights inside the group, outside it, and outside any group; and each says once that
 // lights were dropped (issue 36: the tracer and the reference lit with all of them).
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/CoinMessageCapture.h"
 #include "scene/CoinRef.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoSeparator.h>
@@ -100,7 +100,7 @@ TEST_P(LightLimitGroup, EveryPathLightsWithTheFirstEightInForceAndSaysSoOnce) {
     SCOPED_TRACE(renderer);
     CoinMessageCapture messages;
     std::string error;
-    auto offscreen = OffscreenRenderer::create(kSize, kSize, error);
+    auto offscreen = CheckedRenderer::create(kSize, kSize, error);
     ASSERT_TRUE(offscreen) << error;
     SoSeparator* root = readIv(scene(c.outside, c.inside, std::string("renderer ") + renderer));
     roots.emplace_back(root);

@@ -3,10 +3,10 @@
 // oblique angle, each by the map (MAP), the traced rays (RAYS), the shadow volumes (VOLUMES),
 // the opacity map (OPACITY_MAP) and the CPU reference, against pictures computed here from the
 // geometry alone.
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/CoinMessageCapture.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoCamera.h>
@@ -30,7 +30,8 @@ std::string sceneWith(const std::string& lights, const std::string& groupFields,
   std::ostringstream iv;
   iv << "#Inventor V2.1 ascii\nSeparator {\n"
      << "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
-     << "  TransparentShadowGroup { renderer RASTER\n    " << groupFields << "\n    " << lights << "\n"
+     << "  TransparentShadowGroup { renderer RASTER\n    " << groupFields << "\n    " << lights
+     << "\n"
      << "    Material { ambientColor 0 0 0 diffuseColor 1 1 1 specularColor 0 0 0 }\n"
      << "    Coordinate3 { point [ -1 1 0, 1 1 0, -1 -1 0, 1 -1 0 ] }\n"
      << "    QuadMesh { verticesPerRow 2 verticesPerColumn 2 }\n"
@@ -359,7 +360,7 @@ TEST(LightTypesMap, DirectionalMapFollowsTheCameraToCastersItDidNotCover) {
   const std::string text = twoFloorScene();
   SoSeparator* root = readIv(text);
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   const ExpectedImage expected = pictureOf(0.3, {obliqueLight(0.3, 1.0, 1.0)});
   renderer->render(root);

@@ -4,9 +4,9 @@
 // group had drawn stayed in memory (about 9 MB for coloured_shadows.iv; SceneRenderFuzzer ran
 // out of memory after 11,073 scenes). Each test draws a scene, lets it go and expects Coin to
 // delete the group (an SoNodeSensor's delete callback).
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/support/TestSupport.h"
 
 #include <Inventor/SoDB.h>
@@ -27,7 +27,7 @@ namespace {
 bool groupFreedAfterDrawing(const std::string& text, const char* renderer) {
   init();
   std::string error;
-  auto offscreen = OffscreenRenderer::create(64, 48, error);
+  auto offscreen = test::CheckedRenderer::create(64, 48, error);
   if (!offscreen) throw std::runtime_error(error);
   SoInput input;
   input.setBuffer(text.data(), text.size());

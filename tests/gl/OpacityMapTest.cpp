@@ -3,11 +3,11 @@
 // documented partial absorption nearer than that, computed here from the geometry and the
 // slice count alone, opaque casters as sharp as in a shadow map whatever the slices, and a
 // cost fixed by the slices, not by the layers a scene has.
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoSeparator.h>
@@ -202,7 +202,7 @@ TEST(OpacityMap, SharesAGroupWithADeepShadowMapAndSwitchesAtRunTime) {
   ASSERT_NE(first, nullptr);
   ASSERT_NE(second, nullptr);
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   const ShadowPicture picture{&scene, ColourModel::Saturate};
   const int methods[][2] = {{SoDeepShadowLight::MAP, SoDeepShadowLight::OPACITY_MAP},
@@ -260,7 +260,7 @@ TEST(OpacityMap, OutOfRangeSlicesAreClampedWithOneWarning) {
     auto* lamp = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
     ASSERT_NE(lamp, nullptr);
     std::string error;
-    auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+    auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
     ASSERT_TRUE(renderer) << error;
     std::vector<std::string> warnings;
     {

@@ -1,9 +1,9 @@
 #include "callbacks/GlCapabilities.h"
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/PeelStatistics.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "scene/CoinMessageCapture.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/PeelReference.h"
 #include "tests/gl/ShadowScene.h"
 
@@ -137,7 +137,7 @@ Rendered render(const std::string& text,
                 SoGLRenderAction::TransparencyType type = SoGLRenderAction::BLEND) {
   init();
   std::string error;
-  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  auto renderer = CheckedRenderer::create(kSize, kSize, error);
   if (!renderer) throw std::runtime_error(error);
   renderer->action().setTransparencyType(type);
   SoSeparator* root = readIv(text);
@@ -241,7 +241,7 @@ TEST(Peeling, FragmentListsGrowOnceForABusierView) {
   const std::string text = sceneText("method FRAGMENT_LISTS", sheets.str());
   init();
   std::string error;
-  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  auto renderer = CheckedRenderer::create(kSize, kSize, error);
   ASSERT_TRUE(renderer) << error;
   SoSeparator* root = readIv(text);
   renderer->render(root);
@@ -311,7 +311,7 @@ TEST(Peeling, TracedPictureIsKeptUntilTheSceneChanges) {
                "  DEF Shift Translation { translation 0 0 0 }\n  DEF Above Texture2 { }\n");
   init();
   std::string error;
-  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  auto renderer = CheckedRenderer::create(kSize, kSize, error);
   ASSERT_TRUE(renderer) << error;
   SoSeparator* root = readIv(text);
   const auto expectExact = [&](const std::string& scene, const char* when) {
@@ -400,7 +400,7 @@ TEST(Peeling, AutoTracesOnASoftwareRasteriserAndSaysSo) {
   init();
   CoinMessageCapture messages;
   std::string error;
-  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  auto renderer = CheckedRenderer::create(kSize, kSize, error);
   ASSERT_TRUE(renderer) << error;
   const bool software = GlCapabilities::queryCurrent().isSoftwareRenderer();
   SoSeparator* root = readIv(text);

@@ -1,8 +1,8 @@
 // PerContext: one object per GL context, freed when that context is destroyed.
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "nodes/PerContext.h"
 #include "scene/CoinRef.h"
+#include "tests/gl/CheckedRenderer.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
@@ -39,9 +39,9 @@ CoinRef<SoSeparator> sceneUsing(PerContext<Counted>& resources) {
   return root;
 }
 
-std::unique_ptr<OffscreenRenderer> makeRenderer() {
+std::unique_ptr<CheckedRenderer> makeRenderer() {
   std::string error;
-  auto renderer = OffscreenRenderer::create(8, 8, error);
+  auto renderer = CheckedRenderer::create(8, 8, error);
   EXPECT_TRUE(renderer) << error;
   return renderer;
 }

@@ -2,9 +2,9 @@
 // surfaces it captured before; the camera, the viewport or a caster moving captures them
 // again. Each case ends in the analytic picture of ShadowScene (not in agreement with an
 // earlier frame): a stale capture would put the shadows of the earlier view or geometry there.
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -47,13 +47,13 @@ ShadowScene tracedScene() {
 
 struct Rendering {
   SoSeparator* root = nullptr;
-  std::unique_ptr<OffscreenRenderer> renderer;
+  std::unique_ptr<CheckedRenderer> renderer;
   SoDeepShadowLight* lamp = nullptr;
 
   explicit Rendering(const ShadowScene& scene) {
     root = readIv(scene.text());  // initialises Coin and the plugin first
     std::string error;
-    renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+    renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
     EXPECT_TRUE(renderer) << error;
     lamp = static_cast<SoDeepShadowLight*>(SoNode::getByName("Lamp"));
     EXPECT_NE(lamp, nullptr);

@@ -1,13 +1,13 @@
 // SoDeepShadowLight's RAYS method (and, where they hold for both, VOLUMES): the deep shadow
 // tests' analytic pictures, now with no layer, resolution or bias error to allow for; AUTO's
 // choice; what is traced again and when.
-#include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/SoPath.h>
@@ -153,7 +153,7 @@ TEST(RayShadows, StaticFramesReuseTheTraceAMovedLightIsTracedAgainOnly) {
   scene = withRays(scene);
   SoSeparator* root = readIv(scene.text());  // initialises Coin and the plugin first
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   for (int i = 0; i < 3; ++i) renderer->render(root);
   DeepShadowStatistics stats = collectDeepShadowStatistics(root);
@@ -224,7 +224,7 @@ TEST_P(ScreenShadows, ACameraInsideTheGroupMovedIsTracedAgain) {
               "height 2.4 }\n");
   SoSeparator* root = readIv(text);
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   renderer->render(root);
   renderer->render(root);

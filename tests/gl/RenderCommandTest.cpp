@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <vector>
 
 namespace ivshadow {
 namespace {
@@ -66,7 +67,15 @@ TEST(RenderCommand, StatsJsonHasTheDocumentedKeys) {
   EXPECT_EQ(stats.at("frame_ms").size(), 3u);
   EXPECT_GT(stats.at("frame_ms_min").get<double>(), 0.0);
   EXPECT_LE(stats.at("frame_ms_min").get<double>(), stats.at("frame_ms_median").get<double>());
-  EXPECT_GE(stats.at("gpu_ms_median").get<double>(), 0.0);
+  // GL_TIME_ELAPSED of each frame's traversal: the contexts here have timer queries (core since
+  // GL 3.3) and a frame that draws takes some time, so each is above 0, which is what a frame
+  // without a timer reads; the summary figures are those of the list.
+  std::vector<double> gpu = stats.at("gpu_ms").get<std::vector<double>>();
+  ASSERT_EQ(gpu.size(), 3u);
+  for (double ms : gpu) EXPECT_GT(ms, 0.0);
+  std::sort(gpu.begin(), gpu.end());
+  EXPECT_EQ(stats.at("gpu_ms_min").get<double>(), gpu[0]);
+  EXPECT_EQ(stats.at("gpu_ms_median").get<double>(), gpu[1]);
   EXPECT_TRUE(stats.at("passes").is_object());
   EXPECT_TRUE(stats.at("passes").contains("scene_ms"));
   EXPECT_EQ(stats.at("transparency"), "SORTED_LAYERS_BLEND");

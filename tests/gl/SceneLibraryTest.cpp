@@ -1,4 +1,3 @@
-#include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
@@ -7,6 +6,7 @@
 #include "scene/CoinMessageCapture.h"
 #include "scene/SceneLoader.h"
 #include "scene/ViewSetup.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/support/TestSupport.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -46,7 +46,7 @@ void setMethod(SoNode* root, int method) {
 }
 
 // Two frames without a message from Coin, and a picture that is not mostly black.
-void renderTwiceQuietly(OffscreenRenderer& renderer, SoNode* root) {
+void renderTwiceQuietly(test::CheckedRenderer& renderer, SoNode* root) {
   {
     CoinMessageCapture capture;
     renderer.render(root);
@@ -68,7 +68,7 @@ TEST_P(SceneLibrary, RendersWithItsShadows) {
   init();
   constexpr int kWidth = 160, kHeight = 120;
   std::string error;
-  auto renderer = OffscreenRenderer::create(kWidth, kHeight, error);
+  auto renderer = test::CheckedRenderer::create(kWidth, kHeight, error);
   ASSERT_TRUE(renderer) << error;
   LoadedScene loaded = loadScene(test::scenesDir() + "/" + scene.file);
   EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();

@@ -1,10 +1,10 @@
-#include "headless/OffscreenRenderer.h"
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
 #include "scene/SceneLoader.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/LitPlane.h"
 #include "tests/gl/ShadowScene.h"
 
@@ -105,7 +105,7 @@ TEST(ShadowGroup, TwoSidedLightingHoldsInEveryFrameAndTransparencyType) {
   };
   for (const auto type : {SoGLRenderAction::BLEND, SoGLRenderAction::DELAYED_BLEND}) {
     std::string error;
-    auto renderer = OffscreenRenderer::create(LitPlane::kSize, LitPlane::kSize, error);
+    auto renderer = CheckedRenderer::create(LitPlane::kSize, LitPlane::kSize, error);
     ASSERT_TRUE(renderer) << error;
     renderer->action().setTransparencyType(type);
     for (int frame = 1; frame <= 3; ++frame) {
@@ -265,7 +265,7 @@ TEST(ShadowGroup, MapsAreRebuiltOnlyWhenSomethingUnderTheGroupChanged) {
   scene.filters = {kRedGlass};
   SoSeparator* root = readIv(scene.text());
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   auto rebuilds = [&] { return collectDeepShadowStatistics(root).rebuilds; };
 
@@ -309,7 +309,7 @@ TEST(ShadowGroup, OutOfRangeFieldsAreClampedWithOneWarningEach) {
   ASSERT_NE(lamp, nullptr);
   lamp->bias = std::nanf("");  // the file format cannot spell NaN; an application can
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   std::vector<std::string> warnings;
   {

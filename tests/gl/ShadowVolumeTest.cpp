@@ -2,10 +2,10 @@
 // shadow volume, what is drawn again when, and textured casters. The analytic pictures, a
 // camera inside the group and agreement with the exact reference hold for both methods and
 // are tested for both (tests/gl/RayShadowTest.cpp, ScreenShadows*).
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "scene/CoinMessageCapture.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoSeparator.h>
@@ -68,7 +68,7 @@ TEST(ShadowVolumes, NoBvhNoMapNoRaysAndAMovedLightDrawsAgain) {
   scene = withVolumes(scene);
   SoSeparator* root = readIv(scene.text());
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   for (int i = 0; i < 2; ++i) renderer->render(root);
   DeepShadowStatistics stats = collectDeepShadowStatistics(root);
@@ -123,7 +123,7 @@ TEST(ShadowVolumes, ATexturedCasterCastsItsMeanColourAndSaysSoOnce) {
   SoSeparator* root = readIv(scene.text());  // initialises Coin and the plugin first
   CoinMessageCapture capture;  // after Coin's initialisation, which installs its own handlers
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   renderer->render(root);
   // A moved light draws the volumes again from the same casters: no second warning.

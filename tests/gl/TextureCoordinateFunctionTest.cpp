@@ -4,9 +4,9 @@
 // which compute the coordinates themselves (nodes/TexGenWatchElement.h). The answers here
 // are plain Coin's fixed-function pictures of the same shapes without a group (Coin's and
 // Mesa's code, none of the plugin's), and for the plane an analytic one.
-#include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "ivshadow/IvShadowInit.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/nodes/SoSeparator.h>
@@ -140,7 +140,7 @@ TEST(TextureCoordinateFunction, RenderCachesInsideTheGroupKeepTheFunction) {
   init();
   SoSeparator* root = readIv(sceneWith(kWrappers[0], body));
   std::string error;
-  auto renderer = OffscreenRenderer::create(kSize, kSize, error);
+  auto renderer = CheckedRenderer::create(kSize, kSize, error);
   ASSERT_TRUE(renderer) << error;
   for (int frame = 0; frame < 6; ++frame) renderer->render(root);
   const ImageComparison c =

@@ -4,10 +4,10 @@
 // threads but not COIN_THREADSAFE: Coin_HAVE_SAFETHREAD 0) locks its GL glue and cache-context
 // tables, but not its name dictionaries or notification counter; so the graphs are read and
 // their fields set on the main thread before the threads start, and the threads only render.
-#include "headless/OffscreenRenderer.h"
 #include "image/ImageComparison.h"
 #include "image/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 #include "tests/support/TestSupport.h"
 
@@ -67,7 +67,7 @@ struct Pictures {
 // Renders each graph kFrames times in a new context made on the calling thread.
 void renderBoth(const Graphs& graphs, Pictures& out) {
   std::string error;
-  auto renderer = OffscreenRenderer::create(kWidth, kHeight, error);
+  auto renderer = test::CheckedRenderer::create(kWidth, kHeight, error);
   if (!renderer) {
     out.error = "no headless GL context: " + error;
     return;
