@@ -15,6 +15,8 @@ std::string CasterBuffers::upload(const SceneTriangles& triangles) {
   if (!vertexArray_) {
     vertexArray_ = createVertexArray();
     vertexBuffer_ = createBuffer();
+    labelGlObject(GL_VERTEX_ARRAY, vertexArray_.get(), "map casters");
+    labelGlObject(GL_BUFFER, vertexBuffer_.get(), "map casters' vertices");
     const GLuint vao = vertexArray_.get();
     glVertexArrayVertexBuffer(vao, 0, vertexBuffer_.get(), 0, sizeof(TriangleVertex));
     const GLuint offsets[3] = {offsetof(TriangleVertex, position), offsetof(TriangleVertex, colour),

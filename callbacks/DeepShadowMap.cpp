@@ -81,6 +81,8 @@ void DeepShadowMap::allocateScratch(const MapRequest& request) {
   scratchDepth_ = createTargetArray(GL_R32F, size, scratchLayersInAll(request));
   scratchVisibility_ =
       createTargetArray(visibilityFormat(request), size, scratchLayersInAll(request));
+  labelGlObject(GL_TEXTURE, scratchDepth_.get(), "map build scratch depths");
+  labelGlObject(GL_TEXTURE, scratchVisibility_.get(), "map build scratch visibilities");
 }
 
 void DeepShadowMap::clearScratch() {
@@ -108,6 +110,12 @@ void DeepShadowMap::allocatePeelTargets(const MapRequest& request) {
   const GLenum drawBuffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
                                  GL_COLOR_ATTACHMENT3};
   glNamedFramebufferDrawBuffers(framebuffer_.get(), 4, drawBuffers);
+  for (int i = 0; i < 2; ++i) {
+    labelGlObject(GL_TEXTURE, peelDepth_[i].get(), "map peel depth " + std::to_string(i));
+    labelGlObject(GL_TEXTURE, peelVisibility_[i].get(), "map peel visibility " + std::to_string(i));
+  }
+  labelGlObject(GL_RENDERBUFFER, depthBuffer_.get(), "map peel depth buffer");
+  labelGlObject(GL_FRAMEBUFFER, framebuffer_.get(), "map peel target");
 }
 
 int DeepShadowMap::allocateKept(const MapRequest& request, MapBuildResult& result) {
@@ -126,6 +134,8 @@ int DeepShadowMap::allocateKept(const MapRequest& request, MapBuildResult& resul
   if (!depth_ || keptSize_ != size || keptLayers_ != layers || keptFormat_ != format) {
     depth_ = createTargetArray(GL_R32F, size, layers);
     visibility_ = createTargetArray(format, size, layers);
+    labelGlObject(GL_TEXTURE, depth_.get(), "deep shadow map depths");
+    labelGlObject(GL_TEXTURE, visibility_.get(), "deep shadow map visibilities");
     keptSize_ = size;
     keptLayers_ = layers;
     keptFormat_ = format;

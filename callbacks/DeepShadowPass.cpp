@@ -2,6 +2,7 @@
 
 #include "GlslSources.h"
 #include "callbacks/GlAllocationCheck.h"
+#include "callbacks/GlHandles.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/MapFragmentLists.h"
 
@@ -96,6 +97,9 @@ std::uint64_t DeepShadowPass::peakBytesFor(const MapRequest& request) {
 
 MapBuildResult DeepShadowPass::build(int slot, const MapRequest& request) {
   const bool opacity = request.slices > 0;
+  const GlDebugGroup group(
+      (opacity ? "opacity map build, light " : "deep shadow map build, light ") +
+      std::to_string(slot));
   if (int(maps_.size()) <= slot) maps_.resize(std::size_t(slot) + 1);
   if (int(opacityMaps_.size()) <= slot) opacityMaps_.resize(std::size_t(slot) + 1);
   auto& map = maps_[std::size_t(slot)];

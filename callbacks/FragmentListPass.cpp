@@ -32,6 +32,9 @@ std::unique_ptr<FragmentListPass> FragmentListPass::create(std::string& whyNot) 
       whyNot);
   if (!pass->resolve_) return nullptr;
   pass->emptyVertexArray_ = createVertexArray();
+  labelGlObject(GL_PROGRAM, pass->resolve_.name(), "fragment lists resolve");
+  labelGlObject(GL_VERTEX_ARRAY, pass->emptyVertexArray_.get(),
+                "fragment lists full-screen triangle");
   GLint64 maxBytes = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBytes);
   pass->maxBytes_ = std::uint64_t(std::max<GLint64>(maxBytes, 0));
@@ -70,6 +73,10 @@ std::string FragmentListPass::allocateImages(int width, int height) {
   glNamedFramebufferDrawBuffer(framebuffer_.get(), GL_NONE);
   failure = framebufferIncompleteness(framebuffer_.get());
   if (!failure.empty()) return "the fragment lists' framebuffer is incomplete (" + failure + ")";
+  labelGlObject(GL_TEXTURE, heads_.get(), "fragment list heads");
+  labelGlObject(GL_TEXTURE, counts_.get(), "fragment list counts");
+  labelGlObject(GL_TEXTURE, opaqueDepth_.get(), "fragment lists opaque depth");
+  labelGlObject(GL_FRAMEBUFFER, framebuffer_.get(), "fragment list pass target");
   width_ = width;
   height_ = height;
   return {};
@@ -84,6 +91,7 @@ bool FragmentListPass::allocateList(std::uint64_t overflow) {
   if (!glAllocationError(GlAllocation::FragmentList).empty()) return false;
   if (fixedLayers_ > 0 && !glAllocationError(GlAllocation::FragmentSlots).empty()) return false;
   list_ = std::move(list);
+  labelGlObject(GL_BUFFER, list_.get(), "fragment lists");
   overflowCapacity_ = overflow;
   return true;
 }
@@ -109,6 +117,7 @@ bool FragmentListPass::begin(int x, int y, int width, int height) {
       return false;
     }
   }
+  passGroup_ = std::make_unique<GlDebugGroup>("fragment list pass");
   saved_ = std::make_unique<GlStateScope>(
       GlStateScope::kFramebuffers | GlStateScope::kStorageBuffers | GlStateScope::kImageBindings);
   targetFramebuffer_ = saved_->drawFramebuffer();
@@ -146,6 +155,7 @@ FragmentListPass::Outcome FragmentListPass::finish() {
   GLuint header[8] = {};
   glGetNamedBufferSubData(list_.get(), 0, sizeof(header), header);
   saved_.reset();
+  passGroup_.reset();
   overflowUsed_ = header[kOverflowUsed];
   if (header[kCrowded] != 0u) return Outcome::Crowded;
   if (overflowUsed_ <= overflowCapacity_) {
@@ -173,6 +183,7 @@ void FragmentListPass::countStored() {
 }
 
 void FragmentListPass::resolve() {
+  const GlDebugGroup group("fragment lists resolve");
   GlStateScope scope(
       GlStateScope::kFramebuffers | GlStateScope::kViewport | GlStateScope::kProgram |
       GlStateScope::kVertexArray | GlStateScope::kStorageBuffers | GlStateScope::kImageBindings |

@@ -77,6 +77,7 @@ class FragmentListPass {
   GlTexture opaqueDepth_;
   GlFramebuffer framebuffer_;
   std::unique_ptr<GlStateScope> saved_;
+  std::unique_ptr<GlDebugGroup> passGroup_;  // the debugger's group, begin() to finish()
   int targetFramebuffer_ = 0;
   std::array<int, 4> viewport_{};
 };

@@ -67,4 +67,31 @@ GlTexture createTargetArray(unsigned int format, int size, int layers) {
   return texture;
 }
 
+namespace {
+
+// Asked on every use, of the current context (contexts of one process may differ); the
+// version string answers without a state query, and the extension list is searched only on
+// a context older than 4.3.
+bool debugLabels() {
+  return epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_KHR_debug");
+}
+
+}  // namespace
+
+void labelGlObject(unsigned int identifier, unsigned int name, const std::string& label) {
+  if (name == 0 || !debugLabels()) return;
+  const std::string text = "ivshadow " + label;
+  glObjectLabel(identifier, name, GLsizei(text.size()), text.c_str());
+}
+
+GlDebugGroup::GlDebugGroup(const std::string& name) : pushed_(debugLabels()) {
+  if (!pushed_) return;
+  const std::string text = "ivshadow " + name;
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, GLsizei(text.size()), text.c_str());
+}
+
+GlDebugGroup::~GlDebugGroup() {
+  if (pushed_) glPopDebugGroup();
+}
+
 }  // namespace ivshadow

@@ -3,6 +3,8 @@
 #include "callbacks/GlObject.h"
 #include "ivshadow/Export.h"
 
+#include <string>
+
 namespace ivshadow {
 
 // Release functors for the GL object kinds the passes own, and the owners built from them.
@@ -43,5 +45,29 @@ IVSHADOW_INTERNAL GlTexture createTarget2D(unsigned int format, int width, int h
 // A size x size 2D array texture of `layers` layers, one level, nearest sampling clamped to
 // the edge: a map's layers, read by texel.
 GlTexture createTargetArray(unsigned int format, int size, int layers);
+
+// Names for a GPU debugger (RenderDoc, apitrace, Nsight): the passes' GL objects labelled and
+// their commands grouped, through KHR_debug. Where the current context lacks KHR_debug (core
+// from OpenGL 4.3; the passes need 4.5, so only a context that draws no pass lacks it) both do
+// nothing.
+
+// Labels GL object `name` of kind `identifier` (GL_TEXTURE, GL_FRAMEBUFFER, GL_BUFFER,
+// GL_PROGRAM, GL_VERTEX_ARRAY, ...) "ivshadow <label>".
+IVSHADOW_INTERNAL void labelGlObject(unsigned int identifier, unsigned int name,
+                                     const std::string& label);
+
+// The GL commands issued while it lives, grouped as "ivshadow <name>" (glPushDebugGroup and
+// glPopDebugGroup): a debugger shows each pass as one node of the frame. Made and destroyed
+// with the same context current, nested like any scope.
+class IVSHADOW_INTERNAL GlDebugGroup {
+ public:
+  explicit GlDebugGroup(const std::string& name);
+  ~GlDebugGroup();
+  GlDebugGroup(const GlDebugGroup&) = delete;
+  GlDebugGroup& operator=(const GlDebugGroup&) = delete;
+
+ private:
+  bool pushed_ = false;
+};
 
 }  // namespace ivshadow

@@ -2,7 +2,14 @@
 
 #include <epoxy/gl.h>
 
+#include <atomic>
+
 namespace ivshadow {
+namespace {
+
+std::atomic<bool> waitForResults{false};
+
+}  // namespace
 
 GlPassTimer::GlPassTimer() {
   GLuint names[2] = {0, 0};
@@ -12,20 +19,41 @@ GlPassTimer::GlPassTimer() {
 }
 
 void GlPassTimer::start() {
+  if (pending_) resolve(false);
+  pending_ = false;
   glQueryCounter(start_.get(), GL_TIMESTAMP);
 }
 
 void GlPassTimer::stop() {
   glQueryCounter(stop_.get(), GL_TIMESTAMP);
-  measured_ = true;
+  pending_ = true;
 }
 
 double GlPassTimer::elapsedMs() const {
-  if (!measured_) return 0.0;
+  if (pending_) resolve(waitsForResults());
+  return lastMs_;
+}
+
+void GlPassTimer::resolve(bool wait) const {
+  if (!wait) {
+    // The stop timestamp comes after the start one: once it is available, both are.
+    GLuint available = GL_FALSE;
+    glGetQueryObjectuiv(stop_.get(), GL_QUERY_RESULT_AVAILABLE, &available);
+    if (available != GL_TRUE) return;
+  }
   GLuint64 begin = 0, end = 0;
   glGetQueryObjectui64v(start_.get(), GL_QUERY_RESULT, &begin);
   glGetQueryObjectui64v(stop_.get(), GL_QUERY_RESULT, &end);
-  return end > begin ? static_cast<double>(end - begin) * 1e-6 : 0.0;
+  lastMs_ = end > begin ? static_cast<double>(end - begin) * 1e-6 : 0.0;
+  pending_ = false;
+}
+
+void GlPassTimer::setWaitForResults(bool wait) {
+  waitForResults = wait;
+}
+
+bool GlPassTimer::waitsForResults() {
+  return waitForResults;
 }
 
 }  // namespace ivshadow

@@ -8,18 +8,35 @@ namespace ivshadow {
 // GL_TIME_ELAPSED query (GlTimerQuery) it may run while another timer query is active: the
 // headless renderer and the viewer time whole frames with one. Made and used with its GL
 // context current.
+//
+// Reading a result the GPU has not reached stalls the CPU until it does, so results are
+// waited for only while someone reads the timings (setWaitForResults, which the statistics'
+// pass timing sets); otherwise a read takes the result only once GL_QUERY_RESULT_AVAILABLE
+// says it is there, and gives the latest one that was.
 class GlPassTimer {
  public:
   GlPassTimer();
+  // A measurement still unread when the next starts is resolved first if GL has its result
+  // (the frame before has usually finished by then), and dropped if not.
   void start();
   void stop();
-  // Waits for both timestamps; 0 before the first start()/stop().
+  // The last measurement's time: waited for while results are waited for; otherwise the
+  // latest measurement whose result GL had, 0 before the first.
   double elapsedMs() const;
 
+  // Whether elapsedMs waits for the GPU, for every pass timer of the process.
+  static void setWaitForResults(bool wait);
+  static bool waitsForResults();
+
  private:
+  // Reads the pending measurement into lastMs_ when `wait` or when GL has its result.
+  void resolve(bool wait) const;
+
   GlObject<GlQueryRelease> start_;
   GlObject<GlQueryRelease> stop_;
-  bool measured_ = false;
+  // What reading caches: a const read may resolve the pending measurement.
+  mutable bool pending_ = false;  // stopped and not read yet
+  mutable double lastMs_ = 0.0;
 };
 
 }  // namespace ivshadow

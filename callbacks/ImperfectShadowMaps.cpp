@@ -61,6 +61,7 @@ std::string ImperfectShadowMaps::link() {
 }
 
 std::string ImperfectShadowMaps::build(const BounceMapRequest& request) {
+  const GlDebugGroup group("bounce: imperfect shadow maps");
   // Its own framebuffer, programs, blending, points and image units; the buffers on units 0
   // and 1.
   GlStateScope scope(GlStateScope::kFramebuffers | GlStateScope::kViewport |
@@ -107,6 +108,7 @@ std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
     release();
     return "no memory for the imperfect shadow maps (" + failed + ")";
   }
+  labelGlObject(GL_TEXTURE, atlas_.get(), "imperfect shadow maps atlas");
   tiles_ = tiles;
   const float empty[4] = {kIsmEmpty, 0.0f, 0.0f, 0.0f};
   for (int level = 0; level < kLevels; ++level)

@@ -79,6 +79,8 @@ std::unique_ptr<MapFragmentLists> MapFragmentLists::create(std::string& whyNot) 
     return nullptr;
   }
   lists->framebuffer_ = createFramebuffer();
+  labelGlObject(GL_BUFFER, lists->flags_.get(), "map fragment lists flags");
+  labelGlObject(GL_FRAMEBUFFER, lists->framebuffer_.get(), "map fragment lists target");
   return lists;
 }
 

@@ -24,7 +24,8 @@ GLenum sliceFormat(const MapRequest& request) {
 std::uint64_t OpacityMap::bytesFor(const MapRequest& request) {
   const std::uint64_t texels =
       std::uint64_t(request.resolution) * std::uint64_t(request.resolution);
-  const std::uint64_t perFace = 4u + std::uint64_t(request.slices) * (request.halfPrecision ? 8u : 16u);
+  const std::uint64_t perFace =
+      4u + std::uint64_t(request.slices) * (request.halfPrecision ? 8u : 16u);
   return texels * std::uint64_t(request.frame.faceCount) * perFace;
 }
 
@@ -48,8 +49,11 @@ MapBuildResult OpacityMap::build(const MapRequest& request, const GlProgram& pro
       return result;
     }
     shape_ = shape;
+    labelGlObject(GL_TEXTURE, opaque_.get(), "opacity map opaque depths");
+    labelGlObject(GL_TEXTURE, slices_.get(), "opacity map slices");
   }
   framebuffer_ = createFramebuffer();
+  labelGlObject(GL_FRAMEBUFFER, framebuffer_.get(), "opacity map target");
   const float noOpaque[4] = {kOpacityNoOpaque, 0.0f, 0.0f, 0.0f};
   const float emptySlice[4] = {0.0f, 0.0f, 0.0f, kOpacityEmptySlice};
   glClearTexImage(opaque_.get(), 0, GL_RED, GL_FLOAT, noOpaque);

@@ -39,6 +39,9 @@ std::unique_ptr<PeelPass> PeelPass::create(std::string& whyNot) {
     return nullptr;
   }
   pass->emptyVertexArray_ = createVertexArray();
+  labelGlObject(GL_PROGRAM, pass->composite_.name(), "peel compositing");
+  labelGlObject(GL_BUFFER, pass->progress_.get(), "peel progress flag");
+  labelGlObject(GL_VERTEX_ARRAY, pass->emptyVertexArray_.get(), "peel full-screen triangle");
   pass->textureUnits_ = glInteger(GL_MAX_TEXTURE_IMAGE_UNITS);
   pass->firstUnit_ = firstPeelUnit(pass->textureUnits_);
   return pass;
@@ -75,6 +78,16 @@ std::string PeelPass::allocate(int width, int height) {
   backFramebuffer_ = createFramebuffer();
   glNamedFramebufferTexture(backFramebuffer_.get(), GL_COLOR_ATTACHMENT0, backAccumulation_.get(),
                             0);
+  for (int i = 0; i < 2; ++i) {
+    const std::string n = std::to_string(i);
+    labelGlObject(GL_TEXTURE, depthRange_[i].get(), "peel depth range " + n);
+    labelGlObject(GL_TEXTURE, front_[i].get(), "peel front layers " + n);
+    labelGlObject(GL_FRAMEBUFFER, peelFramebuffer_[i].get(), "peel pass target " + n);
+  }
+  labelGlObject(GL_TEXTURE, backLayer_.get(), "peel back layer");
+  labelGlObject(GL_TEXTURE, backAccumulation_.get(), "peel back accumulation");
+  labelGlObject(GL_TEXTURE, opaqueDepth_.get(), "peel opaque depth");
+  labelGlObject(GL_FRAMEBUFFER, backFramebuffer_.get(), "peel back accumulation target");
   std::string failure = glAllocationError(GlAllocation::Texture);
   if (!failure.empty()) {
     failure = "GL could not allocate the peel targets (" + failure + ")";
@@ -115,6 +128,7 @@ void submitImmediateMode() {
 }  // namespace
 
 void PeelPass::beginOpaque() {
+  opaqueGroup_ = std::make_unique<GlDebugGroup>("opaque pass (peeling's first)");
   // Only the storage binding changes: the opaque pass draws where and how Coin chose.
   savedOpaque_ = std::make_unique<GlStateScope>(GlStateScope::kStorageBuffers);
   const GLuint none = 0u;
@@ -128,10 +142,12 @@ bool PeelPass::endOpaque() {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(progress_.get(), 0, sizeof(seen), &seen);
   savedOpaque_.reset();
+  opaqueGroup_.reset();
   return seen != 0u;
 }
 
 void PeelPass::begin(int x, int y, int width, int height) {
+  peelingGroup_ = std::make_unique<GlDebugGroup>("depth peeling");
   timer_.start();
   // Until end(): the peel targets with MAX blending, the progress flag, the compositing
   // program drawing with depth writes off, and the peel textures on their units.
@@ -157,6 +173,7 @@ void PeelPass::begin(int x, int y, int width, int height) {
 }
 
 void PeelPass::startPass(int pass) {
+  passGroup_ = std::make_unique<GlDebugGroup>("peel pass " + std::to_string(pass));
   const int write = pass % 2, read = 1 - write;
   const GLuint fbo = peelFramebuffer_[std::size_t(write)].get();
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
@@ -200,6 +217,7 @@ bool PeelPass::finishPass(int pass, bool dual) {
   submitImmediateMode();
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(progress_.get(), 0, sizeof(deeper), &deeper);
+  passGroup_.reset();
   return deeper != 0u;
 }
 
@@ -207,6 +225,7 @@ void PeelPass::end(int passes) {
   if (passes == 0) {  // nothing was peeled: leave the opaque picture as it is
     saved_.reset();
     timer_.stop();
+    peelingGroup_.reset();
     return;
   }
   const int last = (passes - 1) % 2;
@@ -228,6 +247,7 @@ void PeelPass::end(int passes) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   saved_.reset();
   timer_.stop();
+  peelingGroup_.reset();
 }
 
 FragmentListPass* PeelPass::fragmentLists(std::string& whyNot) {

@@ -83,6 +83,11 @@ class PeelPass {
   GlFramebuffer backFramebuffer_;
   std::unique_ptr<GlStateScope> saved_;
   std::unique_ptr<GlStateScope> savedOpaque_;
+  // The debugger's groups of the opaque pass, of the peeling (begin() to end()) and of the
+  // current peel pass (startPass() to finishPass()).
+  std::unique_ptr<GlDebugGroup> opaqueGroup_;
+  std::unique_ptr<GlDebugGroup> peelingGroup_;
+  std::unique_ptr<GlDebugGroup> passGroup_;
   int targetFramebuffer_ = 0;
   std::array<int, 4> viewport_{};
   int textureUnits_ = 0;

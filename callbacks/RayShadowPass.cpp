@@ -54,7 +54,16 @@ std::string RayShadowPass::allocate(int width, int height) {
     if (!incomplete.empty())
       failure = "the ray capture framebuffer is incomplete (" + incomplete + ")";
   }
-  if (failure.empty()) return {};
+  if (failure.empty()) {
+    labelGlObject(GL_TEXTURE, depth_.get(), "ray capture depth");
+    for (std::size_t i = 0; i < framebuffers_.size(); ++i) {
+      const std::string n = std::to_string(i);
+      labelGlObject(GL_TEXTURE, positions_[i].get(), "ray capture positions " + n);
+      labelGlObject(GL_TEXTURE, normals_[i].get(), "ray capture normals " + n);
+      labelGlObject(GL_FRAMEBUFFER, framebuffers_[i].get(), "ray capture target " + n);
+    }
+    return {};
+  }
   // Nothing kept: the next capture (the view or the casters changed) tries again.
   positions_.clear();
   normals_.clear();
@@ -65,6 +74,7 @@ std::string RayShadowPass::allocate(int width, int height) {
 }
 
 std::string RayShadowPass::beginCapture(int x, int y, int width, int height) {
+  captureGroup_ = std::make_unique<GlDebugGroup>("ray capture");
   // Until endCapture(): the capture targets, their depth test and the previous captures on
   // two units. Binding texture 0 there unbinds every target, so both kinds are saved.
   saved_ = std::make_unique<GlStateScope>(
@@ -81,6 +91,7 @@ std::string RayShadowPass::beginCapture(int x, int y, int width, int height) {
 }
 
 void RayShadowPass::startLayer(int layer, const UniformLocations& program) {
+  layerGroup_ = std::make_unique<GlDebugGroup>("ray capture layer " + std::to_string(layer));
   const std::size_t target = targetOf(layer);
   const GLuint fbo = framebuffers_[target].get();
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
@@ -118,6 +129,7 @@ bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
                     out.position.data());
   glGetTextureImage(normals_[target].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(floats * sizeof(float)),
                     out.normal.data());
+  layerGroup_.reset();
   for (std::size_t pixel = 0; pixel < floats / 4; ++pixel)
     if (out.traced(pixel)) return true;
   return false;
@@ -125,6 +137,7 @@ bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {
 
 void RayShadowPass::endCapture() {
   saved_.reset();
+  captureGroup_.reset();
 }
 
 std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int count,
@@ -162,6 +175,8 @@ std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int c
       release();
       return "GL could not allocate the traced shadows' textures (" + failure + ")";
     }
+    labelGlObject(GL_TEXTURE, shadingDepth_.get(), "traced shadows depths");
+    labelGlObject(GL_TEXTURE, shadingVisibility_.get(), "traced shadows visibilities");
     // A light nothing writes (its casters could not be traced) shows no shadow.
     const float lit[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     glClearTexImage(shadingVisibility_.get(), 0, GL_RGBA, GL_FLOAT, lit);
@@ -178,6 +193,7 @@ std::string RayShadowPass::upload(const std::vector<SurfaceLayer>& layers, int c
       release();
       return "GL could not allocate the captured positions' texture (" + failure + ")";
     }
+    labelGlObject(GL_TEXTURE, shadingPosition_.get(), "traced shadows positions");
     surfacesChanged = true;
   }
   if (!positions) shadingPosition_.reset();

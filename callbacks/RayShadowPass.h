@@ -78,6 +78,10 @@ class RayShadowPass {
   GlTexture depth_;
   std::vector<GlFramebuffer> framebuffers_;
   std::unique_ptr<GlStateScope> saved_;
+  // The debugger's groups of the capture (beginCapture() to endCapture()) and of its current
+  // layer (startLayer() to finishLayer()).
+  std::unique_ptr<GlDebugGroup> captureGroup_;
+  std::unique_ptr<GlDebugGroup> layerGroup_;
   std::vector<int> viewport_;
   GlTexture shadingDepth_;
   GlTexture shadingVisibility_;

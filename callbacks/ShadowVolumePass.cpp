@@ -49,6 +49,13 @@ std::unique_ptr<ShadowVolumePass> ShadowVolumePass::create(std::string& whyNot) 
   pass->emptyArray_ = createVertexArray();
   pass->sumsFramebuffer_ = createFramebuffer();
   pass->visibilityFramebuffer_ = createFramebuffer();
+  labelGlObject(GL_PROGRAM, pass->volumes_.name(), "shadow volumes");
+  labelGlObject(GL_PROGRAM, pass->resolve_.name(), "shadow volumes resolve");
+  labelGlObject(GL_BUFFER, pass->faceBuffer_.get(), "shadow volume faces");
+  labelGlObject(GL_VERTEX_ARRAY, pass->faceArray_.get(), "shadow volume faces");
+  labelGlObject(GL_FRAMEBUFFER, pass->sumsFramebuffer_.get(), "shadow volume sums target");
+  labelGlObject(GL_FRAMEBUFFER, pass->visibilityFramebuffer_.get(),
+                "shadow volume visibility target");
   return pass;
 }
 
@@ -69,6 +76,7 @@ std::string ShadowVolumePass::allocate(int width, int height) {
     width_ = height_ = 0;
     return "GL could not allocate the shadow volumes' sums (" + failure + ")";
   }
+  labelGlObject(GL_TEXTURE, sums_.get(), "shadow volume sums");
   for (int layer = 0; layer < kMaxScreenLayers; ++layer)
     glNamedFramebufferTextureLayer(sumsFramebuffer_.get(), GLenum(GL_COLOR_ATTACHMENT0 + layer),
                                    sums_.get(), 0, layer);
@@ -81,6 +89,7 @@ std::string ShadowVolumePass::draw(const std::vector<VolumeVertex>& faces, const
                                    unsigned positionArray, int layers, unsigned visibilityArray,
                                    int first, int width, int height, int unit) {
   if (layers <= 0) return {};
+  const GlDebugGroup group("shadow volumes");
   std::string failure = allocate(width, height);
   if (!failure.empty()) return failure;
   const GlStateScope saved(GlStateScope::kFramebuffers | GlStateScope::kViewport |

@@ -1,23 +1,21 @@
 #include "ivshadow/DeepShadowStatistics.h"
 
+#include "callbacks/GlPassTimer.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 
 #include <algorithm>
-#include <atomic>
 
 namespace ivshadow {
 
-namespace {
-std::atomic<bool> passTimingOn{false};
-}  // namespace
-
+// The pass timers keep the switch: while it is off they read no result GL has not finished,
+// so the map builds, which are always timed, never wait for the GPU for a figure nobody reads.
 void setPassTiming(bool on) {
-  passTimingOn = on;
+  GlPassTimer::setWaitForResults(on);
 }
 
 bool passTiming() {
-  return passTimingOn;
+  return GlPassTimer::waitsForResults();
 }
 
 DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
