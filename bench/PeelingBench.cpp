@@ -30,7 +30,8 @@ constexpr int kSize = 400;
 constexpr double kViewHeight = 2.4;
 
 // kTraced: a SoTransparentShadowGroup with renderer TRACER (the stack traced on the CPU);
-// kTracedMoving: the same with the camera moving every frame, so that every frame traces;
+// kTracedMoving: the same with the camera moving every frame, so that every frame traces (in
+// full: movingResolution 1, where the default reduces a motion's frames);
 // kTracedReduced: moving, with movingResolution 0.5 (every frame after the first traced at
 // 200 x 200 and stretched), its error that of the refined still frame. kSeparatorTraced and
 // kSeparatorTracedMoving: a SoPeelingSeparator with method TRACER, still and moving.
@@ -70,7 +71,7 @@ std::string stackText(int depth, Method method) {
              ? "PeelingSeparator { method TRACER\n"
          : method == kTracedReduced
              ? "TransparentShadowGroup { renderer TRACER movingResolution 0.5\n"
-         : traced(method) ? "TransparentShadowGroup { renderer TRACER\n"
+         : traced(method) ? "TransparentShadowGroup { renderer TRACER movingResolution 1\n"
                           : "Separator {\n")
      << "BaseColor { rgb 0.5 0.5 0.5 }\n"
      << "Coordinate3 { point [ -1.1 -1.1 -2, 1.1 -1.1 -2, 1.1 1.1 -2, -1.1 1.1 -2 ] }\n"

@@ -1,17 +1,48 @@
 #include "nodes/CameraRays.h"
 
+#include <Inventor/SbDPMatrix.h>
 #include <Inventor/SbMatrix.h>
-#include <Inventor/SbVec3d.h>
 #include <Inventor/SbVec3f.h>
-#include <Inventor/SbVec4d.h>
 
 #include <glm/common.hpp>
+#include <glm/ext/vector_double4.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace ivshadow {
+namespace {
+
+using Rows = double[4][4];
+
+// The row vector (x, y, z, w) times `m`: SbDPMatrix::multVecMatrix of an SbVec4d.
+glm::dvec4 times(const Rows& m, double x, double y, double z, double w) {
+  return {x * m[0][0] + y * m[1][0] + z * m[2][0] + w * m[3][0],
+          x * m[0][1] + y * m[1][1] + z * m[2][1] + w * m[3][1],
+          x * m[0][2] + y * m[1][2] + z * m[2][2] + w * m[3][2],
+          x * m[0][3] + y * m[1][3] + z * m[2][3] + w * m[3][3]};
+}
+
+// The point (x, y, z) times `m`, divided by its w: SbDPMatrix::multVecMatrix of an SbVec3d.
+glm::dvec3 timesPoint(const Rows& m, double x, double y, double z) {
+  const double w = x * m[0][3] + y * m[1][3] + z * m[2][3] + m[3][3];
+  return {(x * m[0][0] + y * m[1][0] + z * m[2][0] + m[3][0]) / w,
+          (x * m[0][1] + y * m[1][1] + z * m[2][1] + m[3][1]) / w,
+          (x * m[0][2] + y * m[1][2] + z * m[2][2] + m[3][2]) / w};
+}
+
+// SbVec3d::length: the square root of the squares summed in order.
+double lengthOf(const glm::dvec3& v) {
+  return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+}
+
+void copyRows(const SbDPMatrix& from, Rows& to) {
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) to[r][c] = from[r][c];
+}
+
+}  // namespace
 
 CameraRays::CameraRays(const SbMatrix& viewing, const SbMatrix& projection, int width, int height,
                        const std::vector<glm::vec3>& positions, int viewportWidth,
@@ -19,16 +50,16 @@ CameraRays::CameraRays(const SbMatrix& viewing, const SbMatrix& projection, int 
     : width_(width),
       height_(height),
       viewportWidth_(viewportWidth > 0 ? viewportWidth : width),
-      viewportHeight_(viewportHeight > 0 ? viewportHeight : height),
-      worldToClip_(SbDPMatrix(viewing) * SbDPMatrix(projection)),
-      clipToWorld_(worldToClip_.inverse()) {
+      viewportHeight_(viewportHeight > 0 ? viewportHeight : height) {
+  const SbDPMatrix worldToClip = SbDPMatrix(viewing) * SbDPMatrix(projection);
+  copyRows(worldToClip, worldToClip_);
+  copyRows(worldToClip.inverse(), clipToWorld_);
   SbVec3f camera;
   viewing.inverse().multVecMatrix(SbVec3f(0.0f, 0.0f, 0.0f), camera);
-  const SbVec3d eye(camera);
-  eye_ = glm::dvec3(eye[0], eye[1], eye[2]);
+  eye_ = glm::dvec3(double(camera[0]), double(camera[1]), double(camera[2]));
   double farthest = 0.0;
   for (const glm::vec3& p : positions)
-    farthest = std::max(farthest, (SbVec3d(p.x, p.y, p.z) - eye).length());
+    farthest = std::max(farthest, lengthOf(glm::dvec3(p.x, p.y, p.z) - eye_));
   reach_ = 2.0 * farthest + 1.0;
 }
 
@@ -41,26 +72,25 @@ CameraRay CameraRays::rayAt(float nx, float ny) const {
   CameraRay ray;
   ray.nx = nx;
   ray.ny = ny;
-  SbVec4d nearPoint, farPoint;
-  clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, -1.0, 1.0), nearPoint);
-  clipToWorld_.multVecMatrix(SbVec4d(ray.nx, ray.ny, 1.0, 1.0), farPoint);
-  SbVec3d origin;
-  nearPoint.getReal(origin);
+  const glm::dvec4 nearPoint = times(clipToWorld_, ray.nx, ray.ny, -1.0, 1.0);
+  const glm::dvec4 farPoint = times(clipToWorld_, ray.nx, ray.ny, 1.0, 1.0);
+  const glm::dvec3 origin(nearPoint.x / nearPoint.w, nearPoint.y / nearPoint.w,
+                          nearPoint.z / nearPoint.w);
   // A far plane over about 1e7 times the near one rounds to infinity in the float projection
   // Coin gives GL (a near plane at 1e-11, or a far one at 1e12), and GL then draws out to
   // infinity: the ray ends past everything in the scene instead.
   // The reach counts from the eye; a ray may start behind it (an orthographic camera with a
   // negative nearDistance).
-  const double reach = reach_ + glm::length(glm::dvec3(origin[0], origin[1], origin[2]) - eye_);
-  const SbVec3d towardsFar = SbVec3d(farPoint[0], farPoint[1], farPoint[2]) - origin * farPoint[3];
-  SbVec3d end = origin + towardsFar * (reach / std::max(towardsFar.length(), 1e-300));
-  if (farPoint[3] > 0.0) {
-    SbVec3d farEnd;
-    farPoint.getReal(farEnd);
-    if ((farEnd - origin).length() < reach) end = farEnd;
+  const double reach = reach_ + glm::length(origin - eye_);
+  const glm::dvec3 towardsFar = glm::dvec3(farPoint) - origin * farPoint.w;
+  glm::dvec3 end = origin + towardsFar * (reach / std::max(lengthOf(towardsFar), 1e-300));
+  if (farPoint.w > 0.0) {
+    const glm::dvec3 farEnd(farPoint.x / farPoint.w, farPoint.y / farPoint.w,
+                            farPoint.z / farPoint.w);
+    if (lengthOf(farEnd - origin) < reach) end = farEnd;
   }
-  ray.origin = glm::vec3(origin[0], origin[1], origin[2]);
-  ray.direction = glm::vec3(end[0] - origin[0], end[1] - origin[1], end[2] - origin[2]);
+  ray.origin = glm::vec3(origin);
+  ray.direction = glm::vec3(end - origin);
   clip(ray);
   return ray;
 }
@@ -71,9 +101,8 @@ CameraRay CameraRays::rayAt(float nx, float ny) const {
 // so Coin) draws nothing.
 void CameraRays::clip(CameraRay& ray) const {
   const glm::vec3 end = ray.origin + ray.direction;
-  SbVec4d a, b;
-  worldToClip_.multVecMatrix(SbVec4d(ray.origin.x, ray.origin.y, ray.origin.z, 1.0), a);
-  worldToClip_.multVecMatrix(SbVec4d(end.x, end.y, end.z, 1.0), b);
+  const glm::dvec4 a = times(worldToClip_, ray.origin.x, ray.origin.y, ray.origin.z, 1.0);
+  const glm::dvec4 b = times(worldToClip_, end.x, end.y, end.z, 1.0);
   double first = 0.0, last = 1.0;
   // value(t) = p + t (q - p) >= 0, within a rounding slack of the values' size.
   const auto keep = [&](double p, double q) {
@@ -95,18 +124,16 @@ void CameraRays::clip(CameraRay& ray) const {
 float CameraRays::end(const CameraRay& ray, float limit) const {
   if (!(limit < 1.0f)) return ray.last;  // the far plane clips as in GL
   // The limit's point on this ray: its parameter, as the ray is linear in the world.
-  SbVec3d end;
-  clipToWorld_.multVecMatrix(SbVec3d(ray.nx, ray.ny, 2.0 * limit - 1.0), end);
-  const glm::vec3 toEnd = glm::vec3(end[0], end[1], end[2]) - ray.origin;
+  const glm::dvec3 end = timesPoint(clipToWorld_, ray.nx, ray.ny, 2.0 * limit - 1.0);
+  const glm::vec3 toEnd = glm::vec3(end) - ray.origin;
   return std::min(ray.last,
                   glm::dot(toEnd, ray.direction) / glm::dot(ray.direction, ray.direction));
 }
 
 float CameraRays::windowDepth(const CameraRay& ray, float t) const {
-  SbVec3d clip;
   const glm::vec3 p = ray.origin + t * ray.direction;
-  worldToClip_.multVecMatrix(SbVec3d(p.x, p.y, p.z), clip);
-  return glm::clamp(float(0.5 * clip[2] + 0.5), 0.0f, 1.0f);
+  const glm::dvec3 clip = timesPoint(worldToClip_, p.x, p.y, p.z);
+  return glm::clamp(float(0.5 * clip.z + 0.5), 0.0f, 1.0f);
 }
 
 }  // namespace ivshadow
@@ -122,10 +149,9 @@ double CameraRays::depthSlope(const CameraRay& ray, const glm::vec3& point,
     const float along = glm::dot(r.direction, normal);
     if (along == 0.0f) return std::nan("");
     const float t = glm::dot(point - r.origin, normal) / along;
-    SbVec4d clip;
     const glm::vec3 p = r.origin + t * r.direction;
-    worldToClip_.multVecMatrix(SbVec4d(p.x, p.y, p.z, 1.0), clip);
-    return clip[3] != 0.0 ? 0.5 * clip[2] / clip[3] + 0.5 : std::nan("");
+    const glm::dvec4 clip = times(worldToClip_, p.x, p.y, p.z, 1.0);
+    return clip.w != 0.0 ? 0.5 * clip.z / clip.w + 0.5 : std::nan("");
   };
   const double here = depthOnPlane(ray);
   const double across = depthOnPlane(rayAt(ray.nx + 2.0f / float(viewportWidth_), ray.ny));

@@ -2,8 +2,6 @@
 
 #include "scene/ShadowTypes.h"
 
-#include <Inventor/SbDPMatrix.h>
-
 #include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
@@ -56,13 +54,18 @@ class CameraRays {
   // 1, the whole depth range, where the plane is seen edge-on.
   double depthSlope(const CameraRay& ray, const glm::vec3& point, const glm::vec3& normal) const;
 
+  // A matrix as Coin stores it (row vectors times the matrix), its products written out as
+  // SbDPMatrix::multVecMatrix computes them, in the same order: a call into Coin for each of a
+  // pixel's four products was a quarter of a traced frame.
+  using Rows = double[4][4];
+
   int width_;
   int height_;
   int viewportWidth_;
   int viewportHeight_;
   glm::dvec3 eye_{0.0};
-  SbDPMatrix worldToClip_;
-  SbDPMatrix clipToWorld_;
+  Rows worldToClip_{};
+  Rows clipToWorld_{};
   double reach_ = 1.0;  // farther than every triangle from the camera, with room
 };
 

@@ -67,23 +67,10 @@ glm::vec4 sampleTexture(const TextureImage& image, float s, float t) {
                   glm::mix(texel(image, ix, iy + 1), texel(image, ix + 1, iy + 1), fx), fy);
 }
 
-SurfaceSample sampleSurface(const glm::vec4 colours[3], const glm::vec2 texCoords[3],
-                            const TextureImage* image, float u, float v) {
-  const float w = 1.0f - u - v;
-  SurfaceSample sample;
-  sample.colour = w * colours[0] + u * colours[1] + v * colours[2];
-  if (image != nullptr) {
-    const glm::vec2 st = w * texCoords[0] + u * texCoords[1] + v * texCoords[2];
-    sample.texel = sampleTexture(*image, st.x, st.y);
-  }
-  return sample;
-}
-
-glm::vec4 texturedColour(const glm::vec4& colour, const glm::vec4& texel,
-                         const TextureImage* image) {
-  if (image == nullptr) return colour;
-  const glm::vec3 blend(image->blendColour[0], image->blendColour[1], image->blendColour[2]);
-  return applyTextureModel(colour, texel, image->model, blend);
+glm::vec4 texturedColourOf(const glm::vec4& colour, const glm::vec4& texel,
+                           const TextureImage& image) {
+  const glm::vec3 blend(image.blendColour[0], image.blendColour[1], image.blendColour[2]);
+  return applyTextureModel(colour, texel, image.model, blend);
 }
 
 }  // namespace ivshadow

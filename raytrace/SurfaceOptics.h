@@ -44,12 +44,27 @@ struct SurfaceSample {
   glm::vec4 colour{1.0f};
   glm::vec4 texel{1.0f};
 };
-IVSHADOW_INTERNAL SurfaceSample sampleSurface(const glm::vec4 colours[3],
-                                              const glm::vec2 texCoords[3],
-                                              const TextureImage* image, float u, float v);
-// The sample's colour after the image's texture model (the colour itself without an image),
-// as Coin's fixed-function texturing and the shading program apply it.
-IVSHADOW_INTERNAL glm::vec4 texturedColour(const glm::vec4& colour, const glm::vec4& texel,
-                                           const TextureImage* image);
+// Inline, as texturedColour: the tracer asks for each surface a camera ray meets.
+inline SurfaceSample sampleSurface(const glm::vec4 colours[3], const glm::vec2 texCoords[3],
+                                   const TextureImage* image, float u, float v) {
+  const float w = 1.0f - u - v;
+  SurfaceSample sample;
+  sample.colour = w * colours[0] + u * colours[1] + v * colours[2];
+  if (image != nullptr) {
+    const glm::vec2 st = w * texCoords[0] + u * texCoords[1] + v * texCoords[2];
+    sample.texel = sampleTexture(*image, st.x, st.y);
+  }
+  return sample;
+}
+// The sample's colour after the image's texture model, as Coin's fixed-function texturing and
+// the shading program apply it.
+IVSHADOW_INTERNAL glm::vec4 texturedColourOf(const glm::vec4& colour, const glm::vec4& texel,
+                                             const TextureImage& image);
+// The same, or the colour itself without an image: inline, as most surfaces have none and the
+// tracer asks several times for each surface a camera ray meets.
+inline glm::vec4 texturedColour(const glm::vec4& colour, const glm::vec4& texel,
+                                const TextureImage* image) {
+  return image == nullptr ? colour : texturedColourOf(colour, texel, *image);
+}
 
 }  // namespace ivshadow
