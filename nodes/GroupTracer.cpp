@@ -86,8 +86,7 @@ void GroupTracer::refine(void* self, SoSensor*) {
 }
 
 const float* GroupTracer::reducedLimit(Context& context, const std::vector<float>& depth,
-                                       const std::array<int, 4>& viewport, int width,
-                                       int height) {
+                                       const std::array<int, 4>& viewport, int width, int height) {
   context.depthReduced.resize(std::size_t(width) * std::size_t(height));
   for (int y = 0; y < height; ++y) {
     const int fullY =
@@ -229,13 +228,17 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     options.depthBuffer = TracedPicturePass::drawDepthBuffer();
     options.viewportWidth = viewport[2];
     options.viewportHeight = viewport[3];
-    const float* limit = reduced ? reducedLimit(*context, depthNow, viewport, options.width,
-                                                options.height)
-                                 : depthNow.data();
+    const float* limit =
+        reduced ? reducedLimit(*context, depthNow, viewport, options.width, options.height)
+                : depthNow.data();
     // The first picture keeps no surfaces: a single frame (a batch render) would only pay for
     // them (about 15 MB at 800 x 600, each page a fault); the first change traces its camera
-    // rays again and keeps them for the changes after it.
-    options.surfaces = hadPicture ? &context->surfaces : nullptr;
+    // rays again and keeps them for the changes after it. Nor does a frame of a camera's
+    // motion, whose surfaces the next frame's rays do not meet: the frame after the motion
+    // keeps them.
+    const bool cameraMoving = !sameView && context->tracedLastFrame;
+    if (cameraMoving) context->surfaces.rows.clear();
+    options.surfaces = hadPicture && !cameraMoving ? &context->surfaces : nullptr;
     options.reuseSurfaces = sameView;
     scene_->trace(viewing, projection, limit, options, pixels_);
     const std::string error = context->pass->upload(options.width, options.height,

@@ -556,7 +556,21 @@ bool SceneTracer::viewDependent() const {
   return data_->extraction.fogFollowsView;
 }
 
-SceneTracer::SceneTracer(std::unique_ptr<Data> data) : data_(std::move(data)) {}
+// One worker's working memory: kept from trace to trace, as a frame's rows otherwise grew their
+// vectors from nothing again, and on cache lines of its own, as neighbouring workers wrote
+// into the same lines (the vectors' ends).
+struct alignas(64) WorkerMemory {
+  std::vector<Hit> hits[kMaxPacket];
+  RowShading shading;
+  RayCounts rays;
+};
+
+struct SceneTracer::Workers {
+  std::vector<WorkerMemory> memory;
+};
+
+SceneTracer::SceneTracer(std::unique_ptr<Data> data)
+    : data_(std::move(data)), workers_(std::make_unique<Workers>()) {}
 SceneTracer::~SceneTracer() = default;
 
 std::unique_ptr<SceneTracer> SceneTracer::fromScene(SoNode* root, int width, int height) {
@@ -609,9 +623,9 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
   const Tracer tracer(data_->extraction, data_->scene.get(), data_->packetWidth, viewing,
                       projection, options);
   const int workers = workerCount(options.threads);
-  std::vector<std::vector<Hit>> hits(static_cast<std::size_t>(workers) * kMaxPacket);
-  std::vector<RowShading> shading(static_cast<std::size_t>(workers));
-  std::vector<RayCounts> rays(static_cast<std::size_t>(workers));
+  std::vector<WorkerMemory>& memory = workers_->memory;
+  if (memory.size() < std::size_t(workers)) memory.resize(std::size_t(workers));
+  for (WorkerMemory& worker : memory) worker.rays = RayCounts{};
   SurfacesMet* kept = options.surfaces;
   const bool reuse = kept != nullptr && options.reuseSurfaces && options.height > 0 &&
                      kept->rows.size() == std::size_t(options.height) &&
@@ -626,15 +640,16 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
             depthLimit != nullptr
                 ? depthLimit + std::size_t(options.height - 1 - y) * std::size_t(options.width)
                 : nullptr;
-        std::vector<Hit>* found = &hits[std::size_t(worker) * kMaxPacket];
+        WorkerMemory& own = memory[std::size_t(worker)];
+        std::vector<Hit>* found = own.hits;
         SurfacesMet::Row* keptRow = kept != nullptr ? &kept->rows[std::size_t(y)] : nullptr;
         if (keptRow != nullptr && !reuse) {
           keptRow->hits.clear();
           keptRow->ends.resize(std::size_t(options.width));
           keptRow->depth.resize(std::size_t(options.width));
         }
-        RowShading& shades = shading[std::size_t(worker)];
-        RayCounts& counts = rays[std::size_t(worker)];
+        RowShading& shades = own.shading;
+        RayCounts& counts = own.rays;
         shades.clear();
         for (int x = 0; x < options.width; x += kMaxPacket) {
           const int count = std::min(kMaxPacket, options.width - x);
@@ -683,9 +698,9 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
     return false;
   }
   if (!reuse) out.cameraRays = pixels;
-  for (const RayCounts& count : rays) {
-    out.shadowRays += count.shadow;
-    out.bounceRays += count.bounce;
+  for (const WorkerMemory& worker : memory) {
+    out.shadowRays += worker.rays.shadow;
+    out.bounceRays += worker.rays.bounce;
   }
   return true;
 }

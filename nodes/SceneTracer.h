@@ -134,6 +134,9 @@ class IVSHADOW_INTERNAL SceneTracer {
                                        const std::function<void(SoCallbackAction&)>& apply);
   explicit SceneTracer(std::unique_ptr<Data> data);
   std::unique_ptr<Data> data_;
+  // The workers' working memory, kept from one trace to the next (SceneTracer.cpp).
+  struct Workers;
+  std::unique_ptr<Workers> workers_;
 };
 
 }  // namespace ivshadow

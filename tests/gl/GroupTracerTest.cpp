@@ -213,6 +213,34 @@ TEST(TracedGroup, AStillFrameDrawsThePictureKeptAndAMoveTracesAgain) {
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerScenes, 3);
 }
 
+// A camera's motion keeps no surfaces (the next frame's rays do not meet them): a light moved
+// after it traces the camera rays again, and the picture is the analytic one.
+TEST(TracedGroup, ALightMovedAfterACamerasMotionTracesTheCameraRaysAgain) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer && r.lamp);
+  auto* camera = static_cast<SoCamera*>(r.root->getChild(0));
+  const SbVec3f eye = camera->position.getValue();
+  r.frame();
+  const SbVec3f place = r.lamp->location.getValue();
+  r.lamp->location = place + SbVec3f(0.05f, 0.0f, 0.0f);
+  r.frame();  // the first change keeps the surfaces its camera rays met
+  r.lamp->location = place;
+  EXPECT_EQ(r.frame().tracerCameraRays, 0u) << "a light's move after a light's move";
+  for (const float step : {0.05f, 0.1f, 0.0f}) {
+    camera->position = eye + SbVec3f(step, 0.0f, 0.0f);
+    EXPECT_EQ(r.frame().tracerCameraRays, std::uint64_t(ShadowScene::kSize * ShadowScene::kSize));
+  }
+  r.lamp->location = place + SbVec3f(0.05f, 0.0f, 0.0f);
+  EXPECT_EQ(r.frame().tracerCameraRays, std::uint64_t(ShadowScene::kSize * ShadowScene::kSize))
+      << "the motion kept no surfaces to shade again";
+  r.lamp->location = place;
+  r.expectAnalytic(scene, "the light back after the motion");
+  EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerCameraRays, 0u)
+      << "the frame after the motion kept its surfaces";
+}
+
 // After a light moved the picture is composited from the surfaces kept, with their depth:
 // GL drawing behind the floor after the group stays hidden.
 TEST(TracedGroup, ThePictureOfAMovedLightKeepsItsDepth) {
