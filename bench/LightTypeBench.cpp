@@ -6,6 +6,7 @@
 #include "BenchScenes.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
+#include "ivshadow/ShadowMethod.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 
@@ -39,9 +40,8 @@ void LightTypeFrame(benchmark::State& state) {
     state.SkipWithError(error.c_str());
     return;
   }
-  SoSeparator* root = ivshadow::bench::sphereField(100000, true,
-                                                   ivshadow::bench::Shadows::DeepShadowGroup, 640,
-                                                   480);
+  SoSeparator* root = ivshadow::bench::sphereField(
+      100000, true, ivshadow::bench::Shadows::DeepShadowGroup, 640, 480);
   SoSearchAction search;
   search.setType(SoDeepShadowLight::getClassTypeId());
   search.apply(root);
@@ -81,8 +81,8 @@ void LightTypeFrame(benchmark::State& state) {
       static_cast<SoPointLight*>(light)->location.setValue(moved);
     state.SetIterationTime(renderer->render(root).wallMs * 1e-3);
   }
-  state.SetLabel(std::string(kindName(kind)) +
-                 (state.range(1) == SoDeepShadowLight::RAYS ? " RAYS" : " MAP"));
+  state.SetLabel(std::string(kindName(kind)) + " " +
+                 ivshadow::shadowMethodName(ivshadow::ShadowMethod(state.range(1))));
   renderer.reset();
   root->unref();
 }

@@ -15,6 +15,7 @@
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/PeelStatistics.h"
+#include "ivshadow/ShadowMethod.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 
@@ -91,10 +92,7 @@ void MethodFrame(benchmark::State& state) {
     state.counters["volume_faces"] = double(stats.volumeFaces);
     state.counters["layers"] = stats.rayLayers;
   }
-  state.SetLabel(std::string(method == SoDeepShadowLight::RAYS          ? "RAYS"
-                             : method == SoDeepShadowLight::VOLUMES     ? "VOLUMES"
-                             : method == SoDeepShadowLight::OPACITY_MAP ? "OPACITY_MAP"
-                                                                        : "MAP") +
+  state.SetLabel(std::string(ivshadow::shadowMethodName(ivshadow::ShadowMethod(method))) +
                  (moving ? " moving light" : " static"));
 }
 

@@ -45,6 +45,7 @@ nlohmann::json renderStatistics(const RenderOptions& options, const OffscreenRen
   std::vector<std::string> methods;
   for (const DeepShadowLightStatistics& light : shadows.lights) {
     bytes += light.bytes;
+    const std::string name = shadowMethodName(light.method);
     lights.push_back({{"light", light.name},
                       {"faces", light.layersUsed},
                       {"passes", light.passes},
@@ -56,13 +57,12 @@ nlohmann::json renderStatistics(const RenderOptions& options, const OffscreenRen
                       {"far_radius", light.farRadius},
                       {"projection", light.projection},
                       {"extent", light.extent},
-                      {"method", light.method},
+                      {"method", name},
                       {"map_build", light.mapBuild},
                       {"list_fragments", light.listFragments},
                       {"merged_texels", light.mergedTexels},
                       {"merge_error", light.mergeError}});
-    if (std::find(methods.begin(), methods.end(), light.method) == methods.end())
-      methods.push_back(light.method);
+    if (std::find(methods.begin(), methods.end(), name) == methods.end()) methods.push_back(name);
   }
   // The shadow method of each deep shadow light after AUTO was resolved, joined when they
   // differ ("MAP+RAYS"); empty without deep shadow lights.

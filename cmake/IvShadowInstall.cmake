@@ -13,7 +13,9 @@ set(IVSHADOW_PUBLIC_HEADERS
   include/ivshadow/SoTransparentShadowGroup.h
   include/ivshadow/SoPeelingSeparator.h
   include/ivshadow/DeepShadowStatistics.h
-  include/ivshadow/PeelStatistics.h)
+  include/ivshadow/PeelStatistics.h
+  include/ivshadow/ShadowMethod.h
+  include/ivshadow/ShadowFieldList.h)
 
 target_include_directories(ivshadow_core INTERFACE
                            $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)

@@ -1,11 +1,10 @@
 #include "nodes/DeepShadowSettings.h"
 
-#include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "nodes/ShadowFields.h"
+#include "nodes/ShadowFieldTable.h"
 #include "scene/WarnOnce.h"
 
 #include <Inventor/errors/SoDebugError.h>
@@ -54,12 +53,49 @@ float finiteOr(const SoNode& light, const char* field, float value, float fallba
   return fallback;
 }
 
+// The table's number fields clamp as the messages below say: an integer at both ends (a
+// resolution's high end is GL's largest texture), a float at most below, at 0.
+constexpr bool tableClampsAsSaid() {
+  for (const ShadowFieldSpec& f : kShadowFields) {
+    if (f.kind == ShadowFieldKind::Int &&
+        (f.low.kind != Bound::Clamp || f.high.kind == Bound::Panel))
+      return false;
+    if (f.kind == ShadowFieldKind::Float &&
+        ((f.low.kind == Bound::Clamp && f.low.value != 0.0) || f.high.kind != Bound::Panel))
+      return false;
+  }
+  return true;
+}
+static_assert(tableClampsAsSaid());
+
+// An integer field within the table's range, said once per node and field when `say` (a field
+// the light's method does not read is clamped quietly).
+int tableInt(const SoNode& node, ShadowFieldId id, int value, int maxTextureSize, bool say = true) {
+  const ShadowFieldSpec& f = shadowField(id);
+  const int low = int(f.low.value);
+  const int high =
+      f.high.kind == Bound::MaxTextureSize ? std::max(1, maxTextureSize) : int(f.high.value);
+  return say ? clampInt(node, f.name, value, low, high) : std::clamp(value, low, high);
+}
+
+// A float field: not a finite number, its default; below the table's low end, where that
+// clamps (bias), 0.
+float tableFloat(const SoNode& node, ShadowFieldId id, float value) {
+  const ShadowFieldSpec& f = shadowField(id);
+  value = finiteOr(node, f.name, value, float(f.defaultValue));
+  if (f.low.kind == Bound::Clamp && value < float(f.low.value)) {
+    warnOnce(node, f.name, "is negative; using 0");
+    value = float(f.low.value);
+  }
+  return value;
+}
+
 // The map's radii: a light's nearRadius and farRadius fields; a group's ordinary lights fit
 // them.
 template <class Light>
 void readRadii(const Light& light, DeepShadowSettings& s) {
-  s.nearRadius = finiteOr(light, "nearRadius", light.nearRadius.getValue(), -1.0f);
-  s.farRadius = finiteOr(light, "farRadius", light.farRadius.getValue(), -1.0f);
+  s.nearRadius = tableFloat(light, ShadowFieldId::nearRadius, light.nearRadius.getValue());
+  s.farRadius = tableFloat(light, ShadowFieldId::farRadius, light.farRadius.getValue());
   if (s.nearRadius > 0.0f && s.farRadius > 0.0f && s.nearRadius >= s.farRadius) {
     warnOnce(light, "nearRadius", "is not below farRadius; fitting both to the casters");
     s.nearRadius = s.farRadius = -1.0f;
@@ -75,26 +111,26 @@ template <class Node>
 DeepShadowSettings resolveFields(Node& light, int maxTextureSize) {
   DeepShadowSettings s;
   s.resolution =
-      clampInt(light, "resolution", light.resolution.getValue(), 1, std::max(1, maxTextureSize));
-  s.maxLayers = clampInt(light, "maxLayers", light.maxLayers.getValue(), 1, kMaxMapLayers);
+      tableInt(light, ShadowFieldId::resolution, light.resolution.getValue(), maxTextureSize);
+  s.maxLayers =
+      tableInt(light, ShadowFieldId::maxLayers, light.maxLayers.getValue(), maxTextureSize);
   // Only a light that builds an opacity map (or may, as a group's ordinary lights with the
   // group's method) is told about its slices; the others keep them clamped, unused.
-  s.slices = light.method.getValue() == SoDeepShadowLight::OPACITY_MAP
-                 ? clampInt(light, "slices", light.slices.getValue(), 1, kMaxOpacitySlices)
-                 : std::clamp(light.slices.getValue(), 1, kMaxOpacitySlices);
+  s.slices = tableInt(light, ShadowFieldId::slices, light.slices.getValue(), maxTextureSize,
+                      light.method.getValue() == SoDeepShadowLight::OPACITY_MAP);
   readRadii(light, s);
-  s.bias = finiteOr(light, "bias", light.bias.getValue(), kDefaultMapBias);
-  if (s.bias < 0.0f) {
-    warnOnce(light, "bias", "is negative; using 0");
-    s.bias = 0.0f;
-  }
+  s.bias = tableFloat(light, ShadowFieldId::bias, light.bias.getValue());
   s.shadowColor = light.shadowColor.getValue();
   s.colorModel = light.colorModel.getValue();
   s.halfPrecision = light.precision.getValue() == SoDeepShadowLight::HALF;
   if (light.filter.getValue() == SoDeepShadowLight::PCF) {
-    s.filterWidth = clampInt(light, "filterSize", light.filterSize.getValue(), 1, 9);
+    s.filterWidth =
+        tableInt(light, ShadowFieldId::filterSize, light.filterSize.getValue(), maxTextureSize);
   }
-  s.method = light.method.getValue();
+  // A value that no name spells (set from C++) builds a map, as MAP does.
+  const int method = light.method.getValue();
+  s.method = method >= 0 && std::size_t(method) < kShadowMethodCount ? ShadowMethod(method)
+                                                                     : ShadowMethod::Map;
   s.mergeOverflow = light.layerOverflow.getValue() != SoDeepShadowLight::TRUNCATE;
   return s;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "ivshadow/ShadowMethod.h"
 #include "scene/ShadowTypes.h"
 
 class SoDeepShadowDirectionalLight;
@@ -54,8 +55,8 @@ struct DeepShadowSettings {
   bool halfPrecision = false;
   // 0: the nearest texel; w: the mean over a w x w texel square (PCF, lighting.glsl)
   int filterWidth = 0;
-  int method = 0;             // SoDeepShadowLight::Method as set (AUTO not yet resolved)
-  bool mergeOverflow = true;  // layerOverflow MERGE
+  ShadowMethod method = ShadowMethod::Auto;  // as set (Auto not yet resolved)
+  bool mergeOverflow = true;                 // layerOverflow MERGE
 };
 
 // Reads and clamps the light's fields; each field that is out of range is reported once per

@@ -1,8 +1,8 @@
 #include "nodes/IdleFields.h"
 
-#include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
+#include "nodes/ShadowFieldTable.h"
 #include "scene/SceneTriangles.h"
 #include "scene/WarnOnce.h"
 
@@ -14,42 +14,24 @@
 namespace ivshadow {
 namespace {
 
-constexpr unsigned bit(int method) {
-  return 1u << unsigned(method);
+// The shadow fields that some method does not read (the table's readBy: the map fields are
+// MapMethod's and the map lookup's alone); shadowColor and colorModel act on every path, the
+// method wherever GL draws the group.
+bool someMethodIgnores(const ShadowFieldSpec& field) {
+  return field.readBy != kEveryMethod;
 }
-constexpr unsigned kMaps = bit(SoDeepShadowLight::MAP) | bit(SoDeepShadowLight::OPACITY_MAP);
-
-// The shadow fields that some method does not read, and the methods that read each (the map
-// fields are MapMethod's and the map lookup's alone); shadowColor and colorModel act on every
-// path, the method wherever GL draws the group.
-struct FieldUse {
-  const char* name;
-  unsigned methods;
-};
-constexpr FieldUse kFieldUses[] = {
-    {"resolution", kMaps},
-    {"maxLayers", bit(SoDeepShadowLight::MAP)},
-    {"layerOverflow", bit(SoDeepShadowLight::MAP)},
-    {"slices", bit(SoDeepShadowLight::OPACITY_MAP)},
-    {"bias", kMaps},
-    {"precision", kMaps},
-    {"filter", kMaps},
-    {"filterSize", kMaps},
-    {"nearRadius", kMaps},
-    {"farRadius", kMaps},
-};
 
 // What the lights did this frame, as the verb phrase of a sentence whose subject is one light
 // or several.
 std::string methodNames(unsigned methods, bool several) {
   const char* s = several ? "" : "s";
-  if (methods == bit(SoDeepShadowLight::RAYS))
+  if (methods == methodBit(ShadowMethod::Rays))
     return std::string("trace") + s + " shadow rays (RAYS)";
-  if (methods == bit(SoDeepShadowLight::VOLUMES))
+  if (methods == methodBit(ShadowMethod::Volumes))
     return std::string("draw") + s + " shadow volumes (VOLUMES)";
-  if (methods == bit(SoDeepShadowLight::MAP))
+  if (methods == methodBit(ShadowMethod::Map))
     return std::string("build") + s + " a deep shadow map (MAP)";
-  if (methods == bit(SoDeepShadowLight::OPACITY_MAP))
+  if (methods == methodBit(ShadowMethod::OpacityMap))
     return std::string("build") + s + " an opacity map (OPACITY_MAP)";
   return std::string("cast") + s + " by several methods";
 }
@@ -62,8 +44,8 @@ SoNode& IdleFields::owner(SoLight& light, SoTransparentShadowGroup& group) {
   return group;
 }
 
-void IdleFields::used(SoLight& light, SoTransparentShadowGroup& group, int method) {
-  methods_[&owner(light, group)] |= bit(method);
+void IdleFields::used(SoLight& light, SoTransparentShadowGroup& group, ShadowMethod method) {
+  methods_[&owner(light, group)] |= methodBit(method);
 }
 
 void IdleFields::say() {
@@ -72,8 +54,8 @@ void IdleFields::say() {
     const std::string why =
         std::string(group ? "the lights that cast with the group's fields " : "the light ") +
         methodNames(methods, group) + ", which does not read it";
-    for (const FieldUse& use : kFieldUses)
-      if ((use.methods & methods) == 0) sayIfSet(*fields, use.name, why);
+    for (const ShadowFieldSpec& field : kShadowFields)
+      if ((field.readBy & methods) == 0) sayIfSet(*fields, field.name, why);
   }
   methods_.clear();
 }
@@ -81,7 +63,8 @@ void IdleFields::say() {
 void IdleFields::traced(SoLight& light, SoTransparentShadowGroup& group, const std::string& why) {
   SoNode& fields = owner(light, group);
   sayIfSet(fields, "method", why);
-  for (const FieldUse& use : kFieldUses) sayIfSet(fields, use.name, why);
+  for (const ShadowFieldSpec& field : kShadowFields)
+    if (someMethodIgnores(field)) sayIfSet(fields, field.name, why);
 }
 
 void IdleFields::sayIfSet(SoNode& node, const char* field, const std::string& why) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/ShadowMethod.h"
+
 #include <map>
 #include <string>
 
@@ -9,7 +11,7 @@ class SoTransparentShadowGroup;
 
 namespace ivshadow {
 
-// The shadow fields (nodes/ShadowFields.h) that act only on some paths: a map's fields do
+// The shadow fields (nodes/ShadowFieldTable.h) that act only on some paths: a map's fields do
 // nothing to a light whose shadows are traced (RAYS, VOLUMES), and no light's method or map
 // field acts in a group that traces its children (renderer TRACER, or AUTO on a software
 // rasteriser). A field the user set where it cannot act is said once per node and field, so
@@ -20,8 +22,8 @@ class IdleFields {
   // light itself for the deep shadow lights, the group for any other light.
   static SoNode& owner(SoLight& light, SoTransparentShadowGroup& group);
 
-  // A frame of GL's path: `light` cast with `method` (SoDeepShadowLight::Method, resolved).
-  void used(SoLight& light, SoTransparentShadowGroup& group, int method);
+  // A frame of GL's path: `light` cast with `method` (resolved).
+  void used(SoLight& light, SoTransparentShadowGroup& group, ShadowMethod method);
   // After the frame's lights: every field set on their owners that none of the methods used
   // reads is said.
   void say();
@@ -32,7 +34,7 @@ class IdleFields {
   static void sayIfSet(SoNode& node, const char* field, const std::string& why);
 
  private:
-  // Per owner: a bit per method (SoDeepShadowLight::Method) used this frame.
+  // Per owner: a bit per method used this frame.
   std::map<SoNode*, unsigned> methods_;
 };
 

@@ -277,7 +277,8 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   request.halfPrecision = map.settings.halfPrecision;
   request.colourModel = map.model;
   request.mergeOverflow = map.settings.mergeOverflow;
-  if (map.opacity) {
+  const bool opacity = map.method == ShadowMethod::OpacityMap;
+  if (opacity) {
     request.slices = map.settings.slices;
     request.sliceNear = map.sliceNear;
     request.sliceFar = map.sliceFar;
@@ -299,13 +300,11 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     // The program is the same for every light and group: its failure is said once per
     // process. Another failure (GL could not allocate what a map of any size needs) once per
     // light.
-    if (built.noProgram &&
-        firstWarning(nullptr, map.opacity ? "opacity map program" : "map program"))
+    if (built.noProgram && firstWarning(nullptr, opacity ? "opacity map program" : "map program"))
       SoDebugError::postWarning("SoTransparentShadowGroup",
                                 "%s; lights with method %s light "
                                 "without a shadow",
-                                pass.programError(request).c_str(),
-                                map.opacity ? "OPACITY_MAP" : "MAP");
+                                pass.programError(request).c_str(), shadowMethodName(map.method));
     if (!built.noProgram && firstWarning(&lightNode, "map failure"))
       SoDebugError::postWarning(type.c_str(), "%s: %s; it lights without a shadow", label.c_str(),
                                 built.failure.c_str());
@@ -327,7 +326,7 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
       SoDebugError::postWarning(type.c_str(),
                                 "%s: no %s fits in GL memory at any resolution; "
                                 "it lights without a shadow",
-                                label.c_str(), map.opacity ? "opacity map" : "deep shadow map");
+                                label.c_str(), opacity ? "opacity map" : "deep shadow map");
     else if (request.resolution != fitted)
       SoDebugError::postWarning(type.c_str(),
                                 "%s: field resolution %d: GL ran out of memory building the map "

@@ -2,6 +2,7 @@
 
 #include "callbacks/GlLimits.h"
 #include "callbacks/MapFrame.h"
+#include "ivshadow/ShadowMethod.h"
 #include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
 
@@ -34,9 +35,9 @@ struct MapState {
   glm::vec3 coveredHigh{0.0f};
   std::array<int, 6> faceFirst{};
   std::array<int, 6> faceLayers{};
-  bool rays = false;     // method RAYS or VOLUMES: no map, a visibility per pixel
-  bool volumes = false;  // ... VOLUMES: drawn by shadow volumes, not traced
-  bool opacity = false;  // method OPACITY_MAP: the map is an opacity map (OpacityMap)
+  // The method it casts with, resolved (never Auto): a deep shadow map, an opacity map
+  // (OpacityMap), or per pixel (shadowsPerPixel: traced, or drawn by shadow volumes).
+  ShadowMethod method = ShadowMethod::Map;
   ShadowColourModel model = ShadowColourModel::Monochrome;
 };
 

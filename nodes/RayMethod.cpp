@@ -68,10 +68,11 @@ std::string RayMethod::update(SoGLRenderAction* action, const GroupContents& con
   std::vector<int> tracedLights;  // screen light of each traced one
   int screenLights = 0, volumeLights = 0;
   for (const MapState& map : maps) {
-    if (!map.rays) continue;
+    if (!shadowsPerPixel(map.method)) continue;
     ++screenLights;
-    if (map.volumes) ++volumeLights;
-    if (map.volumes || !casters.scene()) continue;
+    const bool volumes = map.method == ShadowMethod::Volumes;
+    if (volumes) ++volumeLights;
+    if (volumes || !casters.scene()) continue;
     tracedLights.push_back(screenLights - 1);
     RayLight light;
     for (int i = 0; i < 3; ++i) light.position[i] = map.position[i];
@@ -211,9 +212,9 @@ void RayMethod::drawVolumes(SoState* state, const GroupShading& shading,
   view.viewport[3] = size[1];
   int screenLight = -1;
   for (const MapState& map : maps) {
-    if (!map.rays) continue;
+    if (!shadowsPerPixel(map.method)) continue;
     ++screenLight;
-    if (!map.volumes) continue;
+    if (map.method != ShadowMethod::Volumes) continue;
     // The group asked volumesAvailable() before it gave the light this method.
     if (!volumePass_) continue;
     Volumes& volumes = volumes_[std::size_t(map.model)];

@@ -1,45 +1,35 @@
 #pragma once
 
-#include "ivshadow/SoDeepShadowLight.h"
-#include "nodes/DeepShadowEnums.h"
-#include "nodes/DeepShadowSettings.h"
+#include "ivshadow/ShadowFieldList.h"
+#include "nodes/ShadowFieldTable.h"
+
+#include <Inventor/nodes/SoSubNode.h>
+
+class SoFieldContainer;
+class SoFieldData;
+class SoSFEnum;
+class SoSFFloat;
+class SoSFInt32;
 
 namespace ivshadow {
-// The map's depth offset towards the light, in texels at the receiver, beyond the receiver's
-// own plane (lighting.glsl). The lookup compares the stored surfaces with that plane, so the
-// offset covers only float rounding; a tenth of a texel was the most accurate on the bundled
-// scenes (docs/TRADEOFF.md, "Bias"), and light can leak only where a caster lies that close.
-constexpr float kDefaultMapBias = 0.1f;
-// Bilinear PCF: the visibility of the four texels around the point, weighted by their
-// overlap with one texel's square. It was 0.7 to 1.3 dB nearer the exact picture than the
-// nearest texel on every bundled scene of the trade, and a 3 x 3 square farther
-// (docs/TRADEOFF.md, "Defaults").
-constexpr SoDeepShadowLight::Filter kDefaultMapFilter = SoDeepShadowLight::PCF;
-constexpr int kDefaultMapFilterSize = 1;
+
+// Adds one shadow field to the node being constructed as SO_NODE_ADD_FIELD does, with the
+// table's default; an enum field gets its enum's names (SO_NODE_SET_SF_ENUM_TYPE), which the
+// class's field data takes on its first instance.
+void addShadowField(SoFieldContainer* node, SoFieldData* fieldData, bool firstInstance,
+                    SoSFEnum& field, ShadowFieldId id);
+void addShadowField(SoFieldContainer* node, SoFieldData* fieldData, bool firstInstance,
+                    SoSFInt32& field, ShadowFieldId id);
+void addShadowField(SoFieldContainer* node, SoFieldData* fieldData, bool firstInstance,
+                    SoSFFloat& field, ShadowFieldId id);
+
 }  // namespace ivshadow
 
-// The shadow fields that SoDeepShadowLight, SoDeepShadowSpotLight, SoDeepShadowDirectionalLight
-// and SoTransparentShadowGroup share, with SoDeepShadowLight's defaults and enum types, added
-// in a node's constructor after SO_NODE_CONSTRUCTOR. A macro, because Coin's
-// SO_NODE_ADD_FIELD, which it wraps, works only in the scope of the node's constructor.
-#define IVSHADOW_ADD_SHADOW_FIELDS()                                               \
-  do {                                                                             \
-    SO_NODE_ADD_FIELD(method, (SoDeepShadowLight::AUTO_METHOD));                   \
-    SO_NODE_ADD_FIELD(resolution, (512));                                          \
-    SO_NODE_ADD_FIELD(maxLayers, (4));                                             \
-    SO_NODE_ADD_FIELD(slices, (ivshadow::kDefaultOpacitySlices));                  \
-    SO_NODE_ADD_FIELD(bias, (ivshadow::kDefaultMapBias));                          \
-    SO_NODE_ADD_FIELD(shadowColor, (SoDeepShadowLight::AUTO));                     \
-    SO_NODE_ADD_FIELD(colorModel, (SoDeepShadowLight::SATURATE));                  \
-    SO_NODE_ADD_FIELD(precision, (SoDeepShadowLight::FLOAT));                      \
-    SO_NODE_ADD_FIELD(filter, (ivshadow::kDefaultMapFilter));                      \
-    SO_NODE_ADD_FIELD(filterSize, (ivshadow::kDefaultMapFilterSize));              \
-    SO_NODE_ADD_FIELD(layerOverflow, (SoDeepShadowLight::MERGE));                  \
-    if (SO_NODE_IS_FIRST_INSTANCE()) ivshadow::addDeepShadowEnumValues(fieldData); \
-    SO_NODE_SET_SF_ENUM_TYPE(method, Method);                                      \
-    SO_NODE_SET_SF_ENUM_TYPE(shadowColor, ShadowColor);                            \
-    SO_NODE_SET_SF_ENUM_TYPE(colorModel, ColorModel);                              \
-    SO_NODE_SET_SF_ENUM_TYPE(precision, Precision);                                \
-    SO_NODE_SET_SF_ENUM_TYPE(filter, Filter);                                      \
-    SO_NODE_SET_SF_ENUM_TYPE(layerOverflow, LayerOverflow);                        \
-  } while (false)
+// Macros, because a node's field data and instance count, which Coin's SO_NODE_ADD_FIELD
+// reads, are private to the node's class: called in its constructor after
+// SO_NODE_CONSTRUCTOR, they add the fields of ivshadow/ShadowFieldList.h's lists.
+#define IVSHADOW_ADD_TABLE_FIELD(type, name)                                   \
+  ivshadow::addShadowField(this, fieldData, SO_NODE_IS_FIRST_INSTANCE(), name, \
+                           ivshadow::ShadowFieldId::name);
+#define IVSHADOW_ADD_SHADOW_FIELDS() IVSHADOW_SHADOW_FIELDS(IVSHADOW_ADD_TABLE_FIELD)
+#define IVSHADOW_ADD_MAP_RANGE_FIELDS() IVSHADOW_MAP_RANGE_FIELDS(IVSHADOW_ADD_TABLE_FIELD)

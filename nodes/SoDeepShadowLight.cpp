@@ -20,8 +20,7 @@ void SoDeepShadowLight::initClass() {
 SoDeepShadowLight::SoDeepShadowLight() {
   SO_NODE_CONSTRUCTOR(SoDeepShadowLight);
   IVSHADOW_ADD_SHADOW_FIELDS();
-  SO_NODE_ADD_FIELD(nearRadius, (-1.0f));
-  SO_NODE_ADD_FIELD(farRadius, (-1.0f));
+  IVSHADOW_ADD_MAP_RANGE_FIELDS();
 }
 
 SoDeepShadowLight::~SoDeepShadowLight() {

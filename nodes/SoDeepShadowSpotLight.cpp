@@ -20,8 +20,7 @@ void SoDeepShadowSpotLight::initClass() {
 SoDeepShadowSpotLight::SoDeepShadowSpotLight() {
   SO_NODE_CONSTRUCTOR(SoDeepShadowSpotLight);
   IVSHADOW_ADD_SHADOW_FIELDS();
-  SO_NODE_ADD_FIELD(nearRadius, (-1.0f));
-  SO_NODE_ADD_FIELD(farRadius, (-1.0f));
+  IVSHADOW_ADD_MAP_RANGE_FIELDS();
 }
 
 SoDeepShadowSpotLight::~SoDeepShadowSpotLight() {

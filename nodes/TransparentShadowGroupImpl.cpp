@@ -11,7 +11,6 @@
 #include "callbacks/PeelPass.h"
 #include "callbacks/RayShadowPass.h"
 #include "callbacks/ShadingUniforms.h"
-#include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/CastingLight.h"
 #include "nodes/DepthPeeling.h"
@@ -50,13 +49,6 @@
 namespace ivshadow {
 namespace {
 
-const char* methodName(int method) {
-  return method == SoDeepShadowLight::RAYS          ? "RAYS"
-         : method == SoDeepShadowLight::VOLUMES     ? "VOLUMES"
-         : method == SoDeepShadowLight::OPACITY_MAP ? "OPACITY_MAP"
-                                                    : "MAP";
-}
-
 std::string lightName(const SoLight& light) {
   const std::string name = light.getName().getString();
   return name.empty() ? std::string("(unnamed)") : "'" + name + "'";
@@ -77,12 +69,12 @@ ShadingFeatures featuresOf(const std::vector<MapState>& maps, std::size_t count)
   ShadingFeatures features;
   for (std::size_t slot = 0; slot < std::min(count, maps.size()); ++slot) {
     const MapState& map = maps[slot];
-    if (map.rays) {
+    if (shadowsPerPixel(map.method)) {
       features.rays = true;
       continue;
     }
     features.maps = true;
-    (map.opacity ? features.opacity : features.deep) = true;
+    (map.method == ShadowMethod::OpacityMap ? features.opacity : features.deep) = true;
     (map.settings.filterWidth > 0 ? features.filtered : features.nearest) = true;
   }
   return features;
@@ -148,17 +140,17 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
   // is a traversal of the camera's path.
   if (map.kind == LightKind::Directional && !view) view = this->view(action);
   fitMapFrame(map, casters.bounds, view.value_or(ViewCorners{}));
-  int method = map.settings.method;
-  if (method == SoDeepShadowLight::AUTO_METHOD) {
-    method = context.softwareRenderer ? SoDeepShadowLight::RAYS : SoDeepShadowLight::MAP;
+  ShadowMethod method = map.settings.method;
+  if (method == ShadowMethod::Auto) {
+    method = context.softwareRenderer ? ShadowMethod::Rays : ShadowMethod::Map;
     if (methodLogged_.insert(entry.light).second)
       SoDebugError::postInfo(entry.deep ? "SoDeepShadowLight" : "SoTransparentShadowGroup",
                              "light %s: method AUTO uses %s on %s", lightName(*entry.light).c_str(),
-                             methodName(method), context.renderer.c_str());
+                             shadowMethodName(method), context.renderer.c_str());
   }
   SbVec3f castersAxis;
   float castersAngle = 0.0f;
-  if ((method == SoDeepShadowLight::MAP || method == SoDeepShadowLight::OPACITY_MAP) &&
+  if ((method == ShadowMethod::Map || method == ShadowMethod::OpacityMap) &&
       castersCone(map, casters.bounds, castersAxis, castersAngle) &&
       castersAngle < kMinMapConeAngle) {
     if (firstWarning(entry.light, "too far for a map"))
@@ -167,9 +159,9 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
                                 "for a map to tell their depths apart in floats; it traces "
                                 "shadow rays instead",
                                 lightName(*entry.light).c_str(), double(castersAngle));
-    method = SoDeepShadowLight::RAYS;
+    method = ShadowMethod::Rays;
   }
-  if (method == SoDeepShadowLight::VOLUMES) {
+  if (method == ShadowMethod::Volumes) {
     if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
     std::string whyNot;
     if (!context.rays->volumesAvailable(whyNot)) {
@@ -179,28 +171,26 @@ void TransparentShadowGroupImpl::buildSlot(SoGLRenderAction* action, Context& co
                                   "light %s: method VOLUMES cannot be drawn here (%s); it traces "
                                   "shadow rays instead",
                                   lightName(*entry.light).c_str(), whyNot.c_str());
-      method = SoDeepShadowLight::RAYS;
+      method = ShadowMethod::Rays;
     }
   }
-  if (method == SoDeepShadowLight::RAYS &&
+  if (method == ShadowMethod::Rays &&
       !rayCasters_.ready(casters, contents_.castersVersion(), entry.light, lightName(*entry.light),
                          "using its deep shadow map", statistics_))
-    method = SoDeepShadowLight::MAP;
+    method = ShadowMethod::Map;
   // VOLUMES shares the capture and the shading lookup of RAYS; only what fills the
   // visibility differs (RayMethod).
   idleFields_.used(*entry.light, group, method);
-  map.rays = method == SoDeepShadowLight::RAYS || method == SoDeepShadowLight::VOLUMES;
-  map.volumes = method == SoDeepShadowLight::VOLUMES;
-  map.opacity = method == SoDeepShadowLight::OPACITY_MAP;
-  if (map.opacity) fitSlices(map, casters.transparentBounds);
+  map.method = method;
+  if (method == ShadowMethod::OpacityMap) fitSlices(map, casters.transparentBounds);
   map.model = castingColourModel(*entry.light, group, casters.hasColouredTransparent);
   map.coloured = map.model != ShadowColourModel::Monochrome;
   DeepShadowLightStatistics& light = statistics_.lights[slot];
   light = DeepShadowLightStatistics{};
   light.name = entry.light->getName().getString();
   light.coloured = map.coloured;
-  light.method = methodName(method);
-  if (map.rays) {
+  light.method = method;
+  if (shadowsPerPixel(method)) {
     // A map kept from when the light had one (it may be hundreds of megabytes) goes.
     pass.dropSlot(int(slot));
     return;
@@ -271,7 +261,7 @@ void TransparentShadowGroupImpl::refitToView(SoGLRenderAction* action, Context& 
   bool rebuilt = false;
   for (std::size_t slot = 0; slot < context.maps.size(); ++slot) {
     const MapState& map = context.maps[slot];
-    if (map.rays || map.kind != LightKind::Directional) continue;
+    if (shadowsPerPixel(map.method) || map.kind != LightKind::Directional) continue;
     if (!view) view = this->view(action);
     if (mapServesView(map, contents_.casters().bounds, *view)) continue;
     if (!rebuilt) context.buildTimer.start();
@@ -512,7 +502,8 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     uniforms->mapSlices[slot * 3 + 0] = map.sliceNear;
     uniforms->mapSlices[slot * 3 + 1] = map.sliceFar;
     // A map that failed to build holds no layer and casts no shadow, as a deep one.
-    uniforms->mapSlices[slot * 3 + 2] = map.opacity ? float(map.faceLayers[0]) : 0.0f;
+    uniforms->mapSlices[slot * 3 + 2] =
+        map.method == ShadowMethod::OpacityMap ? float(map.faceLayers[0]) : 0.0f;
     uniforms->mapParams[slot * 4 + 2] = map.settings.bias;
     uniforms->mapParams[slot * 4 + 3] = float(map.settings.filterWidth);
     uniforms->mapColoured[slot] = map.coloured ? 1 : 0;
@@ -521,7 +512,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
       uniforms->mapLookup[slot * 16 + std::size_t(i)] = (&map.frame.lookup[0][0])[i];
     uniforms->mapTexelScale[slot * 2 + 0] = map.frame.texelScale.x;
     uniforms->mapTexelScale[slot * 2 + 1] = map.frame.texelScale.y;
-    if (map.rays) uniforms->mapRay[slot] = rayCount++;
+    if (shadowsPerPixel(map.method)) uniforms->mapRay[slot] = rayCount++;
   }
   if (bounced) {
     uniforms->bounceCount = int(bounce_.lights().lights.size());
@@ -544,11 +535,13 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
                              renderChildren_, inPath, statistics_);
     if (!failure.empty())
       for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot)
-        if (context.maps[slot].rays) warnNoShadow(*contents_.lights()[slot].light, failure);
+        if (shadowsPerPixel(context.maps[slot].method))
+          warnNoShadow(*contents_.lights()[slot].light, failure);
     const std::string& volumes = context.rays->volumeFailure();
     if (failure.empty() && !volumes.empty())
       for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot)
-        if (context.maps[slot].volumes) warnNoShadow(*contents_.lights()[slot].light, volumes);
+        if (context.maps[slot].method == ShadowMethod::Volumes)
+          warnNoShadow(*contents_.lights()[slot].light, volumes);
     uniforms->rayLayers = context.rays->pass().layers();
     shading_.apply();
   }

@@ -1,5 +1,6 @@
 #include "viewer/LiveFigures.h"
 
+#include "ivshadow/ShadowMethod.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 
@@ -155,11 +156,11 @@ QString LiveFigures::text() const {
     for (const DeepShadowLightStatistics& light : group.stats.lights) {
       const QString name =
           light.name.empty() ? QString("light") : QString::fromStdString(light.name);
-      const bool opacity = light.method == "OPACITY_MAP";
-      if (light.method != "MAP" && !opacity) {
-        lines << name + (light.method == "VOLUMES" ? ": VOLUMES, no map" : ": RAYS, no map");
+      if (shadowsPerPixel(light.method)) {
+        lines << name + ": " + shadowMethodName(light.method) + ", no map";
         continue;
       }
+      const bool opacity = light.method == ShadowMethod::OpacityMap;
       total += light.bytes;
       ++maps;
       const QString build = light.mapBuild == "FRAGMENT_LISTS" ? ", lists"
@@ -211,7 +212,7 @@ std::string LiveFigures::json() const {
                       {"bytes", light.bytes},
                       {"colored", light.coloured},
                       {"resolution", light.resolution},
-                      {"method", light.method},
+                      {"method", shadowMethodName(light.method)},
                       {"map_build", light.mapBuild}});
   }
   out["dsm_layers_used"] = lights;

@@ -2,6 +2,7 @@
 
 #include "callbacks/ShaderConstants.h"
 #include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/ShadowMethod.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 #include "nodes/ShadowGroupElement.h"
@@ -261,7 +262,7 @@ QString MapInspector::whyNoMap(SoTransparentShadowGroup* group,
            ": it is traced on the CPU with its shadows, and its lights keep no map. To see a "
            "map, set the group's renderer to RASTER and the light's method to MAP.";
   }
-  if (light == nullptr || light->method == "MAP" || light->method == "OPACITY_MAP") return {};
+  if (light == nullptr || !shadowsPerPixel(light->method)) return {};
   // The light's own method field, or the group's for the lights it casts with its fields.
   SoFieldContainer* owner = group;
   if (!light->name.empty()) {
@@ -274,13 +275,13 @@ QString MapInspector::whyNoMap(SoTransparentShadowGroup* group,
   }
   const auto* method = static_cast<const SoSFEnum*>(owner->getField("method"));
   const bool chosen = method != nullptr && method->getValue() == 0;
-  const QString resolved = QString::fromStdString(light->method);
+  const QString resolved = shadowMethodName(light->method);
   return QString("%1 %2, so it keeps no map. To see one, set its method to MAP.")
       .arg(lights_->currentText(),
            chosen ? QString("has method AUTO, which chose %1 (%2) on this software rasteriser")
-                        .arg(resolved, resolved == "VOLUMES" ? "shadow volumes"
-                                                             : "shadow rays traced per "
-                                                               "pixel")
+                        .arg(resolved, light->method == ShadowMethod::Volumes
+                                           ? "shadow volumes"
+                                           : "shadow rays traced per pixel")
                   : QString("has method %1").arg(resolved));
 }
 
@@ -338,7 +339,7 @@ void MapInspector::frameDrawn(int rebuilds, bool softwareRenderer) {
     group_ = CoinRef<SoTransparentShadowGroup>(light.group);
     attachProbe();
   }
-  if (light.stats.method == "OPACITY_MAP") {
+  if (light.stats.method == ShadowMethod::OpacityMap) {
     // Its layers are slices of absorbed light and one opaque depth per face, not the
     // distance and visibility pairs the view draws.
     statusText_ = QString(

@@ -1,6 +1,5 @@
 #include "viewer/ShadowPanel.h"
 
-#include "callbacks/ShaderConstants.h"
 #include "ivshadow/SoDeepShadowDirectionalLight.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoDeepShadowSpotLight.h"
@@ -8,6 +7,7 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/NodesOfType.h"
+#include "nodes/ShadowFieldTable.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 #include "viewer/CollapsibleSection.h"
@@ -53,33 +53,40 @@ struct FieldSpec {
   FieldRange range;
 };
 
-// The fields the panel edits, per node type, with the ranges the nodes accept (wider values
-// would only be clamped by the node with a warning, see nodes/DeepShadowSettings.cpp),
-// grouped as SoDeepShadowLight.h describes them: what applies to both methods under the
-// method, what only the map uses under Map.
+// The shadow fields the panel shows under the method and under Map, in its order.
+constexpr ShadowFieldId kMethodFields[] = {ShadowFieldId::method, ShadowFieldId::shadowColor,
+                                           ShadowFieldId::colorModel, ShadowFieldId::nearRadius,
+                                           ShadowFieldId::farRadius};
+constexpr ShadowFieldId kMapFields[] = {ShadowFieldId::resolution,    ShadowFieldId::maxLayers,
+                                        ShadowFieldId::layerOverflow, ShadowFieldId::slices,
+                                        ShadowFieldId::precision,     ShadowFieldId::filter,
+                                        ShadowFieldId::filterSize,    ShadowFieldId::bias};
+
+// A shadow field with the range of the fields' table (nodes/ShadowFieldTable.h): what the
+// nodes accept, wider values would only be clamped by the node with a warning.
+FieldSpec panelField(const char* section, ShadowFieldId id) {
+  const ShadowFieldSpec& field = shadowField(id);
+  if (field.kind == ShadowFieldKind::Enum) return {section, field.name, {}};
+  return {section, field.name, {field.low.value, field.high.value, field.step, field.decimals}};
+}
+
+// The fields the panel edits, per node type, grouped as SoDeepShadowLight.h describes them:
+// what applies to both methods under the method, what only the map uses under Map.
 const std::vector<FieldSpec>& lightFields() {
-  static const std::vector<FieldSpec> fields = {
-      {kLight, "on", {}},
-      {kLight, "intensity", {0.0, 1.0, 0.05, 2}},
-      {kLight, "color", {0.0, 1.0, 0.05, 2}},
-      {kLight, "location", {-1e5, 1e5, 0.1, 3}},
-      {kLight, "direction", {-1.0, 1.0, 0.05, 2}},
-      {kLight, "cutOffAngle", {0.0, 1.5708, 0.05, 3}},
-      {kLight, "dropOffRate", {0.0, 1.0, 0.05, 2}},
-      {kMethod, "method", {}},
-      {kMethod, "shadowColor", {}},
-      {kMethod, "colorModel", {}},
-      {kMethod, "nearRadius", {-1.0, 1e6, 0.1, 3}},
-      {kMethod, "farRadius", {-1.0, 1e6, 0.1, 3}},
-      {kMap, "resolution", {1, 16384, 64, 0}},
-      {kMap, "maxLayers", {1, kMaxMapLayers, 1, 0}},
-      {kMap, "layerOverflow", {}},
-      {kMap, "slices", {1, kMaxOpacitySlices, 1, 0}},
-      {kMap, "precision", {}},
-      {kMap, "filter", {}},
-      {kMap, "filterSize", {1, 9, 1, 0}},
-      {kMap, "bias", {0.0, 100.0, 0.05, 2}},
-  };
+  static const std::vector<FieldSpec> fields = [] {
+    std::vector<FieldSpec> all = {
+        {kLight, "on", {}},
+        {kLight, "intensity", {0.0, 1.0, 0.05, 2}},
+        {kLight, "color", {0.0, 1.0, 0.05, 2}},
+        {kLight, "location", {-1e5, 1e5, 0.1, 3}},
+        {kLight, "direction", {-1.0, 1.0, 0.05, 2}},
+        {kLight, "cutOffAngle", {0.0, 1.5708, 0.05, 3}},
+        {kLight, "dropOffRate", {0.0, 1.0, 0.05, 2}},
+    };
+    for (const ShadowFieldId id : kMethodFields) all.push_back(panelField(kMethod, id));
+    for (const ShadowFieldId id : kMapFields) all.push_back(panelField(kMap, id));
+    return all;
+  }();
   return fields;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "ivshadow/ShadowMethod.h"
 
 #include <array>
 #include <cstdint>
@@ -39,7 +40,9 @@ struct DeepShadowLightStatistics {
   int resolution = 0;
   float nearRadius = 0.0f;
   float farRadius = 0.0f;
-  std::string method;  // "MAP", "RAYS", "VOLUMES" or "OPACITY_MAP", after AUTO was resolved
+  // The method the light cast with, AUTO resolved (Auto only before the light was first
+  // built); shadowMethodName gives the name `ivshadow render --stats` writes.
+  ShadowMethod method = ShadowMethod::Auto;
 };
 
 struct DeepShadowStatistics {

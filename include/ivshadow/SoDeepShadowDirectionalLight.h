@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "ivshadow/ShadowFieldList.h"
 
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFFloat.h>
@@ -36,7 +37,8 @@
         colorModel SATURATE  # SATURATE (Rejent 2014, eq. 5.3) or POWER (eq. 5.2)
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
         filter PCF           # NONE (the nearest texel) or PCF
-        filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)
+        filterSize 1         # PCF: the mean over filterSize x filterSize texels, 1 .. 9
+                             #   (1: bilinear)
     }
   \endcode
 */
@@ -48,17 +50,9 @@ class IVSHADOW_API SoDeepShadowDirectionalLight : public SoDirectionalLight {
   static void initClass();
   SoDeepShadowDirectionalLight();
 
-  SoSFEnum method;         //!< SoDeepShadowLight::Method
-  SoSFEnum layerOverflow;  //!< SoDeepShadowLight::LayerOverflow
-  SoSFInt32 resolution;
-  SoSFInt32 maxLayers;
-  SoSFInt32 slices;
-  SoSFFloat bias;
-  SoSFEnum shadowColor;  //!< SoDeepShadowLight::ShadowColor
-  SoSFEnum colorModel;   //!< SoDeepShadowLight::ColorModel
-  SoSFEnum precision;    //!< SoDeepShadowLight::Precision
-  SoSFEnum filter;       //!< SoDeepShadowLight::Filter
-  SoSFInt32 filterSize;
+  // The shadow fields of the FILE FORMAT block above, declared from their one list
+  // (ivshadow/ShadowFieldList.h; the enums are SoDeepShadowLight's).
+  IVSHADOW_SHADOW_FIELDS(IVSHADOW_DECLARE_FIELD)
 
  protected:
   ~SoDeepShadowDirectionalLight() override;

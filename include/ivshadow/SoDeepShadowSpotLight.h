@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "ivshadow/ShadowFieldList.h"
 
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFFloat.h>
@@ -39,7 +40,8 @@
         colorModel SATURATE  # SATURATE (Rejent 2014, eq. 5.3) or POWER (eq. 5.2)
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
         filter PCF           # NONE (the nearest texel) or PCF
-        filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)
+        filterSize 1         # PCF: the mean over filterSize x filterSize texels, 1 .. 9
+                             #   (1: bilinear)
         nearRadius -1        # distances from the light covered by the map; -1 fits them
         farRadius -1         #   to the bounding box of the group's shadow casters
     }
@@ -53,19 +55,11 @@ class IVSHADOW_API SoDeepShadowSpotLight : public SoSpotLight {
   static void initClass();
   SoDeepShadowSpotLight();
 
-  SoSFInt32 resolution;
-  SoSFInt32 maxLayers;
-  SoSFInt32 slices;
-  SoSFFloat nearRadius;
-  SoSFFloat farRadius;
-  SoSFFloat bias;
-  SoSFEnum shadowColor;  //!< SoDeepShadowLight::ShadowColor
-  SoSFEnum colorModel;   //!< SoDeepShadowLight::ColorModel
-  SoSFEnum precision;    //!< SoDeepShadowLight::Precision
-  SoSFEnum filter;       //!< SoDeepShadowLight::Filter
-  SoSFInt32 filterSize;
-  SoSFEnum method;         //!< SoDeepShadowLight::Method
-  SoSFEnum layerOverflow;  //!< SoDeepShadowLight::LayerOverflow
+  // The shadow fields of the FILE FORMAT block above, declared from their one list
+  // (ivshadow/ShadowFieldList.h; the enums are SoDeepShadowLight's), and the map's nearRadius
+  // and farRadius.
+  IVSHADOW_SHADOW_FIELDS(IVSHADOW_DECLARE_FIELD)
+  IVSHADOW_MAP_RANGE_FIELDS(IVSHADOW_DECLARE_FIELD)
 
  protected:
   ~SoDeepShadowSpotLight() override;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "ivshadow/ShadowFieldList.h"
 
 #include <Inventor/fields/SoSFBool.h>
 #include <Inventor/fields/SoSFEnum.h>
@@ -82,7 +83,7 @@ struct PeelStatistics;
 
   `renderer AUTO` chooses per GL context: TRACER where GL is a software rasteriser (Mesa's
   llvmpipe, softpipe), whose shading costs more than the trace, RASTER on a GPU; it says which
-  once. RASTER stays the default, the path made for a GPU.
+  once. AUTO is the default.
 
   `movingResolution` trades a traced group's picture for speed while the scene moves, as the
   viewports of path tracers do: a frame that must trace again right after a frame that traced
@@ -91,7 +92,7 @@ struct PeelStatistics;
   motion is traced in full, so a single edit is never blurred. The first frame that finds nothing
   changed traces the full picture; the group asks for that frame itself, through Coin's
   sensors, a quarter of a second after the last reduced one, so a viewer refines once the
-  motion stops. At 1, the default, every frame is traced in full: what batch rendering of
+  motion stops. The default is 0.5; at 1 every frame is traced in full: what batch rendering of
   successive frames needs.
 
   FILE FORMAT/DEFAULTS:
@@ -116,7 +117,8 @@ struct PeelStatistics;
         colorModel SATURATE  # SATURATE (Rejent 2014, eq. 5.3) or POWER (eq. 5.2)
         precision FLOAT      # FLOAT or HALF (16-bit visibility; depth stays 32-bit)
         filter PCF           # NONE (the nearest texel) or PCF
-        filterSize 1         # PCF: the mean over filterSize x filterSize texels (1: bilinear)
+        filterSize 1         # PCF: the mean over filterSize x filterSize texels, 1 .. 9
+                             #   (1: bilinear)
         transparency PEELED      # PEELED: transparent surfaces in exact depth order per
                                  #   pixel; COIN_BLENDING: Coin's transparency type
         bounce FALSE         # TRUE: one diffuse bounce of the casting lights' light, tinted by
@@ -124,10 +126,10 @@ struct PeelStatistics;
         bounceLights 256     # bounce: virtual point lights placed, about, 1 .. 1024
         bounceMapSize 128    # bounce: each one's imperfect shadow map, 16 .. 256 texels, a
                              #   power of two
-        renderer RASTER      # RASTER: GL draws the children; TRACER: their triangles are
+        renderer AUTO        # RASTER: GL draws the children; TRACER: their triangles are
                              #   traced on the CPU (exact shadows and glass in one pass);
                              #   AUTO: TRACER on a software rasteriser, else RASTER
-        movingResolution 1   # TRACER: the fraction of the viewport's width and height
+        movingResolution 0.5 # TRACER: the fraction of the viewport's width and height
                              #   traced while the scene moves, 0.125 .. 1 (1: always full)
     }
   \endcode
@@ -162,17 +164,9 @@ class IVSHADOW_API SoTransparentShadowGroup : public SoSeparator {
   SoSFEnum transparency;
   SoSFEnum renderer;
   SoSFEnum castingLights;
-  SoSFEnum method;
-  SoSFInt32 resolution;
-  SoSFInt32 maxLayers;
-  SoSFInt32 slices;
-  SoSFFloat bias;
-  SoSFEnum shadowColor;
-  SoSFEnum colorModel;
-  SoSFEnum precision;
-  SoSFEnum filter;
-  SoSFInt32 filterSize;
-  SoSFEnum layerOverflow;  //!< SoDeepShadowLight::LayerOverflow
+  // The ordinary lights' shadow fields of the FILE FORMAT block above, declared from their one
+  // list (ivshadow/ShadowFieldList.h; the enums are SoDeepShadowLight's).
+  IVSHADOW_SHADOW_FIELDS(IVSHADOW_DECLARE_FIELD)
   SoSFBool bounce;
   SoSFInt32 bounceLights;
   SoSFInt32 bounceMapSize;

@@ -2,6 +2,7 @@
 
 #include "image/Image.h"
 #include "image/ImageComparison.h"
+#include "tests/support/ShadowMethodNames.h"
 
 #include <array>
 #include <functional>

@@ -52,9 +52,12 @@ TEST(DeepShadowSettings, MethodIsPassedOnUnresolved) {
   init();
   auto* light = new SoDeepShadowLight;
   light->ref();
-  EXPECT_EQ(resolveSettings(*light, 16384).method, int(SoDeepShadowLight::AUTO_METHOD));
+  EXPECT_EQ(resolveSettings(*light, 16384).method, ShadowMethod::Auto);
   light->method = SoDeepShadowLight::RAYS;
-  EXPECT_EQ(resolveSettings(*light, 16384).method, int(SoDeepShadowLight::RAYS));
+  EXPECT_EQ(resolveSettings(*light, 16384).method, ShadowMethod::Rays);
+  // A value that no name spells, set from C++, builds a map.
+  light->method = 7;
+  EXPECT_EQ(resolveSettings(*light, 16384).method, ShadowMethod::Map);
   light->unref();
 }
 
