@@ -54,16 +54,15 @@ struct EnumNames {
   std::size_t count = 0;
 };
 
-// The bits of the methods that read a field (bit(ShadowMethod)); a field that none of a frame's
-// methods read does nothing there (IdleFields).
+// The bits of the methods that read a field (methodBit); a field that none of a frame's methods
+// read does nothing there (IdleFields).
 constexpr unsigned methodBit(ShadowMethod method) {
   return 1u << unsigned(method);
 }
 inline constexpr unsigned kMapMethods =
     methodBit(ShadowMethod::Map) | methodBit(ShadowMethod::OpacityMap);
-inline constexpr unsigned kEveryMethod = methodBit(ShadowMethod::Map) |
-                                         methodBit(ShadowMethod::Rays) |
-                                         methodBit(ShadowMethod::Volumes) | kMapMethods;
+inline constexpr unsigned kEveryMethod =
+    methodBit(ShadowMethod::Rays) | methodBit(ShadowMethod::Volumes) | kMapMethods;
 
 // One shadow field: what a fresh node holds, what the nodes accept, what the viewer offers.
 struct ShadowFieldSpec {
