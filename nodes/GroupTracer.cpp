@@ -153,10 +153,8 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
                                 describeNode(owner_).c_str(), setting_, shape.c_str());
 }
 
-bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents,
-                         const TracerSettings& settings, DeepShadowStatistics& statistics) {
-  SoState* state = action->getState();
-  Context* context = contexts_.get(SoGLCacheContextElement::get(state), [this] {
+GroupTracer::Context* GroupTracer::contextFor(SoState* state) {
+  return contexts_.get(SoGLCacheContextElement::get(state), [this] {
     std::string whyNot;
     auto pass = TracedPicturePass::create(whyNot);
     if (!pass) {
@@ -171,6 +169,12 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
     made->pass = std::move(pass);
     return made;
   });
+}
+
+bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents,
+                         const TracerSettings& settings, DeepShadowStatistics& statistics) {
+  SoState* state = action->getState();
+  Context* context = contextFor(state);
   if (context == nullptr) return false;
   // The picture belongs to this frame's camera and depth: a render cache must not replay it.
   SoCacheElement::invalidate(state);
@@ -188,115 +192,132 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const SbViewportRegion& region = SoViewportRegionElement::get(state);
   const SbVec2s origin = region.getViewportOriginPixels();
   const SbVec2s size = region.getViewportSizePixels();
-  const std::array<int, 4> viewport{origin[0], origin[1], size[0], size[1]};
+  View view;
+  view.viewport = {origin[0], origin[1], size[0], size[1]};
   // A camera inside the group views its children, as GL would draw them (the one read with
   // the shapes); else the camera in force where the group is traversed.
   const bool cameraInside = contents.hasCamera() && scene_->haveCamera();
-  const SbMatrix& viewing = cameraInside ? scene_->viewing() : SoViewingMatrixElement::get(state);
-  const SbMatrix& projection =
-      cameraInside ? scene_->projection() : SoProjectionMatrixElement::get(state);
-  // What GL drew before the group, as stored: while its depth is the one traced at, the
-  // depths need no reading as floats.
-  context->frame.readBefore(viewport);
-  const bool depthAsTraced = context->frame.depthAsTraced();
-  if (!depthAsTraced) {
-    if (const std::string error = context->pass->readDepth(viewport, context->depthNow);
-        !error.empty() && firstWarning(owner_, "depth read: " + error))
-      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                "%s: the framebuffer's depth could not be read (%s); the traced "
-                                "picture covers what GL drew before it",
-                                describeNode(owner_).c_str(), error.c_str());
-  }
-  const std::vector<float>& depthNow = depthAsTraced ? context->depthTraced : context->depthNow;
+  view.viewing = cameraInside ? &scene_->viewing() : &SoViewingMatrixElement::get(state);
+  view.projection = cameraInside ? &scene_->projection() : &SoProjectionMatrixElement::get(state);
+  const bool depthAsTraced = readWhatGlDrew(*context, view.viewport);
   // The same camera rays through the same shapes: they meet the surfaces kept.
-  const bool sameView = context->shapes == shapesVersion_ && context->viewing == viewing &&
-                        context->projection == projection && context->viewport == viewport &&
+  const bool sameView = context->shapes == shapesVersion_ && context->viewing == *view.viewing &&
+                        context->projection == *view.projection &&
+                        context->viewport == view.viewport &&
                         (depthAsTraced || context->depthNow == context->depthTraced);
   const bool kept = sameView && context->scene == sceneVersion_;
   // A reduced picture is refined by the first frame that finds nothing changed.
   const bool refining = kept && context->reduced;
   const bool hadPicture = context->scene != 0;
-  if (!kept || refining) {
-    const auto start = std::chrono::steady_clock::now();
+  const bool traced = !kept || refining;
+  if (traced) {
     // A change right after a frame that traced for a change is part of a motion.
-    const float scale = !kept && context->tracedLastFrame ? settings.movingResolution : 1.0f;
-    TraceOptions options;
-    options.width = std::max(1, int(std::ceil(float(viewport[2]) * scale)));
-    options.height = std::max(1, int(std::ceil(float(viewport[3]) * scale)));
-    const bool reduced = options.width < viewport[2] || options.height < viewport[3];
-    options.bounceSamples = settings.bounceSamples;
-    options.depthBuffer = TracedPicturePass::drawDepthBuffer();
-    options.viewportWidth = viewport[2];
-    options.viewportHeight = viewport[3];
-    const float* limit =
-        reduced ? reducedLimit(*context, depthNow, viewport, options.width, options.height)
-                : depthNow.data();
-    // The first picture keeps no surfaces: a single frame (a batch render) would only pay for
-    // them (about 15 MB at 800 x 600, each page a fault); the first change traces its camera
-    // rays again and keeps them for the changes after it. Nor does a frame of a camera's
-    // motion, whose surfaces the next frame's rays do not meet: the frame after the motion
-    // keeps them.
-    const bool cameraMoving = !sameView && context->tracedLastFrame;
-    if (cameraMoving) context->surfaces.rows.clear();
-    options.surfaces = hadPicture && !cameraMoving ? &context->surfaces : nullptr;
-    options.reuseSurfaces = sameView;
-    scene_->trace(viewing, projection, limit, options, pixels_);
-    const std::string error = context->pass->upload(options.width, options.height,
-                                                    pixels_.rgba.data(), pixels_.depth.data());
-    if (!error.empty()) {
-      if (firstWarning(owner_, "traced picture upload: " + error))
-        SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                  "%s: GL could not hold the traced picture (%s); rendering "
-                                  "with GL",
-                                  describeNode(owner_).c_str(), error.c_str());
-      context->scene = 0;
-      context->surfaces.rows.clear();
-      context->frame.forget();
-      return false;
-    }
-    context->scene = sceneVersion_;
-    context->shapes = shapesVersion_;
-    context->viewing = viewing;
-    context->projection = projection;
-    context->viewport = viewport;
-    if (!depthAsTraced) context->depthTraced.swap(context->depthNow);
-    context->frame.markTraced();
-    context->reduced = reduced;
-    if (reduced) {
-      if (refineSensor_.isScheduled()) refineSensor_.unschedule();
-      refineSensor_.setTimeFromNow(SbTime(kRefineDelaySeconds));
-      refineSensor_.schedule();
-    }
-    statistics.tracerMs = millisecondsSince(start);
-    statistics.raysTraced = pixels_.shadowRays;
-    statistics.tracerWidth = options.width;
-    statistics.tracerHeight = options.height;
-    statistics.tracerReduced = reduced ? 1 : 0;
-    statistics.tracerCameraRays = pixels_.cameraRays;
-    ++statistics.tracerFrames;
+    const Motion motion{!kept && context->tracedLastFrame, sameView, depthAsTraced};
+    if (!tracePicture(*context, view, motion, settings, statistics)) return false;
     if (refining) ++statistics.tracerRefines;
   }
   // A motion: this frame traced because something changed since a picture was drawn. The
   // first picture and a refined one are not (the next change is then traced in full).
   context->tracedLastFrame = !kept && hadPicture;
+  present(action, *context, view.viewport, traced);
+  return true;
+}
+
+bool GroupTracer::readWhatGlDrew(Context& context, const std::array<int, 4>& viewport) {
+  // As stored: while its depth is the one traced at, the depths need no reading as floats.
+  context.frame.readBefore(viewport);
+  if (context.frame.depthAsTraced()) return true;
+  if (const std::string error = context.pass->readDepth(viewport, context.depthNow);
+      !error.empty() && firstWarning(owner_, "depth read: " + error))
+    SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                              "%s: the framebuffer's depth could not be read (%s); the traced "
+                              "picture covers what GL drew before it",
+                              describeNode(owner_).c_str(), error.c_str());
+  return false;
+}
+
+bool GroupTracer::tracePicture(Context& context, const View& view, const Motion& motion,
+                               const TracerSettings& settings, DeepShadowStatistics& statistics) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::array<int, 4>& viewport = view.viewport;
+  const std::vector<float>& depth = motion.depthAsTraced ? context.depthTraced : context.depthNow;
+  const float scale = motion.moving ? settings.movingResolution : 1.0f;
+  TraceOptions options;
+  options.width = std::max(1, int(std::ceil(float(viewport[2]) * scale)));
+  options.height = std::max(1, int(std::ceil(float(viewport[3]) * scale)));
+  const bool reduced = options.width < viewport[2] || options.height < viewport[3];
+  options.bounceSamples = settings.bounceSamples;
+  options.depthBuffer = TracedPicturePass::drawDepthBuffer();
+  options.viewportWidth = viewport[2];
+  options.viewportHeight = viewport[3];
+  const float* limit = reduced
+                           ? reducedLimit(context, depth, viewport, options.width, options.height)
+                           : depth.data();
+  // The first picture keeps no surfaces: a single frame (a batch render) would only pay for
+  // them (about 15 MB at 800 x 600, each page a fault); the first change traces its camera
+  // rays again and keeps them for the changes after it. Nor does a frame of a camera's
+  // motion, whose surfaces the next frame's rays do not meet: the frame after the motion
+  // keeps them.
+  const bool cameraMoving = motion.moving && !motion.sameView;
+  if (cameraMoving) context.surfaces.rows.clear();
+  options.surfaces = context.scene != 0 && !cameraMoving ? &context.surfaces : nullptr;
+  options.reuseSurfaces = motion.sameView;
+  scene_->trace(*view.viewing, *view.projection, limit, options, pixels_);
+  const std::string error = context.pass->upload(options.width, options.height, pixels_.rgba.data(),
+                                                 pixels_.depth.data());
+  if (!error.empty()) {
+    if (firstWarning(owner_, "traced picture upload: " + error))
+      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                                "%s: GL could not hold the traced picture (%s); rendering "
+                                "with GL",
+                                describeNode(owner_).c_str(), error.c_str());
+    context.scene = 0;
+    context.surfaces.rows.clear();
+    context.frame.forget();
+    return false;
+  }
+  context.scene = sceneVersion_;
+  context.shapes = shapesVersion_;
+  context.viewing = *view.viewing;
+  context.projection = *view.projection;
+  context.viewport = viewport;
+  if (!motion.depthAsTraced) context.depthTraced.swap(context.depthNow);
+  context.frame.markTraced();
+  context.reduced = reduced;
+  if (reduced) {
+    if (refineSensor_.isScheduled()) refineSensor_.unschedule();
+    refineSensor_.setTimeFromNow(SbTime(kRefineDelaySeconds));
+    refineSensor_.schedule();
+  }
+  statistics.tracerMs = millisecondsSince(start);
+  statistics.raysTraced = pixels_.shadowRays;
+  statistics.tracerWidth = options.width;
+  statistics.tracerHeight = options.height;
+  statistics.tracerReduced = reduced ? 1 : 0;
+  statistics.tracerCameraRays = pixels_.cameraRays;
+  ++statistics.tracerFrames;
+  return true;
+}
+
+void GroupTracer::present(SoGLRenderAction* action, Context& context,
+                          const std::array<int, 4>& viewport, bool traced) {
   // A frame that traced nothing puts back the framebuffer the picture left last, when what GL
   // drew before it is the same; else it composites the picture and keeps what that leaves.
   // A frame that traced keeps nothing: a single frame (a batch render) or a motion would only
   // pay for the copy.
-  const bool traced = !kept || refining;
-  if (traced || !context->frame.restore()) {
-    context->pass->draw(viewport);
-    if (!traced) context->frame.keep();
+  if (traced || !context.frame.restore()) {
+    context.pass->draw(viewport);
+    if (!traced) context.frame.keep();
   }
+  SoState* state = action->getState();
   // GL is restored; Coin must not trust what it believes it last sent.
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);
   if (!scene_->untracedPaths().empty()) {
-    drawingUntraced_ = context;
+    drawingUntraced_ = &context;
     untracedViewport_ = viewport;
     drawUntraced(action);
     drawingUntraced_ = nullptr;
   }
-  return true;
 }
 
 void GroupTracer::restoreDepth(SoGLRenderAction* action) {

@@ -15,6 +15,7 @@
 
 class SoGLRenderAction;
 class SoSeparator;
+class SoState;
 
 namespace ivshadow {
 
@@ -35,9 +36,9 @@ struct TracerSettings {
 // changes (its shapes or the inherited state), only its lights when they or the camera moved;
 // the picture is traced again when the subgraph, the camera, the viewport or the depth drawn
 // before it changed, else the one kept is drawn (and while what GL drew before it stays the
-// same, the framebuffer that left is put back by a blit: KeptFrame). While the scene moves (a frame traces right
-// after one that traced) the picture is traced at the settings' movingResolution and refined,
-// in full, by the first frame that finds nothing changed; the tracer schedules that frame
+// same, the framebuffer that left is put back by a blit: KeptFrame). While the scene moves (a frame
+// traces right after one that traced) the picture is traced at the settings' movingResolution and
+// refined, in full, by the first frame that finds nothing changed; the tracer schedules that frame
 // itself (kRefineDelaySeconds after the last reduced one) by touching its owner. Shapes drawn with
 // lines, points or screen-aligned pixels, which have no triangles to trace, are drawn through GL
 // after the picture (a second render action over their paths), depth-tested against it.
@@ -82,6 +83,33 @@ class GroupTracer {
     KeptFrame frame;
   };
 
+  // Where and how this frame looks at the subgraph.
+  struct View {
+    std::array<int, 4> viewport{};  // x, y, width, height
+    const SbMatrix* viewing = nullptr;
+    const SbMatrix* projection = nullptr;
+  };
+  // What this frame's trace follows.
+  struct Motion {
+    bool moving;         // a change right after a frame that traced for one
+    bool sameView;       // the camera rays meet the surfaces kept
+    bool depthAsTraced;  // GL drew the depth the picture was traced at
+  };
+
+  // The picture's resources in the current context; null, with one warning, when the context
+  // cannot draw a traced picture.
+  Context* contextFor(SoState* state);
+  // Reads what GL drew before the group over `viewport`: true when its depth is the one the
+  // picture was traced at (context.depthTraced), else the depth is read into context.depthNow.
+  bool readWhatGlDrew(Context& context, const std::array<int, 4>& viewport);
+  // Traces the picture for `view` and uploads it; false, with one warning, when GL cannot hold
+  // it.
+  bool tracePicture(Context& context, const View& view, const Motion& motion,
+                    const TracerSettings& settings, DeepShadowStatistics& statistics);
+  // Hands the picture to the framebuffer (the kept frame put back, or the picture composited)
+  // and draws the untraced shapes after it.
+  void present(SoGLRenderAction* action, Context& context, const std::array<int, 4>& viewport,
+               bool traced);
   // The depth limit of a picture of `width` x `height` pixels over the viewport whose window
   // depths are `depth`: each pixel's centre's depth.
   static const float* reducedLimit(Context& context, const std::vector<float>& depth,
