@@ -197,22 +197,79 @@ TEST(VariantsWorkers, AWorkerSaysEachRendersWarningsInItsOwnLog) {
   EXPECT_TRUE(samePixels(dir + "/render.png", dir + "/second.png"));
 }
 
+// A render that fails for a reason other than bad input (here: no GL context) may leave its
+// worker in any state: the worker answers and ends, unasked requests unanswered, and a fresh
+// one takes the next variant. The sweep says and files what one process per variant did.
+TEST(VariantsWorkers, AFailedRenderEndsItsWorkerAndFailsAsItsProcessDid) {
+  const std::string dir = test::outputDir();
+  const std::vector<std::string> noContext = {"IVSHADOW_EGL_PLATFORM=nowhere"};
+  std::ofstream requests(dir + "/requests");
+  for (const char* name : {"first", "second"})
+    requests << nlohmann::json({{"scene", coloured()},
+                                {"output", dir + "/" + name + ".png"},
+                                {"size", "64x48"},
+                                {"frames", 1},
+                                {"stats", dir + "/" + name + ".json"},
+                                {"sets", nlohmann::json::array()},
+                                {"transparency", ""},
+                                {"log", dir + "/" + name + ".log"}})
+                    .dump()
+             << '\n';
+  requests.close();
+  const test::ProcessResult worker =
+      test::run({"/bin/sh", "-c", "exec \"$0\" variants-worker < \"$1\"", test::ivshadowExe(),
+                 dir + "/requests"},
+                noContext);
+  EXPECT_EQ(worker.exitCode, 3);
+  EXPECT_EQ(worker.out, "{\"exit\":3,\"last\":true}\n");
+  EXPECT_NE(readText(dir + "/first.log").find("IVSHADOW_EGL_PLATFORM=nowhere is not available"),
+            std::string::npos)
+      << readText(dir + "/first.log");
+  EXPECT_FALSE(test::fileExists(dir + "/second.log"));
+
+  const std::string file = dir + "/three.variants";
+  std::ofstream(file) << "sweep light Lamp.intensity = 0.4 | 0.6 | 0.8\n";
+  const auto sweep = [&](const std::string& out) {
+    return std::vector<std::string>{
+        test::ivshadowExe(), "variants", coloured(), file, "-o", out, "--size", "64x48",
+        "--frames",          "1",        "--jobs",   "1"};
+  };
+  const test::ProcessResult workers = test::run(sweep(dir + "/workers"), noContext);
+  std::vector<std::string> environment = noContext;
+  environment.push_back(kOneProcessPerVariant[0]);
+  const test::ProcessResult processes = test::run(sweep(dir + "/processes"), environment);
+  EXPECT_EQ(workers.exitCode, 1) << workers.err;
+  EXPECT_EQ(processes.exitCode, 1) << processes.err;
+  EXPECT_EQ(workers.err, processes.err);
+  EXPECT_EQ(test::lines(workers.err).size(), 6u) << "3 progress lines, 3 errors\n" << workers.err;
+  for (const char* name : {"light-0.4", "light-0.6", "light-0.8"}) {
+    const nlohmann::json manifest =
+        nlohmann::json::parse(readText(dir + "/workers/manifests/" + std::string(name) + ".json"));
+    EXPECT_EQ(manifest["exit_code"], 3) << name;
+    EXPECT_NE(manifest["error"].get<std::string>().find("no GL context"), std::string::npos)
+        << manifest["error"];
+  }
+}
+
 // A worker killed while it renders (as a driver's crash would end it) is started again and
 // its variant rendered in the new one; killed again there, the variant fails as a killed
 // render process did, and the variants after it still render.
 TEST(VariantsWorkers, AKilledWorkerIsRestartedAndItsVariantRetriedOnce) {
   const std::string dir = test::outputDir();
-  const std::string file = dir + "/four.variants";
-  std::ofstream(file) << "sweep light Lamp.intensity = 0.4 | 0.6 | 0.8 | 1\n";
+  const std::string file = dir + "/three.variants";
+  // The second variant traces a bounce: half a second here, ten times the others, so that
+  // it is still rendering when the test kills its worker, on a loaded machine too.
+  std::ofstream(file) << "variant before\n  Lamp.intensity = 0.4\n"
+                         "variant slow\n  Scene.bounce = TRUE\n  Scene.bounceLights = 16\n"
+                         "variant after\n  Lamp.intensity = 0.8\n";
   for (const int kills : {1, 2}) {
     const std::string out = dir + "/killed" + std::to_string(kills);
     const int sweep = test::startProcess({test::ivshadowExe(), "variants", coloured(), file, "-o",
                                           out, "--size", "320x240", "--frames", "3", "--jobs", "1"},
                                          {}, out + ".out", out + ".err");
     ASSERT_GT(sweep, 0);
-    // The worker opens a variant's log as it starts rendering it: from then on it renders
-    // light-0.6 for tens of milliseconds.
-    ASSERT_TRUE(waitUntil([&] { return test::fileExists(out + "/.light-0.6.log"); }));
+    // The variant's log is made as it is sent to the worker.
+    ASSERT_TRUE(waitUntil([&] { return test::fileExists(out + "/.slow.log"); }));
     std::vector<int> killed;
     for (int k = 0; k < kills; ++k) {
       std::vector<int> workers;
@@ -228,24 +285,24 @@ TEST(VariantsWorkers, AKilledWorkerIsRestartedAndItsVariantRetriedOnce) {
     }
     const int status = test::waitForProcess(sweep);
     const std::string err = readText(out + ".err");
-    const nlohmann::json retried = manifest(out, "light-0.6");
-    for (const char* other : {"light-0.4", "light-0.8", "light-1"})
+    const nlohmann::json retried = manifest(out, "slow");
+    for (const char* other : {"before", "after"})
       EXPECT_EQ(manifest(out, other)["exit_code"], 0) << other << "\n" << err;
     if (kills == 1) {
       EXPECT_EQ(status, 0) << err;
       EXPECT_EQ(retried["exit_code"], 0) << err;
-      const test::ProcessResult alone =
-          test::run({test::ivshadowExe(), "render", coloured(), "-o", dir + "/alone.png", "--size",
-                     "320x240", "--frames", "3", "--set", "Lamp.intensity=0.6"});
+      const test::ProcessResult alone = test::run(
+          {test::ivshadowExe(), "render", coloured(), "-o", dir + "/alone.png", "--size", "320x240",
+           "--frames", "3", "--set", "Scene.bounce=TRUE", "--set", "Scene.bounceLights=16"});
       ASSERT_EQ(alone.exitCode, 0) << alone.err;
-      EXPECT_TRUE(samePixels(out + "/light-0.6.png", dir + "/alone.png"));
+      EXPECT_TRUE(samePixels(out + "/slow.png", dir + "/alone.png"));
     } else {
       EXPECT_EQ(status, 1) << err;
       EXPECT_EQ(retried["exit_code"], -1);
-      EXPECT_NE(err.find(file + ":1: error: variant light-0.6: the render was killed by a signal"),
+      EXPECT_NE(err.find(file + ":3: error: variant slow: the render was killed by a signal"),
                 std::string::npos)
           << err;
-      EXPECT_FALSE(test::fileExists(out + "/light-0.6.png"));
+      EXPECT_FALSE(test::fileExists(out + "/slow.png"));
     }
     for (const std::string& name : test::filesIn(out))
       EXPECT_NE(name[0], '.') << "left behind: " << name;
