@@ -24,6 +24,7 @@ bench() {
     --benchmark_report_aggregates_only=true --benchmark_format=json >"$out/$name.json"
 }
 bench rays 'RaysAgainstCoin/(1000|100000)/[034]/[01]/'
+bench still 'BundledStill/'
 bench peel 'Peel/([1456789]|10)/'
 bench map_build 'MapBuildMethods/(10000|100000)/4/[023]/'
 echo "viewer drag" >&2

@@ -73,6 +73,25 @@ def rays_rows(m):
     return rows
 
 
+def bundled_rows(m):
+    # BundledStill/<scene>/<shadows>: 0 every group inactive (plain Coin), 1 as it is.
+    ratios = []
+    scene = 0
+    while f"BundledStill/{scene}/0" in m.counters:
+        label = m.counters[f"BundledStill/{scene}/1"].get("label", str(scene)).split(" ")[0]
+        ratios.append((ratio(m[f"BundledStill/{scene}/1"], m[f"BundledStill/{scene}/0"]), label))
+        scene += 1
+    if not ratios:
+        sys.exit(f"{m.path}: no BundledStill benchmarks")
+    ratios.sort()
+    worst, name = ratios[-1]
+    return [("a bundled scene's still frame ≤ 1.5x plain Coin (its groups at their defaults "
+             "against the same groups inactive), 800 x 600",
+             f"{len(ratios)} scenes from **{ratios[0][0]:.2f}x** ({ratios[0][1]}) to "
+             f"**{worst:.2f}x** ({name}); median {ratios[len(ratios) // 2][0]:.2f}x",
+             verdict(worst, 1.5))]
+
+
 def peel_rows(m):
     # Peel/<kind>/<depth>: 1 SORTED_LAYERS_BLEND with as many passes as layers, 10 with Coin's
     # default 4 passes (the baseline: "4-pass"), 4 PeelingSeparator FRAGMENT_LISTS, 5
@@ -177,6 +196,7 @@ def main():
             key, _, value = line.strip().partition(" ")
             run[key] = value
     rows = (rays_rows(medians(os.path.join(folder, "rays.json")))
+            + bundled_rows(medians(os.path.join(folder, "still.json")))
             + peel_rows(medians(os.path.join(folder, "peel.json")))
             + map_rows(medians(os.path.join(folder, "map_build.json")))
             + drag_rows(os.path.join(folder, "viewer_drag.txt"))
