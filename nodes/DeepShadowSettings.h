@@ -2,6 +2,7 @@
 
 #include "ivshadow/Export.h"
 #include "ivshadow/ShadowMethod.h"
+#include "nodes/ShadowFieldTable.h"
 #include "scene/ShadowTypes.h"
 
 class SoDeepShadowDirectionalLight;
@@ -11,10 +12,6 @@ class SoLight;
 class SoTransparentShadowGroup;
 
 namespace ivshadow {
-
-// An opacity map's slices per face (the slices field's default): the four of seeds/002's
-// implementation, one draw per face (kOpacitySlicesPerDraw).
-inline constexpr int kDefaultOpacitySlices = 4;
 
 // One bounce of the group's casting lights (SoTransparentShadowGroup::bounce, seeds/001): the
 // defaults are the document's, 256 virtual point lights with 128 x 128 imperfect shadow maps.
@@ -42,21 +39,24 @@ inline constexpr double kRefineDelaySeconds = 0.25;
 // Reads and clamps it to kMinMovingResolution .. 1, a value outside reported once.
 IVSHADOW_INTERNAL float resolveMovingResolution(SoTransparentShadowGroup& group);
 
-// The fields of a SoDeepShadowLight after clamping to what the map builder accepts.
+// The fields of a SoDeepShadowLight after clamping to what the map builder accepts; a fresh one
+// holds the fields' defaults.
 struct DeepShadowSettings {
-  int resolution = 512;
-  int maxLayers = 4;
-  int slices = kDefaultOpacitySlices;  // an opacity map's (method OPACITY_MAP)
-  float nearRadius = -1.0f;            // <= 0: fitted to the casters
-  float farRadius = -1.0f;             // <= 0: fitted to the casters
-  float bias = 1.0f;
-  int shadowColor = 0;  // SoDeepShadowLight::ShadowColor
-  int colorModel = 0;   // SoDeepShadowLight::ColorModel
+  int resolution = shadowFieldDefault<int>(ShadowFieldId::resolution);
+  int maxLayers = shadowFieldDefault<int>(ShadowFieldId::maxLayers);
+  int slices = shadowFieldDefault<int>(ShadowFieldId::slices);  // an opacity map's
+  // <= 0: fitted to the casters
+  float nearRadius = shadowFieldDefault<float>(ShadowFieldId::nearRadius);
+  float farRadius = shadowFieldDefault<float>(ShadowFieldId::farRadius);
+  float bias = shadowFieldDefault<float>(ShadowFieldId::bias);
+  int shadowColor = shadowFieldDefault<int>(ShadowFieldId::shadowColor);  // SoDeepShadowLight's
+  int colorModel = shadowFieldDefault<int>(ShadowFieldId::colorModel);    // enums
   bool halfPrecision = false;
   // 0: the nearest texel; w: the mean over a w x w texel square (PCF, lighting.glsl)
   int filterWidth = 0;
-  ShadowMethod method = ShadowMethod::Auto;  // as set (Auto not yet resolved)
-  bool mergeOverflow = true;                 // layerOverflow MERGE
+  // As set (Auto not yet resolved).
+  ShadowMethod method = shadowFieldDefault<ShadowMethod>(ShadowFieldId::method);
+  bool mergeOverflow = true;  // layerOverflow MERGE
 };
 
 // Reads and clamps the light's fields; each field that is out of range is reported once per

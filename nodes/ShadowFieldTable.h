@@ -4,13 +4,15 @@
 #include "ivshadow/ShadowFieldList.h"
 #include "ivshadow/ShadowMethod.h"
 #include "ivshadow/SoDeepShadowLight.h"
-#include "nodes/DeepShadowSettings.h"
 
 #include <cstddef>
 #include <iterator>
 
 namespace ivshadow {
 
+// An opacity map's slices per face (the slices field's default): the four of seeds/002's
+// implementation, one draw per face (kOpacitySlicesPerDraw).
+inline constexpr int kDefaultOpacitySlices = 4;
 // The map's depth offset towards the light, in texels at the receiver, beyond the receiver's
 // own plane (lighting.glsl). The lookup compares the stored surfaces with that plane, so the
 // offset covers only float rounding; a tenth of a texel was the most accurate on the bundled
@@ -153,6 +155,12 @@ inline constexpr ShadowFieldSpec kShadowFields[] = {
 
 constexpr const ShadowFieldSpec& shadowField(ShadowFieldId id) {
   return kShadowFields[std::size_t(id)];
+}
+
+// A field's default as the C++ type that holds it.
+template <class T>
+constexpr T shadowFieldDefault(ShadowFieldId id) {
+  return static_cast<T>(shadowField(id).defaultValue);
 }
 
 // The table's rows are the list's fields, in its order, of the list's types.
