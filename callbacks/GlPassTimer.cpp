@@ -30,7 +30,7 @@ void GlPassTimer::stop() {
 }
 
 double GlPassTimer::elapsedMs() const {
-  if (pending_) resolve(waitsForResults());
+  if (pending_ && waitsForResults()) resolve(true);
   return lastMs_;
 }
 

@@ -11,8 +11,10 @@ namespace ivshadow {
 //
 // Reading a result the GPU has not reached stalls the CPU until it does, so results are
 // waited for only while someone reads the timings (setWaitForResults, which the statistics'
-// pass timing sets); otherwise a read takes the result only once GL_QUERY_RESULT_AVAILABLE
-// says it is there, and gives the latest one that was.
+// pass timing sets). Otherwise a measurement is read when the next one starts, if
+// GL_QUERY_RESULT_AVAILABLE says GL has it by then (the frame before has usually finished):
+// asking right after the pass would find nothing, and make some drivers (llvmpipe among them)
+// flush the frame's commands early.
 class GlPassTimer {
  public:
   GlPassTimer();
@@ -20,8 +22,8 @@ class GlPassTimer {
   // (the frame before has usually finished by then), and dropped if not.
   void start();
   void stop();
-  // The last measurement's time: waited for while results are waited for; otherwise the
-  // latest measurement whose result GL had, 0 before the first.
+  // The last measurement's time while results are waited for; otherwise the latest one read,
+  // 0 before the first.
   double elapsedMs() const;
 
   // Whether elapsedMs waits for the GPU, for every pass timer of the process.
