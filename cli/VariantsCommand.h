@@ -21,13 +21,14 @@ struct VariantsOptions {
   int limit = 0;                  // --limit: array tasks at once (0: no limit)
 };
 
-// `ivshadow variants`: renders each variant with `ivshadow render` in a child process (up to
-// `jobs` at a time) to DIR/NAME.png with its manifest DIR/manifests/NAME.json and writes
-// DIR/variants.csv and DIR/index.html. A variant that fails is reported with its line in the
-// variants file and skipped; one whose manifest is current is kept from an earlier run. With
-// --shard or --only it renders that part only and leaves the reports to variants-merge; --list
-// and --slurm print or write the commands of the parts instead of rendering. Exit 0 when every
-// variant rendered, 2 when the inputs are bad or some variant had bad input, 1 otherwise.
+// `ivshadow variants`: renders each variant as `ivshadow render` would, by long-lived worker
+// processes (up to `jobs` at a time; cli/VariantRenders.h) to DIR/NAME.png with its manifest
+// DIR/manifests/NAME.json and writes DIR/variants.csv and DIR/index.html. A variant that fails
+// is reported with its line in the variants file and skipped; one whose manifest is current is
+// kept from an earlier run. With --shard or --only it renders that part only and leaves the
+// reports to variants-merge; --list and --slurm print or write the commands of the parts
+// instead of rendering. Exit 0 when every variant rendered, 2 when the inputs are bad or some
+// variant had bad input, 1 otherwise.
 int runVariants(const VariantsOptions& options);
 
 }  // namespace ivshadow
