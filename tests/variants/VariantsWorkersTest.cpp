@@ -197,6 +197,59 @@ TEST(VariantsWorkers, AWorkerSaysEachRendersWarningsInItsOwnLog) {
   EXPECT_TRUE(samePixels(dir + "/render.png", dir + "/second.png"));
 }
 
+// What one render sets on the worker's renderer is not the next one's: a --transparency type
+// is not kept by a render without one, and a render of another size gets a framebuffer of
+// its size (Python's render() sends such requests). Each picture equals `ivshadow render`'s.
+TEST(VariantsWorkers, AWorkerRendersWhatEachRequestAsksNotWhatTheLastOneSet) {
+  const std::string dir = test::outputDir();
+  // GL's path blending with Coin, where the transparency type changes the picture.
+  const std::vector<std::string> sets = {"Scene.renderer=RASTER",
+                                         "Scene.transparency=COIN_BLENDING"};
+  const struct {
+    const char* name;
+    const char* size;
+    const char* transparency;
+  } renders[] = {{"sorted", "96x72", "SORTED_OBJECT_BLEND"},
+                 {"default", "96x72", ""},
+                 {"smaller", "64x48", "BLEND"}};
+  std::ofstream requests(dir + "/requests");
+  for (const auto& r : renders)
+    requests << nlohmann::json({{"scene", coloured()},
+                                {"output", dir + "/" + r.name + ".png"},
+                                {"size", r.size},
+                                {"frames", 1},
+                                {"stats", dir + "/" + r.name + ".json"},
+                                {"sets", sets},
+                                {"transparency", r.transparency},
+                                {"log", dir + "/" + r.name + ".log"}})
+                    .dump()
+             << '\n';
+  requests.close();
+  const test::ProcessResult worker =
+      test::run({"/bin/sh", "-c", "exec \"$0\" variants-worker < \"$1\"", test::ivshadowExe(),
+                 dir + "/requests"});
+  ASSERT_EQ(worker.exitCode, 0) << worker.err;
+  for (const auto& r : renders) {
+    std::vector<std::string> command = {test::ivshadowExe(),
+                                        "render",
+                                        coloured(),
+                                        "-o",
+                                        dir + "/" + r.name + "-render.png",
+                                        "--size",
+                                        r.size,
+                                        "--frames",
+                                        "1"};
+    for (const std::string& set : sets) command.insert(command.end(), {"--set", set});
+    if (*r.transparency != 0) command.insert(command.end(), {"--transparency", r.transparency});
+    const test::ProcessResult render = test::run(command);
+    ASSERT_EQ(render.exitCode, 0) << render.err;
+    EXPECT_TRUE(samePixels(dir + "/" + r.name + ".png", dir + "/" + r.name + "-render.png"))
+        << r.name;
+  }
+  EXPECT_FALSE(samePixels(dir + "/sorted.png", dir + "/default.png"))
+      << "the transparency type must change this picture for the test to mean anything";
+}
+
 // A render that fails for a reason other than bad input (here: no GL context) may leave its
 // worker in any state: the worker answers and ends, unasked requests unanswered, and a fresh
 // one takes the next variant. The sweep says and files what one process per variant did.
