@@ -48,6 +48,7 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   const std::string flags = glAllocationError(GlAllocation::Buffer);
   if (!flags.empty())
     pass->flagsError_ = "GL could not allocate the map's flag buffer (" + flags + ")";
+  labelGlObject(GL_BUFFER, pass->flags_.get(), "map build flags");
   return pass;
 }
 
@@ -78,6 +79,7 @@ bool DeepShadowPass::linkProgram() {
   program_ =
       GlProgram::link(composeShader(glsl::kDsmBuildVert), composeShader(glsl::kDsmBuildFrag), why);
   if (!program_) programError_ = "the deep shadow map program failed: " + why;
+  labelGlObject(GL_PROGRAM, program_.name(), "deep shadow map build");
   return bool(program_);
 }
 
@@ -88,6 +90,7 @@ bool DeepShadowPass::linkOpacityProgram() {
   opacityProgram_ = GlProgram::link(composeShader(glsl::kDsmBuildVert),
                                     composeShader(glsl::kOpacityMapFrag), why);
   if (!opacityProgram_) opacityProgramError_ = "the opacity map program failed: " + why;
+  labelGlObject(GL_PROGRAM, opacityProgram_.name(), "opacity map build");
   return bool(opacityProgram_);
 }
 

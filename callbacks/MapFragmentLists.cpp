@@ -122,6 +122,7 @@ const GlProgram* MapFragmentLists::computeProgram(const std::string& defines, co
     program = GlProgram::linkCompute(
         composeShader(std::string(glsl::kDsmListCommonGlsl) + source, defines), why);
     if (!program) error = std::string("the fragment lists' ") + what + " program failed: " + why;
+    labelGlObject(GL_PROGRAM, program.name(), std::string("map fragment lists ") + what);
   }
   whyNot = error;
   return program ? &program : nullptr;
