@@ -102,8 +102,9 @@ namespace ivshadow {
 // Whether the groups and peeling separators time their shading, peel and capture passes on
 // the GPU (gpuShadingMs, gpuCaptureMs, PeelStatistics::gpuPeelMs). Reading a GPU timer waits
 // for the GPU to finish the pass, so it is off unless a profiler asks: `ivshadow render
-// --stats` and the viewer's live figures turn it on. Map builds are always timed (they wait
-// for each pass anyway).
+// --stats` and the viewer's live figures turn it on. Map builds and the bounce's maps are
+// always timed; while it is off, their GPU times (gpuBuildMs, bounceMapMs) are read without
+// waiting, once the GPU has them: a build's figure is then the build before's.
 IVSHADOW_API void setPassTiming(bool on);
 IVSHADOW_API bool passTiming();
 
