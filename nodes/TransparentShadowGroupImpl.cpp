@@ -384,6 +384,167 @@ bool TransparentShadowGroupImpl::traced(SoGLRenderAction* action) {
   return autoTracer_.traces(action->getState(), owner_, "renderer", "RASTER");
 }
 
+bool TransparentShadowGroupImpl::renderTraced(SoGLRenderAction* action) {
+  auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
+  contents_.update(action);
+  TracerSettings settings;
+  settings.movingResolution = resolveMovingResolution(group);
+  settings.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
+  if (!tracer_.render(action, contents_, settings, statistics_)) return false;
+  const std::string why =
+      describeNode(owner_) + " traces its children (renderer " +
+      (group.renderer.getValue() == SoTransparentShadowGroup::TRACER ? "TRACER)"
+                                                                     : "AUTO uses TRACER here)");
+  for (const GroupContents::Light& light : contents_.lights())
+    IdleFields::traced(*light.light, group, why);
+  return true;
+}
+
+TransparentShadowGroupImpl::Context* TransparentShadowGroupImpl::contextFor(
+    SoGLRenderAction* action) {
+  return contexts_.get(SoGLCacheContextElement::get(action->getState()), [this] {
+    std::string whyNot;
+    auto pass = DeepShadowPass::create(whyNot);
+    if (!pass) {
+      // One warning per node class, naming the class the user put in the scene.
+      const std::string node = owner_->getTypeId().getName().getString();
+      if (firstWarning(nullptr, "rendering without deep shadows: " + node))
+        SoDebugError::postWarning(node.c_str(), "rendering without deep shadows: %s",
+                                  whyNot.c_str());
+      return std::unique_ptr<Context>();
+    }
+    auto context = std::make_unique<Context>();
+    context->pass = std::move(pass);
+    const GlCapabilities capabilities = GlCapabilities::queryCurrent();
+    context->softwareRenderer = capabilities.isSoftwareRenderer();
+    context->renderer = capabilities.renderer;
+    return context;
+  });
+}
+
+ShadingUniforms* TransparentShadowGroupImpl::beginShading(SoGLRenderAction* action,
+                                                          Context& context, bool bounced) {
+  ShadingFeatures features = featuresOf(context.maps, contents_.lights().size());
+  features.bounce = bounced;
+  ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits(), features);
+  // Coin bound no program for the shading variant. When it failed to compile or link Coin
+  // has said why; when it declined to draw it at all it says nothing, and the group would
+  // render as a plain separator without a word (seen with two contexts on two threads).
+  if (uniforms == nullptr && firstWarning(owner_, "no shading program"))
+    SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
+                              "%s: Coin bound no shading program in this context; rendering "
+                              "without deep shadows",
+                              describeNode(owner_).c_str());
+  return uniforms;
+}
+
+int TransparentShadowGroupImpl::packMaps(ShadingUniforms& uniforms, const Context& context) {
+  const SbMatrix& toEye = shading_.localToEye();
+  uniforms.mapCount = int(std::min(contents_.lights().size(), context.maps.size()));
+  int rayCount = 0;
+  for (std::size_t slot = 0; slot < std::size_t(uniforms.mapCount); ++slot) {
+    const MapState& map = context.maps[slot];
+    const bool directional = map.kind == LightKind::Directional;
+    SbVec3f eye;
+    if (directional) {
+      toEye.multDirMatrix(map.position, eye);
+      eye.normalize();
+    } else {
+      toEye.multVecMatrix(map.position, eye);
+    }
+    for (int i = 0; i < 3; ++i) {
+      uniforms.mapLight[slot * 3 + std::size_t(i)] = map.position[i];
+      uniforms.mapLightEye[slot * 3 + std::size_t(i)] = eye[i];
+    }
+    uniforms.mapParams[slot * 4 + 0] = float(map.settings.resolution);
+    uniforms.mapParams[slot * 4 + 1] = directional ? 1.0f : 0.0f;
+    for (std::size_t face = 0; face < 6; ++face) {
+      uniforms.mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
+      uniforms.mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
+    }
+    uniforms.mapSlices[slot * 3 + 0] = map.sliceNear;
+    uniforms.mapSlices[slot * 3 + 1] = map.sliceFar;
+    // A map that failed to build holds no layer and casts no shadow, as a deep one.
+    uniforms.mapSlices[slot * 3 + 2] =
+        map.method == ShadowMethod::OpacityMap ? float(map.faceLayers[0]) : 0.0f;
+    uniforms.mapParams[slot * 4 + 2] = map.settings.bias;
+    uniforms.mapParams[slot * 4 + 3] = float(map.settings.filterWidth);
+    uniforms.mapColoured[slot] = map.coloured ? 1 : 0;
+    uniforms.mapProjection[slot] = int(map.frame.projection);
+    for (int i = 0; i < 16; ++i)
+      uniforms.mapLookup[slot * 16 + std::size_t(i)] = (&map.frame.lookup[0][0])[i];
+    uniforms.mapTexelScale[slot * 2 + 0] = map.frame.texelScale.x;
+    uniforms.mapTexelScale[slot * 2 + 1] = map.frame.texelScale.y;
+    if (shadowsPerPixel(map.method)) uniforms.mapRay[slot] = rayCount++;
+  }
+  return rayCount;
+}
+
+void TransparentShadowGroupImpl::packBounce(ShadingUniforms& uniforms, const Context& context,
+                                            bool bounced) {
+  if (!bounced) {
+    uniforms.bounceCount = 0;
+    return;
+  }
+  uniforms.bounceCount = int(bounce_.lights().lights.size());
+  uniforms.bounceTiles = context.bounceMaps->tiles();
+  uniforms.bounceMapSize = context.bounceMapSize;
+  uniforms.bounceLift = bounce_.lift();
+  // Normals go to the group's coordinates by the transpose of the group-to-eye matrix's
+  // inverse's inverse: its own transpose (SbMatrix rows are GL's columns).
+  const SbMatrix& toEye = shading_.localToEye();
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 3; ++column)
+      uniforms.eyeToLocalNormal[column * 3 + row] = toEye[row][column];
+}
+
+void TransparentShadowGroupImpl::updateRays(SoGLRenderAction* action, bool inPath, Context& context,
+                                            ShadingUniforms& uniforms) {
+  if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
+  const std::string failure = context.rays->update(
+      action, contents_, shading_, rayCasters_, context.maps, renderChildren_, inPath, statistics_);
+  if (!failure.empty())
+    for (std::size_t slot = 0; slot < std::size_t(uniforms.mapCount); ++slot)
+      if (shadowsPerPixel(context.maps[slot].method))
+        warnNoShadow(*contents_.lights()[slot].light, failure);
+  const std::string& volumes = context.rays->volumeFailure();
+  if (failure.empty() && !volumes.empty())
+    for (std::size_t slot = 0; slot < std::size_t(uniforms.mapCount); ++slot)
+      if (context.maps[slot].method == ShadowMethod::Volumes)
+        warnNoShadow(*contents_.lights()[slot].light, volumes);
+  uniforms.rayLayers = context.rays->pass().layers();
+}
+
+void TransparentShadowGroupImpl::drawShaded(SoGLRenderAction* action, bool inPath, bool peel,
+                                            Context& context, bool rays, bool bounced) {
+  SoState* state = action->getState();
+  const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(context.maps.size()));
+  const std::unique_ptr<GlStateScope> traced =
+      rays ? context.rays->pass().bind() : std::unique_ptr<GlStateScope>();
+  const std::unique_ptr<GlStateScope> bouncing =
+      bounced ? context.bounceMaps->bind(context.pass->textureUnits())
+              : std::unique_ptr<GlStateScope>();
+  SoShapeStyleElement::setShadowsRendering(state, TRUE);
+  // A peeling separator below shades its layers with this group's program and maps.
+  ShadowGroupElement::setActiveGroup(state, &shading_);
+  // A shadow style above the group that does not receive: its shapes are drawn as a
+  // SoShadowStyle inside would draw them (shading off), until a style below turns it on.
+  if (!(SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED))
+    SoGLShaderProgramElement::enable(state, FALSE);
+  const bool timed = passTiming();
+  if (timed) context.shadingTimer.start();
+  shadeChildren(action, inPath, peel, context);
+  if (timed) {
+    context.shadingTimer.stop();
+    statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();  // waits for the GPU
+  }
+  shading_.end();
+  SoShapeStyleElement::setShadowsRendering(state, FALSE);
+  // The state render pushed is popped before the bindings above are undone, so Coin's
+  // elements put back their GL state first, as they always have.
+  state->pop();
+}
+
 bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, bool peel) {
   // A traced group draws the shapes it does not trace through paths that may run through this
   // group, or are its own: as a separator.
@@ -405,44 +566,12 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   // fell on nothing below it (the floor around a nested group's glass stayed lit).
   if (ShadowGroupElement::capturing(state)) return false;
   // Traced, the group needs none of the GL path's programs or maps.
-  auto& group = *static_cast<SoTransparentShadowGroup*>(owner_);
-  if (traced(action)) {
-    contents_.update(action);
-    TracerSettings settings;
-    settings.movingResolution = resolveMovingResolution(group);
-    settings.bounceSamples = group.bounce.getValue() ? group.bounceLights.getValue() : 0;
-    if (tracer_.render(action, contents_, settings, statistics_)) {
-      const std::string why = describeNode(owner_) + " traces its children (renderer " +
-                              (group.renderer.getValue() == SoTransparentShadowGroup::TRACER
-                                   ? "TRACER)"
-                                   : "AUTO uses TRACER here)");
-      for (const GroupContents::Light& light : contents_.lights())
-        IdleFields::traced(*light.light, group, why);
-      return true;
-    }
-  }
-  IdleFields::sayIfSet(group, "movingResolution",
+  if (traced(action) && renderTraced(action)) return true;
+  IdleFields::sayIfSet(*static_cast<SoTransparentShadowGroup*>(owner_), "movingResolution",
                        "GL draws the children here, every frame in full (only a traced group "
                        "reduces its frames)");
   warnCoarseDepth(owner_, state);
-  Context* found = contexts_.get(SoGLCacheContextElement::get(state), [this] {
-    std::string whyNot;
-    auto pass = DeepShadowPass::create(whyNot);
-    if (!pass) {
-      // One warning per node class, naming the class the user put in the scene.
-      const std::string node = owner_->getTypeId().getName().getString();
-      if (firstWarning(nullptr, "rendering without deep shadows: " + node))
-        SoDebugError::postWarning(node.c_str(), "rendering without deep shadows: %s",
-                                  whyNot.c_str());
-      return std::unique_ptr<Context>();
-    }
-    auto context = std::make_unique<Context>();
-    context->pass = std::move(pass);
-    const GlCapabilities capabilities = GlCapabilities::queryCurrent();
-    context->softwareRenderer = capabilities.isSoftwareRenderer();
-    context->renderer = capabilities.renderer;
-    return context;
-  });
+  Context* found = contextFor(action);
   if (found == nullptr) return false;
   Context& context = *found;
   // The maps, uniforms and texture bindings belong to this frame; a render cache above the
@@ -458,119 +587,22 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   const bool bounced = updateBounce(action, context);
 
   state->push();
-  ShadingFeatures features = featuresOf(context.maps, contents_.lights().size());
-  features.bounce = bounced;
-  ShadingUniforms* uniforms = shading_.begin(action, context.pass->textureUnits(), features);
+  ShadingUniforms* uniforms = beginShading(action, context, bounced);
   if (uniforms == nullptr) {
-    // Coin bound no program for the shading variant. When it failed to compile or link Coin
-    // has said why; when it declined to draw it at all it says nothing, and the group would
-    // render as a plain separator without a word (seen with two contexts on two threads).
-    if (firstWarning(owner_, "no shading program"))
-      SoDebugError::postWarning(owner_->getTypeId().getName().getString(),
-                                "%s: Coin bound no shading program in this context; rendering "
-                                "without deep shadows",
-                                describeNode(owner_).c_str());
     state->pop();
     return false;
   }
   // From here on, the RAYS captures included, texture coordinate functions below reach this
   // shading (TexGenWatchElement).
   ShadowGroupElement::setShading(state, &shading_);
-  const SbMatrix& toEye = shading_.localToEye();
-  uniforms->mapCount = int(std::min(contents_.lights().size(), context.maps.size()));
-  int rayCount = 0;
-  for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot) {
-    const MapState& map = context.maps[slot];
-    const bool directional = map.kind == LightKind::Directional;
-    SbVec3f eye;
-    if (directional) {
-      toEye.multDirMatrix(map.position, eye);
-      eye.normalize();
-    } else {
-      toEye.multVecMatrix(map.position, eye);
-    }
-    for (int i = 0; i < 3; ++i) {
-      uniforms->mapLight[slot * 3 + std::size_t(i)] = map.position[i];
-      uniforms->mapLightEye[slot * 3 + std::size_t(i)] = eye[i];
-    }
-    uniforms->mapParams[slot * 4 + 0] = float(map.settings.resolution);
-    uniforms->mapParams[slot * 4 + 1] = directional ? 1.0f : 0.0f;
-    for (std::size_t face = 0; face < 6; ++face) {
-      uniforms->mapFaceFirst[slot * 6 + face] = map.faceFirst[face];
-      uniforms->mapFaceLayers[slot * 6 + face] = map.faceLayers[face];
-    }
-    uniforms->mapSlices[slot * 3 + 0] = map.sliceNear;
-    uniforms->mapSlices[slot * 3 + 1] = map.sliceFar;
-    // A map that failed to build holds no layer and casts no shadow, as a deep one.
-    uniforms->mapSlices[slot * 3 + 2] =
-        map.method == ShadowMethod::OpacityMap ? float(map.faceLayers[0]) : 0.0f;
-    uniforms->mapParams[slot * 4 + 2] = map.settings.bias;
-    uniforms->mapParams[slot * 4 + 3] = float(map.settings.filterWidth);
-    uniforms->mapColoured[slot] = map.coloured ? 1 : 0;
-    uniforms->mapProjection[slot] = int(map.frame.projection);
-    for (int i = 0; i < 16; ++i)
-      uniforms->mapLookup[slot * 16 + std::size_t(i)] = (&map.frame.lookup[0][0])[i];
-    uniforms->mapTexelScale[slot * 2 + 0] = map.frame.texelScale.x;
-    uniforms->mapTexelScale[slot * 2 + 1] = map.frame.texelScale.y;
-    if (shadowsPerPixel(map.method)) uniforms->mapRay[slot] = rayCount++;
-  }
-  if (bounced) {
-    uniforms->bounceCount = int(bounce_.lights().lights.size());
-    uniforms->bounceTiles = context.bounceMaps->tiles();
-    uniforms->bounceMapSize = context.bounceMapSize;
-    uniforms->bounceLift = bounce_.lift();
-    // Normals go to the group's coordinates by the transpose of the group-to-eye matrix's
-    // inverse's inverse: its own transpose (SbMatrix rows are GL's columns).
-    for (int row = 0; row < 3; ++row)
-      for (int column = 0; column < 3; ++column)
-        uniforms->eyeToLocalNormal[column * 3 + row] = toEye[row][column];
-  } else {
-    uniforms->bounceCount = 0;
-  }
+  const int rayCount = packMaps(*uniforms, context);
+  packBounce(*uniforms, context, bounced);
   shading_.apply();
   if (rayCount > 0) {
-    if (!context.rays) context.rays = std::make_unique<RayMethod>(context.pass->rayUnit(0));
-    const std::string failure =
-        context.rays->update(action, contents_, shading_, rayCasters_, context.maps,
-                             renderChildren_, inPath, statistics_);
-    if (!failure.empty())
-      for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot)
-        if (shadowsPerPixel(context.maps[slot].method))
-          warnNoShadow(*contents_.lights()[slot].light, failure);
-    const std::string& volumes = context.rays->volumeFailure();
-    if (failure.empty() && !volumes.empty())
-      for (std::size_t slot = 0; slot < std::size_t(uniforms->mapCount); ++slot)
-        if (context.maps[slot].method == ShadowMethod::Volumes)
-          warnNoShadow(*contents_.lights()[slot].light, volumes);
-    uniforms->rayLayers = context.rays->pass().layers();
+    updateRays(action, inPath, context, *uniforms);
     shading_.apply();
   }
-
-  {
-    const std::unique_ptr<GlStateScope> bound = context.pass->bindMaps(int(context.maps.size()));
-    const std::unique_ptr<GlStateScope> traced =
-        rayCount > 0 ? context.rays->pass().bind() : std::unique_ptr<GlStateScope>();
-    const std::unique_ptr<GlStateScope> bouncing =
-        bounced ? context.bounceMaps->bind(context.pass->textureUnits())
-                : std::unique_ptr<GlStateScope>();
-    SoShapeStyleElement::setShadowsRendering(state, TRUE);
-    // A peeling separator below shades its layers with this group's program and maps.
-    ShadowGroupElement::setActiveGroup(state, &shading_);
-    // A shadow style above the group that does not receive: its shapes are drawn as a
-    // SoShadowStyle inside would draw them (shading off), until a style below turns it on.
-    if (!(SoShadowStyleElement::get(state) & SoShadowStyleElement::SHADOWED))
-      SoGLShaderProgramElement::enable(state, FALSE);
-    const bool timed = passTiming();
-    if (timed) context.shadingTimer.start();
-    shadeChildren(action, inPath, peel, context);
-    if (timed) {
-      context.shadingTimer.stop();
-      statistics_.gpuShadingMs = context.shadingTimer.elapsedMs();  // waits for the GPU
-    }
-    shading_.end();
-    SoShapeStyleElement::setShadowsRendering(state, FALSE);
-    state->pop();
-  }
+  drawShaded(action, inPath, peel, context, rayCount > 0, bounced);
   return true;
 }
 

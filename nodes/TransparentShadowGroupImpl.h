@@ -109,6 +109,26 @@ class TransparentShadowGroupImpl {
   // Whether the group is traced in the action's context: renderer TRACER, or AUTO on a
   // software rasteriser (said once).
   bool traced(SoGLRenderAction* action);
+  // Renders the group with its tracer; false when the tracer declines and GL draws it.
+  bool renderTraced(SoGLRenderAction* action);
+  // The action's GL context's passes and maps, made on its first frame; null (said once)
+  // where GL cannot give them.
+  Context* contextFor(SoGLRenderAction* action);
+  // Begins the shading variant this frame's maps and bounce need; null (said once) when Coin
+  // bound no program for it.
+  ShadingUniforms* beginShading(SoGLRenderAction* action, Context& context, bool bounced);
+  // Writes each light slot's map (or ray) parameters into the uniforms; returns how many
+  // slots shadow per pixel.
+  int packMaps(ShadingUniforms& uniforms, const Context& context);
+  // Writes the bounce's lights and atlas into the uniforms, or none without the bounce.
+  void packBounce(ShadingUniforms& uniforms, const Context& context, bool bounced);
+  // Brings the per-pixel shadows (RAYS, VOLUMES) up to date, saying once why a light has none.
+  void updateRays(SoGLRenderAction* action, bool inPath, Context& context,
+                  ShadingUniforms& uniforms);
+  // Binds the maps, rays and bounce, draws the children shaded and pops the state that render
+  // pushed for the shading.
+  void drawShaded(SoGLRenderAction* action, bool inPath, bool peel, Context& context, bool rays,
+                  bool bounced);
   SoSeparator* owner_;
   ChildrenRenderer renderChildren_;
   GroupContents contents_;
