@@ -267,8 +267,11 @@ std::uint64_t mapMemoryBudget(bool softwareRenderer) {
   return budget == 0 ? std::uint64_t(bytes) : std::min(budget, std::uint64_t(bytes));
 }
 
-void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLightStatistics& light,
-                  const SoNode& lightNode, std::uint64_t budget) {
+namespace {
+
+// What slot `map` asks of the build, its resolution halved until the build fits `budget`
+// bytes (0: unknown).
+MapRequest mapRequest(const MapState& map, std::uint64_t budget) {
   MapRequest request;
   request.frame = map.frame;
   request.resolution = map.settings.resolution;
@@ -277,82 +280,82 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
   request.halfPrecision = map.settings.halfPrecision;
   request.colourModel = map.model;
   request.mergeOverflow = map.settings.mergeOverflow;
-  const bool opacity = map.method == ShadowMethod::OpacityMap;
-  if (opacity) {
+  if (map.method == ShadowMethod::OpacityMap) {
     request.slices = map.settings.slices;
     request.sliceNear = map.sliceNear;
     request.sliceFar = map.sliceFar;
   }
-  const int asked = request.resolution;
   while (budget > 0 && request.resolution > 1 && DeepShadowPass::peakBytesFor(request) > budget)
     request.resolution /= 2;
-  // The lists may take what the budget leaves beside the layers; a map that needs more peels.
-  // At least one byte: 0 would mean no limit.
+  // The lists may take what the budget leaves beside the layers; a map that needs more is
+  // built layer by layer. At least one byte: 0 would mean no limit.
   if (budget > 0)
     request.listByteLimit = std::max<std::uint64_t>(
         budget - std::min(budget, DeepShadowPass::peakBytesFor(request)), 1u);
-  const int fitted = request.resolution;
-  MapBuildResult built = pass.build(slot, request);
-  const std::string name = lightNode.getName().getString();
-  const std::string type = std::string("So") + lightNode.getTypeId().getName().getString();
-  const std::string label = name.empty() ? type : type + " \"" + name + "\"";
-  if (built.noProgram || !built.failure.empty()) {
-    // The program is the same for every light and group: its failure is said once per
-    // process. Another failure (GL could not allocate what a map of any size needs) once per
-    // light.
-    if (built.noProgram && firstWarning(nullptr, opacity ? "opacity map program" : "map program"))
-      SoDebugError::postWarning("SoTransparentShadowGroup",
-                                "%s; lights with method %s light "
-                                "without a shadow",
-                                pass.programError(request).c_str(), shadowMethodName(map.method));
-    if (!built.noProgram && firstWarning(&lightNode, "map failure"))
-      SoDebugError::postWarning(type.c_str(), "%s: %s; it lights without a shadow", label.c_str(),
-                                built.failure.c_str());
-    map.faceLayers = {};
-    light.resolution = 0;
-    return;
-  }
-  while (built.outOfMemory && request.resolution > 1) {
-    request.resolution /= 2;
-    built = pass.build(slot, request);
-  }
-  if (!built.failure.empty()) built.outOfMemory = true;  // appeared at a smaller size only
-  if ((built.outOfMemory || request.resolution != asked) &&
-      firstWarning(&lightNode, "map resolution")) {
-    MapRequest wanted = request;
-    wanted.resolution = asked;
-    const auto megabytes = [](std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MB"; };
-    if (built.outOfMemory)
-      SoDebugError::postWarning(type.c_str(),
-                                "%s: no %s fits in GL memory at any resolution; "
-                                "it lights without a shadow",
-                                label.c_str(), opacity ? "opacity map" : "deep shadow map");
-    else if (request.resolution != fitted)
-      SoDebugError::postWarning(type.c_str(),
-                                "%s: field resolution %d: GL ran out of memory building the map "
-                                "at %d; using %d",
-                                label.c_str(), asked, fitted, request.resolution);
-    else
-      SoDebugError::postWarning(
-          type.c_str(),
-          "%s: field resolution %d needs %s to build, more than the %s GL can give; using %d",
-          label.c_str(), asked, megabytes(DeepShadowPass::peakBytesFor(wanted)).c_str(),
-          budget > 0 ? megabytes(budget).c_str() : "memory", request.resolution);
-  }
-  // A map that the fragment lists could not hold was peeled: the same map, one draw per layer,
-  // but for the surfaces past maxLayers, which the peel cannot merge. Said once per reason: a
-  // context without the lists gives every light the same one.
-  if (!built.listFailure.empty() && !built.outOfMemory &&
-      firstWarning(nullptr, "map lists: " + built.listFailure))
-    SoDebugError::postWarning(type.c_str(), "%s: %s; its map is built by depth peeling instead%s",
-                              label.c_str(), built.listFailure.c_str(),
-                              request.mergeOverflow ? ", which keeps only the nearest maxLayers "
-                                                      "surfaces of a texel (layerOverflow TRUNCATE)"
-                                                    : "");
-  map.settings.resolution = request.resolution;
-  map.faceFirst = built.firstLayer;
-  map.faceLayers = built.layersUsed;
+  return request;
+}
 
+// How the warnings name the light node: its class, and its name where it has one.
+struct LightLabel {
+  explicit LightLabel(const SoNode& node)
+      : type(std::string("So") + node.getTypeId().getName().getString()) {
+    const std::string name = node.getName().getString();
+    label = name.empty() ? type : type + " \"" + name + "\"";
+  }
+  std::string type;
+  std::string label;
+};
+
+// Says, once, why a build made nothing at all: the program is the same for every light and
+// group, so its failure is said once per process; another failure (GL could not allocate what
+// a map of any size needs) once per light.
+void warnNothingBuilt(const DeepShadowPass& pass, const MapRequest& request, const MapState& map,
+                      const MapBuildResult& built, const SoNode& lightNode) {
+  const bool opacity = map.method == ShadowMethod::OpacityMap;
+  if (built.noProgram && firstWarning(nullptr, opacity ? "opacity map program" : "map program"))
+    SoDebugError::postWarning("SoTransparentShadowGroup",
+                              "%s; lights with method %s light "
+                              "without a shadow",
+                              pass.programError(request).c_str(), shadowMethodName(map.method));
+  const LightLabel light(lightNode);
+  if (!built.noProgram && firstWarning(&lightNode, "map failure"))
+    SoDebugError::postWarning(light.type.c_str(), "%s: %s; it lights without a shadow",
+                              light.label.c_str(), built.failure.c_str());
+}
+
+// Says, once per light, that the map was built at a smaller resolution than `asked` (the
+// budget's `fitted`, or smaller where GL ran out of memory), or not at all.
+void warnResolution(const MapRequest& request, const MapBuildResult& built, bool opacity, int asked,
+                    int fitted, std::uint64_t budget, const SoNode& lightNode) {
+  if (!(built.outOfMemory || request.resolution != asked) ||
+      !firstWarning(&lightNode, "map resolution"))
+    return;
+  const LightLabel light(lightNode);
+  MapRequest wanted = request;
+  wanted.resolution = asked;
+  const auto megabytes = [](std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MB"; };
+  if (built.outOfMemory)
+    SoDebugError::postWarning(light.type.c_str(),
+                              "%s: no %s fits in GL memory at any resolution; "
+                              "it lights without a shadow",
+                              light.label.c_str(), opacity ? "opacity map" : "deep shadow map");
+  else if (request.resolution != fitted)
+    SoDebugError::postWarning(light.type.c_str(),
+                              "%s: field resolution %d: GL ran out of memory building the map "
+                              "at %d; using %d",
+                              light.label.c_str(), asked, fitted, request.resolution);
+  else
+    SoDebugError::postWarning(
+        light.type.c_str(),
+        "%s: field resolution %d needs %s to build, more than the %s GL can give; using %d",
+        light.label.c_str(), asked, megabytes(DeepShadowPass::peakBytesFor(wanted)).c_str(),
+        budget > 0 ? megabytes(budget).c_str() : "memory", request.resolution);
+}
+
+// What the built map holds, for the statistics.
+void recordBuild(const DeepShadowPass& pass, int slot, const MapState& map,
+                 const MapRequest& request, const MapBuildResult& built,
+                 DeepShadowLightStatistics& light) {
   light.layersUsed = built.layersUsed;
   light.passes = built.passes;
   light.mapBuild = built.fragmentLists ? "FRAGMENT_LISTS" : "PEELING";
@@ -369,6 +372,47 @@ void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLight
     light.extent = {map.coveredHigh.x - map.coveredLow.x, map.coveredHigh.y - map.coveredLow.y};
   light.nearRadius = map.nearRadius;
   light.farRadius = map.farRadius;
+}
+
+}  // namespace
+
+void buildSlotMap(DeepShadowPass& pass, int slot, MapState& map, DeepShadowLightStatistics& light,
+                  const SoNode& lightNode, std::uint64_t budget) {
+  const int asked = map.settings.resolution;
+  MapRequest request = mapRequest(map, budget);
+  const int fitted = request.resolution;
+  MapBuildResult built = pass.build(slot, request);
+  if (built.noProgram || !built.failure.empty()) {
+    warnNothingBuilt(pass, request, map, built, lightNode);
+    map.faceLayers = {};
+    light.resolution = 0;
+    return;
+  }
+  while (built.outOfMemory && request.resolution > 1) {
+    request.resolution /= 2;
+    built = pass.build(slot, request);
+  }
+  if (!built.failure.empty()) built.outOfMemory = true;  // appeared at a smaller size only
+  warnResolution(request, built, map.method == ShadowMethod::OpacityMap, asked, fitted, budget,
+                 lightNode);
+  // A map that the fragment lists could not hold was built layer by layer:
+  // the same map, one draw per layer, but for the surfaces past maxLayers, which that build
+  // cannot merge. Said once per reason: a context without the lists gives every light the
+  // same one.
+  if (!built.listFailure.empty() && !built.outOfMemory &&
+      firstWarning(nullptr, "map lists: " + built.listFailure)) {
+    const LightLabel label(lightNode);
+    SoDebugError::postWarning(label.type.c_str(),
+                              "%s: %s; its map is built by depth peeling instead%s",
+                              label.label.c_str(), built.listFailure.c_str(),
+                              request.mergeOverflow ? ", which keeps only the nearest maxLayers "
+                                                      "surfaces of a texel (layerOverflow TRUNCATE)"
+                                                    : "");
+  }
+  map.settings.resolution = request.resolution;
+  map.faceFirst = built.firstLayer;
+  map.faceLayers = built.layersUsed;
+  recordBuild(pass, slot, map, request, built, light);
 }
 
 }  // namespace ivshadow
