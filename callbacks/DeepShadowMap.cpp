@@ -56,9 +56,9 @@ bool layerBit(const std::array<std::uint32_t, 2>& bits, int layer) {
   return ((bits[std::size_t(layer / 32)] >> (layer % 32)) & 1u) != 0u;
 }
 
-// The layers of a face built from fragment lists that the peel would have kept: the lists'
+// The layers of a face built from fragment lists that the layer passes would have kept: the lists'
 // resolve stores up to maxLayers surfaces in every texel and says which layers hold some and
-// which let light through; the peel stops after the first layer in which no surface lets light
+// which let light through; the passes stop after the first layer in which no surface lets light
 // through, and adds the closing layer only when its last layer still did (build() below).
 void countListLayers(const MapRequest& request, const MapListFace& lists, int face,
                      MapBuildResult& result) {
@@ -92,15 +92,15 @@ void DeepShadowMap::clearScratch() {
   glClearTexImage(scratchVisibility_.get(), 0, GL_RGBA, GL_FLOAT, clear);
 }
 
-void DeepShadowMap::allocatePeelTargets(const MapRequest& request) {
+void DeepShadowMap::allocateLayerTargets(const MapRequest& request) {
   const int size = request.resolution;
   for (int i = 0; i < 2; ++i) {
-    peelDepth_[i] = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(peelDepth_[i].get(), 1, GL_R32F, size, size);
-    configureNearest(peelDepth_[i].get());
-    peelVisibility_[i] = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(peelVisibility_[i].get(), 1, GL_RGBA32F, size, size);
-    configureNearest(peelVisibility_[i].get());
+    lastDepth_[i] = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(lastDepth_[i].get(), 1, GL_R32F, size, size);
+    configureNearest(lastDepth_[i].get());
+    lastVisibility_[i] = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(lastVisibility_[i].get(), 1, GL_RGBA32F, size, size);
+    configureNearest(lastVisibility_[i].get());
   }
   depthBuffer_ = createRenderbuffer();
   glNamedRenderbufferStorage(depthBuffer_.get(), GL_DEPTH_COMPONENT32F, size, size);
@@ -111,11 +111,12 @@ void DeepShadowMap::allocatePeelTargets(const MapRequest& request) {
                                  GL_COLOR_ATTACHMENT3};
   glNamedFramebufferDrawBuffers(framebuffer_.get(), 4, drawBuffers);
   for (int i = 0; i < 2; ++i) {
-    labelGlObject(GL_TEXTURE, peelDepth_[i].get(), "map peel depth " + std::to_string(i));
-    labelGlObject(GL_TEXTURE, peelVisibility_[i].get(), "map peel visibility " + std::to_string(i));
+    labelGlObject(GL_TEXTURE, lastDepth_[i].get(), "map last layer depth " + std::to_string(i));
+    labelGlObject(GL_TEXTURE, lastVisibility_[i].get(),
+                  "map last layer visibility " + std::to_string(i));
   }
-  labelGlObject(GL_RENDERBUFFER, depthBuffer_.get(), "map peel depth buffer");
-  labelGlObject(GL_FRAMEBUFFER, framebuffer_.get(), "map peel target");
+  labelGlObject(GL_RENDERBUFFER, depthBuffer_.get(), "map layer depth buffer");
+  labelGlObject(GL_FRAMEBUFFER, framebuffer_.get(), "map layer target");
 }
 
 int DeepShadowMap::allocateKept(const MapRequest& request, MapBuildResult& result) {
@@ -157,7 +158,8 @@ void DeepShadowMap::keepUsedLayers(const MapRequest& request, MapBuildResult& re
     glCopyImageSubData(scratchVisibility_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, from,
                        visibility_.get(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, size, size, count);
   }
-  // Peeling adds two peel targets and a depth buffer to the scratch layers.
+  // Building layer by layer adds the last layer's two targets and a depth buffer to the
+  // scratch layers.
   const std::uint64_t texels = std::uint64_t(size) * std::uint64_t(size);
   peakBytes_ = texels * (std::uint64_t(scratchLayersInAll(request)) * bytesPerLayerTexel(request) +
                          2u * (4u + 16u) + 4u) +
@@ -231,11 +233,11 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
       return checkedForMemory(result);
     }
   }
-  // A peeled map leaves no layout for the lists to guess.
+  // A map built layer by layer leaves no layout for the lists to guess.
   guessValid_ = false;
   clearGlErrors();
   allocateScratch(request);
-  allocatePeelTargets(request);
+  allocateLayerTargets(request);
   if (!glAllocationError(GlAllocation::Texture).empty()) {
     const std::string why = result.listFailure;
     result = MapBuildResult{};
@@ -245,7 +247,7 @@ MapBuildResult DeepShadowMap::build(const MapRequest& request, const GlProgram& 
     return result;
   }
   clearScratch();
-  if (!peel(request, program, casters, flagsBuffer, result)) {
+  if (!buildLayers(request, program, casters, flagsBuffer, result)) {
     releaseAll();
     return result;
   }
@@ -263,21 +265,16 @@ MapBuildResult DeepShadowMap::checkedForMemory(MapBuildResult result) {
   return result;
 }
 
-bool DeepShadowMap::peel(const MapRequest& request, const GlProgram& program,
-                         const CasterBuffers& casters, unsigned int flagsBuffer,
-                         MapBuildResult& result) {
-  const GLuint fbo = framebuffer_.get();
-  const float noSurface[4] = {kNoSurface, 0.0f, 0.0f, 0.0f};
-  const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  const float nothingPeeled[4] = {-kNoSurface, 0.0f, 0.0f, 0.0f};
-
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+void DeepShadowMap::beginLayerPasses(const MapRequest& request, const GlProgram& program,
+                                     unsigned int flagsBuffer) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
   glViewport(0, 0, request.resolution, request.resolution);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
   // The fragment shader writes the distance it stores, scaled by a power of two into [0, 1)
   // (exact: only the exponent changes), as the depth: the depth test then orders surfaces by
-  // exactly the distances the peel compares, and two surfaces at one distance tie in both.
+  // exactly the distances the layer passes compare, and two surfaces at one distance tie in
+  // both.
   glDepthFunc(GL_LESS);
   // A SoDepthBuffer range above the group would clamp the written depths, and ties there
   // would lose layers: the build's depths use the whole range.
@@ -292,83 +289,92 @@ bool DeepShadowMap::peel(const MapRequest& request, const GlProgram& program,
   program.setInt("uColourModel", static_cast<int>(request.colourModel));
   program.setInt("uOpaqueOnly", 0);
   program.setFloat("uDepthScale", depthScale);
+}
 
-  for (int face = 0; face < request.frame.faceCount; ++face) {
-    const MapFace& view = request.frame.faces[std::size_t(face)];
-    program.setMat4("uViewProjection", glm::value_ptr(view.viewProjection));
-    program.setVec3("uDepthOrigin", glm::value_ptr(view.depthOrigin));
-    program.setVec3("uDepthAxis", glm::value_ptr(view.depthAxis));
-    // Before the first layer nothing is peeled and all light arrives.
-    glClearTexImage(peelDepth_[0].get(), 0, GL_RED, GL_FLOAT, nothingPeeled);
-    glClearTexImage(peelVisibility_[0].get(), 0, GL_RGBA, GL_FLOAT, clear);
-    int read = 0;
-    bool lightLeft = false;  // the last pass stored a surface that lets light through
-    for (int k = 0; k < request.layers; ++k) {
-      const int write = 1 - read;
-      const int layer = face * scratchLayers(request) + k;
-      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, scratchDepth_.get(), 0, layer);
-      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0, layer);
-      glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
-      glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
-      // Every pass attaches targets of the same formats and size: the first one tells.
-      if (face == 0 && k == 0) {
-        const std::string incomplete = framebufferIncompleteness(fbo);
-        if (!incomplete.empty()) {
-          const std::string why = result.listFailure;
-          result = MapBuildResult{};
-          result.failure = "the map's framebuffer is incomplete (" + incomplete + ")";
-          result.listFailure = why;
-          return false;
-        }
+void DeepShadowMap::attachLayer(int layer, int write) {
+  const GLuint fbo = framebuffer_.get();
+  glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, scratchDepth_.get(), 0, layer);
+  glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0, layer);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, lastDepth_[std::size_t(write)].get(), 0);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, lastVisibility_[std::size_t(write)].get(),
+                            0);
+}
+
+std::array<unsigned int, 2> DeepShadowMap::drawLayer(const GlProgram& program,
+                                                     const CasterBuffers& casters,
+                                                     unsigned int flagsBuffer, int read) {
+  const float farthest = 1.0f;
+  glClearNamedFramebufferfv(framebuffer_.get(), GL_DEPTH, 0, &farthest);
+  const GLuint zero[2] = {0u, 0u};
+  glNamedBufferSubData(flagsBuffer, 0, sizeof(zero), zero);
+  glBindTextureUnit(0, lastDepth_[std::size_t(read)].get());
+  glBindTextureUnit(1, lastVisibility_[std::size_t(read)].get());
+  casters.draw(program, 2);
+  std::array<GLuint, 2> flags = {0u, 0u};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(flagsBuffer, 0, sizeof(flags), flags.data());
+  return flags;
+}
+
+bool DeepShadowMap::buildFaceLayers(const MapRequest& request, const GlProgram& program,
+                                    const CasterBuffers& casters, unsigned int flagsBuffer,
+                                    int face, MapBuildResult& result) {
+  const float noSurface[4] = {kNoSurface, 0.0f, 0.0f, 0.0f};
+  const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  const float beforeFirstLayer[4] = {-kNoSurface, 0.0f, 0.0f, 0.0f};
+  const MapFace& view = request.frame.faces[std::size_t(face)];
+  program.setMat4("uViewProjection", glm::value_ptr(view.viewProjection));
+  program.setVec3("uDepthOrigin", glm::value_ptr(view.depthOrigin));
+  program.setVec3("uDepthAxis", glm::value_ptr(view.depthAxis));
+  // Before the first layer no surface lies in front and all light arrives.
+  glClearTexImage(lastDepth_[0].get(), 0, GL_RED, GL_FLOAT, beforeFirstLayer);
+  glClearTexImage(lastVisibility_[0].get(), 0, GL_RGBA, GL_FLOAT, clear);
+  int read = 0;
+  bool lightLeft = false;  // the last pass stored a surface that lets light through
+  for (int k = 0; k < request.layers; ++k) {
+    const int write = 1 - read;
+    attachLayer(face * scratchLayers(request) + k, write);
+    // Every pass attaches targets of the same formats and size: the first one tells.
+    if (face == 0 && k == 0) {
+      const std::string incomplete = framebufferIncompleteness(framebuffer_.get());
+      if (!incomplete.empty()) {
+        const std::string why = result.listFailure;
+        result = MapBuildResult{};
+        result.failure = "the map's framebuffer is incomplete (" + incomplete + ")";
+        result.listFailure = why;
+        return false;
       }
-      // A texel this pass leaves empty must stop the next pass too.
-      glClearTexImage(peelDepth_[write].get(), 0, GL_RED, GL_FLOAT, noSurface);
-      const float farthest = 1.0f;
-      glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farthest);
-      const GLuint zero[2] = {0u, 0u};
-      glNamedBufferSubData(flagsBuffer, 0, sizeof(zero), zero);
-
-      glBindTextureUnit(0, peelDepth_[read].get());
-      glBindTextureUnit(1, peelVisibility_[read].get());
-      casters.draw(program, 2);
-
-      GLuint flags[2] = {0u, 0u};
-      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-      glGetNamedBufferSubData(flagsBuffer, 0, sizeof(flags), flags);
-      result.passes[std::size_t(face)] = k + 1;
-      if (flags[0] != 0u) result.layersUsed[std::size_t(face)] = k + 1;
-      read = write;
-      lightLeft = flags[1] != 0u;
-      if (!lightLeft) break;
     }
-    if (lightLeft && result.passes[std::size_t(face)] == request.layers) {
-      // The layers ran out with surfaces that let light through in the last one, and more may
-      // lie behind it: the closing layer takes the nearest opaque surface behind the last
-      // one (visibility 0 from there on), so light never passes an opaque body behind the
-      // surfaces the map could not keep.
-      const int closing = face * scratchLayers(request) + request.layers;
-      const int write = 1 - read;
-      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, scratchDepth_.get(), 0, closing);
-      glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT1, scratchVisibility_.get(), 0,
-                                     closing);
-      glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, peelDepth_[write].get(), 0);
-      glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, peelVisibility_[write].get(), 0);
-      const float farthest = 1.0f;
-      glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farthest);
-      const GLuint zero[2] = {0u, 0u};
-      glNamedBufferSubData(flagsBuffer, 0, sizeof(zero), zero);
-      glBindTextureUnit(0, peelDepth_[read].get());
-      glBindTextureUnit(1, peelVisibility_[read].get());
-      program.setInt("uOpaqueOnly", 1);
-      casters.draw(program, 2);
-      program.setInt("uOpaqueOnly", 0);
-      GLuint flags[2] = {0u, 0u};
-      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-      glGetNamedBufferSubData(flagsBuffer, 0, sizeof(flags), flags);
-      ++result.passes[std::size_t(face)];
-      if (flags[0] != 0u) result.layersUsed[std::size_t(face)] = request.layers + 1;
-    }
+    // A texel this pass leaves empty must stop the next pass too.
+    glClearTexImage(lastDepth_[std::size_t(write)].get(), 0, GL_RED, GL_FLOAT, noSurface);
+    const std::array<GLuint, 2> flags = drawLayer(program, casters, flagsBuffer, read);
+    result.passes[std::size_t(face)] = k + 1;
+    if (flags[0] != 0u) result.layersUsed[std::size_t(face)] = k + 1;
+    read = write;
+    lightLeft = flags[1] != 0u;
+    if (!lightLeft) break;
   }
+  if (lightLeft && result.passes[std::size_t(face)] == request.layers) {
+    // The layers ran out with surfaces that let light through in the last one, and more may
+    // lie behind it: the closing layer takes the nearest opaque surface behind the last
+    // one (visibility 0 from there on), so light never passes an opaque body behind the
+    // surfaces the map could not keep.
+    attachLayer(face * scratchLayers(request) + request.layers, 1 - read);
+    program.setInt("uOpaqueOnly", 1);
+    const std::array<GLuint, 2> flags = drawLayer(program, casters, flagsBuffer, read);
+    program.setInt("uOpaqueOnly", 0);
+    ++result.passes[std::size_t(face)];
+    if (flags[0] != 0u) result.layersUsed[std::size_t(face)] = request.layers + 1;
+  }
+  return true;
+}
+
+bool DeepShadowMap::buildLayers(const MapRequest& request, const GlProgram& program,
+                                const CasterBuffers& casters, unsigned int flagsBuffer,
+                                MapBuildResult& result) {
+  beginLayerPasses(request, program, flagsBuffer);
+  for (int face = 0; face < request.frame.faceCount; ++face)
+    if (!buildFaceLayers(request, program, casters, flagsBuffer, face, result)) return false;
   return true;
 }
 
@@ -385,8 +391,8 @@ void DeepShadowMap::releaseScratch() {
   scratchDepth_.reset();
   scratchVisibility_.reset();
   for (int i = 0; i < 2; ++i) {
-    peelDepth_[i].reset();
-    peelVisibility_[i].reset();
+    lastDepth_[i].reset();
+    lastVisibility_[i].reset();
   }
   depthBuffer_.reset();
   framebuffer_.reset();

@@ -30,7 +30,7 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
              " fragment texture units are needed; this context offers " + std::to_string(units);
     return nullptr;
   }
-  // Each face peels kMaxMapLayers layers and may close with one more (DeepShadowMap.h).
+  // Each face builds kMaxMapLayers layers and may close with one more (DeepShadowMap.h).
   if (drawBuffers < 4 || layers < 6 * (kMaxMapLayers + 1)) {
     whyNot = "4 draw buffers and " + std::to_string(6 * (kMaxMapLayers + 1)) +
              " array texture layers are needed";
@@ -43,7 +43,7 @@ std::unique_ptr<DeepShadowPass> DeepShadowPass::create(std::string& whyNot) {
   clearGlErrors();
   pass->flags_ = createBuffer();
   glNamedBufferData(pass->flags_.get(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
-  // Without the flags a build cannot stop peeling; the pass is kept for the RAYS lights,
+  // Without the flags a build cannot stop its layer passes; the pass is kept for the RAYS lights,
   // which do not need it, and every map build fails with this reason.
   const std::string flags = glAllocationError(GlAllocation::Buffer);
   if (!flags.empty())
@@ -57,7 +57,7 @@ DeepShadowPass::~DeepShadowPass() = default;
 
 MapFragmentLists* DeepShadowPass::fragmentLists() {
   // Made at the first map build, as the map program is; a context that cannot make them
-  // peels every map, with the reason said once (MapBuildResult::listFailure).
+  // builds every map layer by layer, with the reason said once (MapBuildResult::listFailure).
   if (!lists_ && listsError_.empty()) {
     lists_ = MapFragmentLists::create(listsError_);
     if (!lists_ && listsError_.empty()) listsError_ = "the fragment lists could not be made";

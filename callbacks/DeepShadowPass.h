@@ -21,7 +21,8 @@ struct SceneTriangles;
 // The GL side of one SoTransparentShadowGroup in one GL context: its casters in GPU memory,
 // the map-building programs and per light slot one deep shadow map, or for a light with
 // method OPACITY_MAP (MapRequest::slices) one opacity map. Deep shadow maps are built from
-// fragment lists (MapFragmentLists) where the request asks and the context can, else peeled.
+// fragment lists (MapFragmentLists) where the request asks and the context can, else layer by
+// layer (DeepShadowMap::buildLayers).
 // Everything here is made, used and freed with that context current.
 class IVSHADOW_INTERNAL DeepShadowPass {
  public:

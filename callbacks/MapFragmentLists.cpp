@@ -192,7 +192,7 @@ void MapFragmentLists::fill(const MapRequest& request, const CasterBuffers& cast
                             GL_UNSIGNED_INT, &zero);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
   glViewport(0, 0, request.resolution, request.resolution);
-  // The peel's clipping (MapFrame: reversed depth in [0, 1]), without its depth test.
+  // The layer passes' clipping (MapFrame: reversed depth in [0, 1]), without their depth test.
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDisable(GL_DEPTH_TEST);
   glUseProgram(fill_.name());

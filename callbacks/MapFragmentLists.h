@@ -14,7 +14,7 @@ namespace ivshadow {
 class CasterBuffers;
 struct MapRequest;
 
-// What the lists of one face hold, as the peel passes would count it: bit k, layer k of some
+// What the lists of one face hold, as the layer passes would count it: bit k, layer k of some
 // texel holds a surface (heldLayers), one that lets light through (passingLayers); and
 // whether some texel has a closing layer.
 struct MapListFace {
@@ -36,7 +36,7 @@ struct MapListLayout {
 
 // A deep shadow map's faces from per-texel fragment lists in one GL context (after Yang et
 // al. 2010, as FragmentListPass for the camera): one draw of the casters per face links every
-// surface into its texel's list, and a compute pass sorts each list into the layers the peel
+// surface into its texel's list, and a compute pass sorts each list into the layers the layer
 // passes would have stored (dsm_list_resolve.comp), so the map is the same without one pass
 // per layer. A build is
 //   gather(); <size the map from what it found>; store();
@@ -55,7 +55,7 @@ class MapFragmentLists {
   // (0: GL's limits only) bounds the list storage. With `guess`, the layout of the last build,
   // the same pass also stores the layers there: where what it says matches the guess the map
   // is done without store(). Empty when every surface was stored; else why the lists could
-  // not hold the map (the caller peels instead).
+  // not hold the map (the caller builds it layer by layer instead).
   std::string gather(const MapRequest& request, const CasterBuffers& casters, int textureUnit,
                      std::uint64_t byteLimit, const MapListLayout* guess,
                      std::array<MapListFace, 6>& faces);
