@@ -73,26 +73,18 @@ std::string ImperfectShadowMaps::build(const BounceMapRequest& request) {
   return draw(request);
 }
 
-std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
-  const std::string linked = link();
-  if (!linked.empty()) {
-    release();
-    return linked;
-  }
-  clearGlErrors();
-  if (request.lightCount <= 0) {
-    release();
-    return {};
-  }
+std::string ImperfectShadowMaps::uploadInputs(const BounceMapRequest& request) {
   upload(lightBuffer_, lightTexture_, *request.lights);
   const bool anyPoints = !request.points->empty();
-  if (anyPoints && request.points->size() != std::size_t(kIsmPointPool) * 4) {
-    release();
+  if (anyPoints && request.points->size() != std::size_t(kIsmPointPool) * 4)
     return "the bounce's point pool holds " + std::to_string(request.points->size() / 4) +
            " points, not " + std::to_string(kIsmPointPool);
-  }
   if (anyPoints && (request.pointsChanged || !pointTexture_))
     upload(pointBuffer_, pointTexture_, *request.points);
+  return {};
+}
+
+std::string ImperfectShadowMaps::makeAtlas(const BounceMapRequest& request) {
   const int tiles = tilesFor(request.lightCount);
   const int size = tiles * request.mapSize;
   if (!atlas_ || size != atlasSize_) {
@@ -104,26 +96,25 @@ std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
     atlasSize_ = size;
   }
   const std::string failed = glAllocationError(GlAllocation::Texture);
-  if (!failed.empty()) {
-    release();
-    return "no memory for the imperfect shadow maps (" + failed + ")";
-  }
+  if (!failed.empty()) return "no memory for the imperfect shadow maps (" + failed + ")";
   labelGlObject(GL_TEXTURE, atlas_.get(), "imperfect shadow maps atlas");
   tiles_ = tiles;
   const float empty[4] = {kIsmEmpty, 0.0f, 0.0f, 0.0f};
   for (int level = 0; level < kLevels; ++level)
     glClearTexImage(atlas_.get(), level, GL_RED, GL_FLOAT, empty);
+  return {};
+}
 
+std::string ImperfectShadowMaps::splatPoints(const BounceMapRequest& request) {
   GlFramebuffer framebuffer = createFramebuffer();
   glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, atlas_.get(), 0);
   glNamedFramebufferDrawBuffer(framebuffer.get(), GL_COLOR_ATTACHMENT0);
   const std::string incomplete = framebufferIncompleteness(framebuffer.get());
-  if (!incomplete.empty()) {
-    release();
+  if (!incomplete.empty())
     return "the imperfect shadow maps' framebuffer is incomplete (" + incomplete + ")";
-  }
+  const bool anyPoints = !request.points->empty();
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-  glViewport(0, 0, size, size);
+  glViewport(0, 0, atlasSize_, atlasSize_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -137,7 +128,7 @@ std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
   glUseProgram(points_.name());
   points_.setInt("uIsmPoints", 0);
   points_.setInt("uBounceLights", 1);
-  points_.setInt("uIsmTiles", tiles);
+  points_.setInt("uIsmTiles", tiles_);
   points_.setInt("uIsmMapSize", request.mapSize);
   points_.setInt("uIsmStride", kIsmPointPool / kIsmPointsPerLight);
   points_.setFloat("uBounceLift", request.lift);
@@ -146,27 +137,50 @@ std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
   // Without opaque casters nothing hides a light: the maps stay empty.
   if (anyPoints) glDrawArraysInstanced(GL_POINTS, 0, kIsmPointsPerLight, request.lightCount);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return {};
+}
 
-  if (request.fillHoles) {
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    glUseProgram(pull_.name());
-    for (int level = 0; level < kIsmPullLevels; ++level) {
-      glBindImageTexture(0, atlas_.get(), level, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-      glBindImageTexture(1, atlas_.get(), level + 1, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-      const int coarse = size >> (level + 1);
-      glDispatchCompute(groupsFor(coarse), groupsFor(coarse), 1);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
-    glUseProgram(push_.name());
-    for (int level = kIsmPullLevels - 1; level >= 0; --level) {
-      glBindImageTexture(0, atlas_.get(), level + 1, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-      glBindImageTexture(1, atlas_.get(), level, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
-      push_.setInt("uCoarseTileSize", request.mapSize >> (level + 1));
-      const int fine = size >> level;
-      glDispatchCompute(groupsFor(fine), groupsFor(fine), 1);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
+void ImperfectShadowMaps::pullPush(const BounceMapRequest& request) {
+  const int size = atlasSize_;
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  glUseProgram(pull_.name());
+  for (int level = 0; level < kIsmPullLevels; ++level) {
+    glBindImageTexture(0, atlas_.get(), level, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(1, atlas_.get(), level + 1, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    const int coarse = size >> (level + 1);
+    glDispatchCompute(groupsFor(coarse), groupsFor(coarse), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
+  glUseProgram(push_.name());
+  for (int level = kIsmPullLevels - 1; level >= 0; --level) {
+    glBindImageTexture(0, atlas_.get(), level + 1, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(1, atlas_.get(), level, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    push_.setInt("uCoarseTileSize", request.mapSize >> (level + 1));
+    const int fine = size >> level;
+    glDispatchCompute(groupsFor(fine), groupsFor(fine), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+}
+
+std::string ImperfectShadowMaps::draw(const BounceMapRequest& request) {
+  const std::string linked = link();
+  if (!linked.empty()) {
+    release();
+    return linked;
+  }
+  clearGlErrors();
+  if (request.lightCount <= 0) {
+    release();
+    return {};
+  }
+  std::string failure = uploadInputs(request);
+  if (failure.empty()) failure = makeAtlas(request);
+  if (failure.empty()) failure = splatPoints(request);
+  if (!failure.empty()) {
+    release();
+    return failure;
+  }
+  if (request.fillHoles) pullPush(request);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   bytes_ = bytesFor(request.lightCount, request.mapSize);
   const GLenum error = glGetError();

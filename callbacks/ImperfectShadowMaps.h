@@ -53,6 +53,15 @@ class IVSHADOW_INTERNAL ImperfectShadowMaps {
 
  private:
   std::string draw(const BounceMapRequest& request);
+  // The steps of draw, each returning why it failed ("" when it did not):
+  // the lights and (when they changed) the point pool into their texture buffers;
+  std::string uploadInputs(const BounceMapRequest& request);
+  // the atlas of the lights' tiles, made where its size changed, and cleared to empty;
+  std::string makeAtlas(const BounceMapRequest& request);
+  // the pool's points splatted into every light's tile, the nearest kept.
+  std::string splatPoints(const BounceMapRequest& request);
+  // Fills the holes between the splatted points: pulled down the atlas's levels, pushed back.
+  void pullPush(const BounceMapRequest& request);
   std::string link();
   void release();
 

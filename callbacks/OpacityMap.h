@@ -36,6 +36,17 @@ class OpacityMap {
   std::uint64_t bytes() const { return bytes_; }
 
  private:
+  // Makes the textures (or keeps the last build's, of the same shape) and the framebuffer, and
+  // clears the textures; false, everything released, when GL ran out of memory.
+  bool makeTargets(const MapRequest& request);
+  // The GL state and uniforms every draw of the build shares.
+  void beginDraws(const MapRequest& request, const GlProgram& program);
+  // Attaches face `face`'s slices from `first` on, as many as one draw fills.
+  void attachSlices(const MapRequest& request, int face, int first);
+  // Draws face `face`'s slices, a draw per kOpacitySlicesPerDraw; false, with
+  // result.failure, when the framebuffer is incomplete.
+  bool drawFace(const MapRequest& request, const GlProgram& program, const CasterBuffers& casters,
+                int face, MapBuildResult& result);
   void release();
 
   // What the textures were made for; a build of the same shape reuses them.
