@@ -1,6 +1,7 @@
 #include "nodes/SceneTracer.h"
 
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/CameraFilter.h"
 #include "nodes/CameraRays.h"
 #include "nodes/CastingLight.h"
 #include "nodes/RowShading.h"
@@ -34,8 +35,10 @@
 namespace ivshadow {
 namespace {
 
+using detail::CameraRayContext;
 using detail::Extraction;
 using detail::Group;
+using detail::imageOf;
 using detail::Light;
 using detail::LightType;
 using detail::Material;
@@ -47,52 +50,8 @@ using detail::Triangle;
 
 using Hit = SurfacesMet::Hit;
 
-// Every surface a camera ray meets, collected by Embree's filter function: hits[id] for the
-// ray whose id is `id` (a single ray's is 0).
-struct CameraRayContext : RTCIntersectContext {
-  const Extraction* data = nullptr;
-  std::vector<Hit>* hits = nullptr;
-};
-
 // Camera rays traced together, as many as a packet holds.
 constexpr int kMaxPacket = 16;
-
-const TextureImage* imageOf(const Extraction& data, const Triangle& tri) {
-  return tri.texture >= 0 ? &data.textures[std::size_t(tri.texture)] : nullptr;
-}
-
-float opacity(const Extraction& data, const Triangle& tri, float u, float v) {
-  const TextureImage* image = imageOf(data, tri);
-  const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, image, u, v);
-  return texturedColour(sample.colour, sample.texel, image).a;
-}
-
-}  // namespace
-
-namespace detail {
-
-void cameraFilter(const RTCFilterFunctionNArguments* args) {
-  auto& context = *static_cast<CameraRayContext*>(args->context);
-  for (unsigned int i = 0; i < args->N; ++i) {
-    if (args->valid[i] == 0) continue;
-    Hit hit;
-    hit.primitive = RTCHitN_primID(args->hit, args->N, i);
-    hit.u = RTCHitN_u(args->hit, args->N, i);
-    hit.v = RTCHitN_v(args->hit, args->N, i);
-    hit.t = RTCRayN_tfar(args->ray, args->N, i);
-    const float alpha =
-        opacity(*context.data, context.data->triangles[hit.primitive], hit.u, hit.v);
-    // An opaque surface is accepted: Embree then only looks for nearer ones. The others are
-    // collected and passed over.
-    if (isOpaque(alpha)) continue;
-    if (alpha > 0.0f) context.hits[RTCRayN_id(args->ray, args->N, i)].push_back(hit);
-    args->valid[i] = 0;
-  }
-}
-
-}  // namespace detail
-
-namespace {
 
 struct RayCounts {
   std::size_t shadow = 0;
@@ -305,7 +264,8 @@ class Tracer {
   const PendingShade& prepare(const Triangle& tri, const Hit& hit, const glm::vec3& position,
                               const glm::vec3& rayDirection, RayCounts& rays,
                               RowShading& row) const {
-    PendingShade shade;
+    // Made in place: the row keeps it (lighting() appends to the row's other vectors only).
+    PendingShade& shade = row.shades.emplace_back();
     shade.image = imageOf(data_, tri);
     const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, shade.image, hit.u, hit.v);
     shade.rgb = glm::vec3(sample.colour);
@@ -351,8 +311,7 @@ class Tracer {
       shade.fog = glm::clamp(fog, 0.0f, 1.0f);
     }
     shade.termsEnd = std::uint32_t(row.terms.size());
-    row.shades.push_back(shade);
-    return row.shades.back();
+    return shade;
   }
 
   // A surface's colour once its shadow rays (its terms from `termsBegin` on) are answered:
