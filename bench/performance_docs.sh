@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates the measurements of docs/PERFORMANCE.md's first section, "The fast end's goals"
 # (issue 20), in one run on this machine: the benchmarks behind each goal (Google Benchmark
-# JSON, medians of 3), the viewer's frame rate while the light is dragged
+# JSON, medians of 3), a 100-variant sweep through the workers against one process per variant
+# (bench/variants_workers.sh), the viewer's frame rate while the light is dragged
 # (bench/viewer_drag.sh) and the demo's first frame on a cold shader cache, written to
 # docs/performance/; then bench/performance_goals.py writes the goals' table from them into
 # docs/PERFORMANCE.md between its markers. Every ratio compares two figures of this one run.
 # Run on an otherwise idle machine after ./run build; about a minute on two cores with
-# llvmpipe. BUILD_DIR as for ./run.
+# llvmpipe, plus about four for the sweeps. BUILD_DIR as for ./run.
 #   bench/performance_docs.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,6 +28,8 @@ bench rays 'RaysAgainstCoin/(1000|100000)/[034]/[01]/'
 bench still 'BundledStill/'
 bench peel 'Peel/([1456789]|10)/'
 bench map_build 'MapBuildMethods/(10000|100000)/4/[023]/'
+echo "variants sweeps" >&2
+bench/variants_workers.sh "$build" 3 >"$out/variants_workers.txt"
 echo "viewer drag" >&2
 bench/viewer_drag.sh >"$out/viewer_drag.txt"
 echo "demo" >&2

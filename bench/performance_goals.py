@@ -179,6 +179,26 @@ def drag_rows(path):
              "met" if max(traced, reduced) >= 10.0 else "not met")]
 
 
+def sweep_rows(path):
+    # bench/variants_workers.sh: "SIZE  P_WALL / P_CPU s  W_WALL / W_CPU s  WALL_RATIO CPU_RATIO".
+    ratios = {}
+    with open(path) as f:
+        for line in f:
+            match = re.match(r"(\d+x\d+)\s+[\d.]+ /\s*[\d.]+ s\s+[\d.]+ /\s*[\d.]+ s\s+([\d.]+)",
+                             line)
+            if match:
+                ratios[match.group(1)] = float(match.group(2))
+    rows = []
+    for size, goal in (("320x240", 4.0), ("800x600", 1.8)):
+        if size not in ratios:
+            sys.exit(f"{path}: no sweep at {size} (the sweep failed?)")
+        rows.append((f"a 100-variant sweep of coloured_shadows.iv through the workers ≥ {goal:g}x "
+                     f"one process per variant, {size.replace('x', ' x ')}, same pictures",
+                     f"**{ratios[size]:.2f}x** (wall, medians of 3)",
+                     "met" if ratios[size] >= goal else "not met"))
+    return rows
+
+
 def demo_rows(path):
     with open(path) as f:
         seconds = [float(line.split()[1]) for line in f.read().splitlines()[1:] if line.strip()]
@@ -199,6 +219,7 @@ def main():
             + bundled_rows(medians(os.path.join(folder, "still.json")))
             + peel_rows(medians(os.path.join(folder, "peel.json")))
             + map_rows(medians(os.path.join(folder, "map_build.json")))
+            + sweep_rows(os.path.join(folder, "variants_workers.txt"))
             + drag_rows(os.path.join(folder, "viewer_drag.txt"))
             + demo_rows(os.path.join(folder, "demo.txt")))
     table = [BEGIN,
