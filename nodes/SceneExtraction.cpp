@@ -2,6 +2,7 @@
 
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
+#include "nodes/CameraFilter.h"
 #include "nodes/CastingLight.h"
 #include "nodes/LightLimit.h"
 #include "raytrace/CasterScene.h"

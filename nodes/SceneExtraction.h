@@ -57,8 +57,8 @@ struct Group {
   // (a path holds a reference to every node on it, the group's ancestors included, and this
   // extraction is kept by the group's own tracer: the scene would never be freed).
   CoinRef<SoPath> path;
-  std::vector<int> lights;         // every light turned on in the group's subgraph
-  std::vector<int> casting;        // those that cast (nodes/CastingLight.h), as many as GL's
+  std::vector<int> lights;   // every light turned on in the group's subgraph
+  std::vector<int> casting;  // those that cast (nodes/CastingLight.h), as many as GL's
   std::unique_ptr<CasterScene> casters;
   bool bounce = false;  // its bounce field
 };
@@ -141,9 +141,10 @@ struct Extraction {
   bool groupsChanged = false;  // ... and they were not
 };
 
-// Embree's filter function of the camera rays' scene (built by SceneTracer::extract): it
-// collects every surface a camera ray meets (nodes/SceneTracer.cpp).
-void cameraFilter(const RTCFilterFunctionNArguments* args);
+// The texture triangle `tri` shows, or null.
+inline const TextureImage* imageOf(const Extraction& data, const Triangle& tri) {
+  return tri.texture >= 0 ? &data.textures[std::size_t(tri.texture)] : nullptr;
+}
 
 }  // namespace detail
 
