@@ -11,9 +11,34 @@
 
 namespace ivshadow {
 
+namespace {
+
+// A kept scene's groups (cli/KeptScene.h) count from the scene's first render on, and keep
+// the figures of the last trace or read that made them. A scene is kept only from renders
+// that traced a group and nothing else (RenderSession.cpp), so only the tracer's counts and
+// figures can come from before this render.
+DeepShadowStatistics sinceBefore(DeepShadowStatistics now, const DeepShadowStatistics& before) {
+  now.tracerScenes -= before.tracerScenes;
+  now.tracerFrames -= before.tracerFrames;
+  now.tracerRefines -= before.tracerRefines;
+  if (now.tracerScenes == 0) now.tracerSceneMs = 0.0;
+  if (now.tracerLightsMs == before.tracerLightsMs) now.tracerLightsMs = 0.0;
+  if (now.tracerFrames == 0) {
+    now.tracerMs = 0.0;
+    now.tracerWidth = now.tracerHeight = 0;
+    now.tracerCameraRays = 0;
+    now.tracerReduced = 0;
+    if (now.rayFrames == before.rayFrames) now.raysTraced = 0;
+  }
+  return now;
+}
+
+}  // namespace
+
 nlohmann::json renderStatistics(const RenderOptions& options, const OffscreenRenderer& renderer,
                                 const std::vector<double>& wallMs, const std::vector<double>& gpuMs,
-                                const std::string& transparency, SoNode* root) {
+                                const std::string& transparency, SoNode* root,
+                                const DeepShadowStatistics* before) {
   nlohmann::json stats;
   stats["scene"] = options.scene;
   stats["width"] = renderer.width();
@@ -32,7 +57,9 @@ nlohmann::json renderStatistics(const RenderOptions& options, const OffscreenRen
   stats["passes"] = {{"scene_ms", FrameStatistics::median(gpuMs)}};
   // Deep shadow maps are built only when something changed, so their cost is reported per
   // build, not per frame: the frame times above include it only for frames that rebuilt.
-  const DeepShadowStatistics shadows = collectDeepShadowStatistics(root);
+  const DeepShadowStatistics shadows = before != nullptr
+                                           ? sinceBefore(collectDeepShadowStatistics(root), *before)
+                                           : collectDeepShadowStatistics(root);
   stats["passes"]["dsm_build_ms"] = shadows.lastBuildMs;
   // GPU time of each pass (GL_TIMESTAMP queries; on llvmpipe the rasteriser's threads).
   stats["passes"]["dsm_build_gpu_ms"] = shadows.gpuBuildMs;

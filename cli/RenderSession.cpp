@@ -19,6 +19,7 @@
 #include "image/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
+#include "ivshadow/PeelStatistics.h"
 #include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
 #include "scene/SceneLoader.h"
@@ -35,7 +36,32 @@
 
 namespace ivshadow {
 
+namespace {
+
+// Whether the frames of a render traced one group's picture on their first frame and did
+// nothing else that keeps state across renders: no deep shadow map, no shadow rays of GL's
+// path, no bounce, no depth peeling. Only then is a scene kept, so that the statistics of the
+// render after it start from a tracer's counts alone (RenderStatistics.h takes those off)
+// and the pictures are the tracer's, which re-reads and re-traces exactly what changed.
+bool tracedAlone(const DeepShadowStatistics& before, const DeepShadowStatistics& after,
+                 const PeelStatistics& peeling) {
+  return after.tracerFrames - before.tracerFrames == 1 && after.lights.empty() &&
+         after.rebuilds == 0 && after.rayFrames == 0 && after.bvhBuilds == 0 &&
+         after.bounceLights == 0 && after.bounceSamples == 0 && peeling.frames == 0 &&
+         peeling.tracedFrames == 0;
+}
+
+}  // namespace
+
 int RenderSession::render(const RenderOptions& options) {
+  bool keep = false;
+  const int status = renderScene(options, keep);
+  // A failed render may have left its scene half assigned or half drawn.
+  if (status != 0 || !keep) kept_.reset();
+  return status;
+}
+
+int RenderSession::renderScene(const RenderOptions& options, bool& keep) {
   return withExitStatus([&] {
     const ImageSize size = ImageSize::parse(options.size, "--size");
     if (options.frames < 1) {
@@ -65,8 +91,19 @@ int RenderSession::render(const RenderOptions& options) {
     forgetAllWarnings();
     // The statistics report GPU time per pass; without them no pass waits for its timer.
     setPassTiming(!options.statsPath.empty());
-    LoadedScene scene = loadScene(options.scene);
+    const std::optional<KeptScene::FileState> file = KeptScene::stateOf(options.scene);
+    // A render that would neither put back nor assign anything finds nothing changed: its
+    // frames would trace nothing, and its statistics would not be a fresh read's.
+    const bool reused = kept_ && file && kept_->serves(options, *file) &&
+                        (kept_->assigned() || !assignments.empty()) && kept_->restore();
+    if (!reused) {
+      kept_.reset();
+      kept_ = std::make_unique<KeptScene>(loadScene(options.scene), options,
+                                          file.value_or(KeptScene::FileState{}));
+    }
+    LoadedScene& scene = kept_->scene();
     for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
+    kept_->remember(assignments);
     for (const FieldAssignment& assignment : assignments) {
       assignment.apply(scene.root.get(), options.scene);
     }
@@ -99,12 +136,20 @@ int RenderSession::render(const RenderOptions& options) {
         scene.root.get(),
         SbViewportRegion(static_cast<short>(size.width), static_cast<short>(size.height)));
 
+    const DeepShadowStatistics before = collectDeepShadowStatistics(view.root.get());
     std::vector<double> wallMs, gpuMs;
     for (int frame = 0; frame < options.frames; ++frame) {
       const OffscreenRenderer::FrameTiming timing = renderer->render(view.root.get());
       wallMs.push_back(timing.wallMs);
       gpuMs.push_back(timing.gpuMs);
     }
+    // The tracer takes the frame after a frame that traced for a change for a motion, traced
+    // at a reduced size: a scene is kept from a render whose last frame drew the picture kept,
+    // or whose one frame was the scene's first picture, never from one that traced a change
+    // on its last frame.
+    keep = file && (options.frames >= 2 || !reused) &&
+           tracedAlone(before, collectDeepShadowStatistics(view.root.get()),
+                       collectPeelStatistics(view.root.get()));
     // Both files or neither: statistics that cannot be written (a full disk) take the
     // picture with them, as the exit status says.
     const Image picture = renderer->read();
@@ -112,10 +157,11 @@ int RenderSession::render(const RenderOptions& options) {
     outputs.addImage(options.output, picture);
     if (!options.statsPath.empty()) {
       const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
-      outputs.addText(
-          options.statsPath,
-          renderStatistics(options, *renderer, wallMs, gpuMs, name, view.root.get()).dump(2) +
-              "\n");
+      outputs.addText(options.statsPath,
+                      renderStatistics(options, *renderer, wallMs, gpuMs, name, view.root.get(),
+                                       reused ? &before : nullptr)
+                              .dump(2) +
+                          "\n");
     }
     // From here a signal would leave the temporaries behind: it is held off until the files
     // are written, then none of them is kept.

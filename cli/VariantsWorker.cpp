@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 
 namespace ivshadow {
@@ -39,6 +40,20 @@ std::optional<RenderOptions> renderOptions(const nlohmann::json& request, std::s
   } catch (const nlohmann::json::exception&) {
     return std::nullopt;
   }
+}
+
+// Whether every line a render said is one of Coin's infos (the choice `renderer AUTO` made).
+// A warning may have been said as the scene's nodes read or built what they keep (a shape
+// the tracer leaves out, a defective shape): the next render then reads the scene afresh and
+// says it again, as a render process of its own would (RenderSession.h). An info a node says
+// once in its life is not said again by a render of the kept scene; `variants` reads none
+// from a log, and Python's render() shows a log only when the render failed.
+bool onlyInfos(const std::string& logPath) {
+  std::ifstream log(logPath);
+  if (!log) return false;
+  for (std::string line; std::getline(log, line);)
+    if (line.rfind("Coin info in ", 0) != 0) return false;
+  return true;
 }
 
 }  // namespace
@@ -96,6 +111,7 @@ int runVariantsWorker() {
     close(log);
     const int status = session.render(*options);
     std::cout.flush();
+    if (!onlyInfos(logPath)) session.forgetScene();
     dup2(between, STDERR_FILENO);
     // Bad input is refused before anything is drawn; any other failure may have stopped a
     // frame midway.
