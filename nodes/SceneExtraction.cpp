@@ -24,6 +24,7 @@
 #include <Inventor/annex/FXViz/nodes/SoShadowStyle.h>
 #include <Inventor/elements/SoEnvironmentElement.h>
 #include <Inventor/elements/SoLightElement.h>
+#include <Inventor/elements/SoMultiTextureCoordinateElement.h>
 #include <Inventor/elements/SoPolygonOffsetElement.h>
 #include <Inventor/lists/SoNodeList.h>
 #include <Inventor/nodes/SoCamera.h>
@@ -33,6 +34,7 @@
 #include <Inventor/nodes/SoShape.h>
 #include <Inventor/nodes/SoShapeHints.h>
 #include <Inventor/nodes/SoSpotLight.h>
+#include <Inventor/nodes/SoTextureCoordinateEnvironment.h>
 
 #include <functional>
 
@@ -218,6 +220,38 @@ SoCallbackAction::Response shapeStart(void* user, SoCallbackAction* action, cons
   return SoCallbackAction::CONTINUE;
 }
 
+SoCallbackAction::Response environmentFunction(void* user, SoCallbackAction*, const SoNode* node) {
+  static_cast<Extraction*>(user)->environmentFunctions.push_back(node->getNodeId());
+  return SoCallbackAction::CONTINUE;
+}
+
+// Which node set the texture coordinates of unit 0 and how: Coin keeps it in the element's
+// unit data, which only a derived class reads.
+struct TextureCoordinateSource : SoMultiTextureCoordinateElement {
+  static bool isEnvironment(SoState* state, const Extraction& data) {
+    const auto* element = static_cast<const TextureCoordinateSource*>(getInstance(state));
+    const UnitData& unit = element->getUnitData(0);
+    return unit.whatKind == FUNCTION &&
+           std::find(data.environmentFunctions.begin(), data.environmentFunctions.end(),
+                     unit.nodeid) != data.environmentFunctions.end();
+  }
+};
+
+// GL's sphere map (glTexGen GL_SPHERE_MAP, which Coin asks of GL for
+// TextureCoordinateEnvironment) at a vertex of eye-space position `eye` and normal `normal`:
+// the reflection of the direction from the eye about the unit normal. Coin's own software
+// function, which SoCallbackAction hands over, reflects the normal instead, and its picture
+// differs from what GL draws.
+glm::vec2 sphereMap(const SbVec3f& eye, SbVec3f normal) {
+  SbVec3f u = eye;
+  u.normalize();
+  normal.normalize();
+  const SbVec3f r = u - 2.0f * normal.dot(u) * normal;
+  const float m = 2.0f * std::sqrt(r[0] * r[0] + r[1] * r[1] + (r[2] + 1.0f) * (r[2] + 1.0f));
+  if (!(m > 0.0f)) return glm::vec2(0.5f);
+  return glm::vec2(r[0] / m + 0.5f, r[1] / m + 0.5f);
+}
+
 void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
               const SoPrimitiveVertex* v2, const SoPrimitiveVertex* v3) {
   auto& data = *static_cast<Extraction*>(user);
@@ -228,6 +262,10 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   const SbMatrix& model = action->getModelMatrix();
   const SbMatrix normalMatrix = model.inverse().transpose();
   const SbMatrix& textureMatrix = action->getTextureMatrix();
+  const bool sphereMapped = TextureCoordinateSource::isEnvironment(state, data);
+  const SbMatrix modelView = model * data.viewing;
+  const SbMatrix eyeNormalMatrix = modelView.inverse().transpose();
+  if (sphereMapped) data.texCoordsFollowView = true;
 
   Triangle out;
   out.shape = data.shape;
@@ -302,7 +340,15 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
                         v->getMaterialIndex());
     out.colour[i] = drawnColour(diffuse, transparency);
     SbVec4f tc;
-    textureMatrix.multVecMatrix(v->getTextureCoords(), tc);
+    SbVec4f generated = v->getTextureCoords();
+    if (sphereMapped) {
+      SbVec3f eye, eyeNormal;
+      modelView.multVecMatrix(v->getPoint(), eye);
+      eyeNormalMatrix.multDirMatrix(v->getNormal(), eyeNormal);
+      const glm::vec2 st = sphereMap(eye, eyeNormal);
+      generated = SbVec4f(st.x, st.y, 0.0f, 1.0f);
+    }
+    textureMatrix.multVecMatrix(generated, tc);
     const float w = tc[3] != 0.0f ? tc[3] : 1.0f;
     out.texCoord[i] = glm::vec2(tc[0] / w, tc[1] / w);
     data.positions.push_back(world[i]);
@@ -372,6 +418,8 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
     action.addPreCallback(SoPeelingSeparator::getClassTypeId(), peelingEnter, &data);
     action.addPostCallback(SoPeelingSeparator::getClassTypeId(), peelingLeave, &data);
     action.addPreCallback(SoShadowStyle::getClassTypeId(), shadowStyle, nullptr);
+    action.addPreCallback(SoTextureCoordinateEnvironment::getClassTypeId(), environmentFunction,
+                          &data);
     action.addPreCallback(SoLight::getClassTypeId(), light, &data);
     action.addPreCallback(SoShape::getClassTypeId(), skipDefectiveShape, nullptr);
     action.addPreCallback(SoShape::getClassTypeId(), shapeStart, &data);

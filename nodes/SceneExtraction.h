@@ -134,6 +134,10 @@ struct Extraction {
   std::uint32_t shape = 0;
   // Some fog's distance is the view volume's depth (visibility 0): a moved camera changes it.
   bool fogFollowsView = false;
+  // The TextureCoordinateEnvironment nodes met (their ids): shapes below one take GL's sphere
+  // map, from their eye-space positions and normals, so a moved camera changes them too.
+  std::vector<SbUniqueId> environmentFunctions;
+  bool texCoordsFollowView = false;
   // A pass that reads only the lights again (SceneTracer::updateLights): the groups met are
   // the ones read before, in the same order.
   bool lightsOnly = false;

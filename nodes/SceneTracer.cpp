@@ -512,7 +512,7 @@ class Tracer {
 }  // namespace
 
 bool SceneTracer::viewDependent() const {
-  return data_->extraction.fogFollowsView;
+  return data_->extraction.fogFollowsView || data_->extraction.texCoordsFollowView;
 }
 
 // One worker's working memory: kept from trace to trace, as a frame's rows otherwise grew their
