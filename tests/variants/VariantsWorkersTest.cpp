@@ -78,9 +78,13 @@ bool waitUntil(const std::function<bool()>& ready) {
 // One worker (--jobs 1) renders every variant in turn, so that whatever a variant could leave
 // behind in the worker (GL state, Coin's caches, the warnings said once) meets the next:
 // GL's path after the traced one and back, a failed variant in the middle, settings that do
-// nothing said for each variant that makes them. Each picture must equal, to the bit, the
-// one its own `ivshadow render` process draws; the stderr, stdout, exit status, manifests and
-// CSV must be those of one process per variant.
+// nothing said for each variant that makes them. The worker keeps the scene from a traced
+// variant to the next (cli/KeptScene.h): the last variants assign other fields one after
+// another on the scene kept, a light's, a material's, none, a value that does not parse (the
+// scene is then read afresh), the light's again, then move and dim it, so that the tracer
+// shades the surfaces it kept. Each picture must equal, to the bit, the one its own `ivshadow
+// render` process draws; the stderr, stdout, exit status, manifests and CSV must be those of
+// one process per variant.
 TEST(VariantsWorkers, RenderTheSweepOfOneProcessPerVariantToTheBit) {
   const std::string dir = test::outputDir();
   const std::string file = dir + "/mixed.variants";
@@ -91,9 +95,17 @@ TEST(VariantsWorkers, RenderTheSweepOfOneProcessPerVariantToTheBit) {
                          "variant raster_rays\n  Scene.renderer = RASTER\n  Lamp.method = RAYS\n"
                          "variant typo\n  Lamp.colour = 1 0 0\n"
                          "sweep idle Lamp.resolution = 128 | 256\n  Scene.renderer = TRACER\n"
-                         "variant bright\n  RedPaneMaterial.diffuseColor = 1.7 0.1 0.1\n";
-  const std::vector<std::string> names = {"traced",   "raster_map", "traced_again", "raster_rays",
-                                          "idle-128", "idle-256",   "bright"};
+                         "variant bright\n  RedPaneMaterial.diffuseColor = 1.7 0.1 0.1\n"
+                         "variant lamp\n  Lamp.intensity = 0.6\n"
+                         "variant pane\n  RedPaneMaterial.transparency = 0.3\n"
+                         "variant plain\n"
+                         "variant unparsable\n  Lamp.intensity = bright\n"
+                         "variant lamp_again\n  Lamp.intensity = 0.7\n"
+                         "variant lamp_moved\n  Lamp.location = 0.6 -0.4 4\n"
+                         "variant lamp_dim\n  Lamp.intensity = 0.5\n";
+  const std::vector<std::string> names = {
+      "traced", "raster_map", "traced_again", "raster_rays", "idle-128",   "idle-256", "bright",
+      "lamp",   "pane",       "plain",        "lamp_again",  "lamp_moved", "lamp_dim"};
   const auto sweep = [&](const std::string& out) {
     return std::vector<std::string>{
         test::ivshadowExe(), "variants", coloured(), file, "-o", out, "--size", "96x72",
@@ -131,15 +143,21 @@ TEST(VariantsWorkers, RenderTheSweepOfOneProcessPerVariantToTheBit) {
   // The two settings that did nothing in a traced group, reported under each variant that
   // set them though one worker rendered both.
   EXPECT_EQ(manifest(dir + "/workers", "idle-256")["stats"]["idle_settings"].size(), 1u);
-  const nlohmann::json typo = manifest(dir + "/workers", "typo");
-  EXPECT_EQ(typo["exit_code"], 2);
-  EXPECT_EQ(typo["error"], manifest(dir + "/processes", "typo")["error"]);
+  for (const char* failed : {"typo", "unparsable"}) {
+    const nlohmann::json byWorker = manifest(dir + "/workers", failed);
+    EXPECT_EQ(byWorker["exit_code"], 2) << failed;
+    EXPECT_EQ(byWorker["error"], manifest(dir + "/processes", failed)["error"]) << failed;
+  }
+  // The light's variants on the scene kept: the first read the lights alone, the others
+  // shaded the surfaces kept; the same pictures as the processes' all the same.
+  for (const char* kept : {"lamp_moved", "lamp_dim"})
+    EXPECT_EQ(manifest(dir + "/workers", kept)["stats"]["tracer_scenes"], 0) << kept;
 
   // The CSV but for its timing columns (frame_ms_median and the build and trace times).
   const std::vector<std::string> byWorkers = test::lines(readText(dir + "/workers/variants.csv"));
   const std::vector<std::string> byProcesses =
       test::lines(readText(dir + "/processes/variants.csv"));
-  ASSERT_EQ(byWorkers.size(), names.size() + 2);
+  ASSERT_EQ(byWorkers.size(), names.size() + 3);
   ASSERT_EQ(byWorkers.size(), byProcesses.size());
   const auto untimed = [](const std::string& line) {
     std::vector<std::string> fields(1);
