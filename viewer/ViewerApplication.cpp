@@ -137,20 +137,9 @@ std::vector<FieldAssignment> checkScriptedOptions(const ViewerOptions& options) 
   return assignments;
 }
 
-}  // namespace
-
-int runViewer(const ViewerOptions& options, const char* programName) {
-  ImageSize size;
-  std::vector<FieldAssignment> assignments;
-  try {
-    size = ImageSize::parse(options.size.empty() ? kDefaultSize : options.size, "--size");
-    assignments = checkScriptedOptions(options);
-  } catch (const InputError& error) {
-    std::cerr << error.what() << '\n';
-    return 2;
-  }
-  // SoQt draws through GLX, so it needs an X display; without one (none set, or one that
-  // cannot be reached) Qt would abort.
+// SoQt draws through GLX, so it needs an X display; without one (none set, or one that cannot
+// be reached) Qt would abort. 0 when the viewer can reach one, else 3, said.
+int checkDisplay() {
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0') {
     std::cerr << "ivshadow: error: the viewer needs an X display (DISPLAY is not set); use "
@@ -159,16 +148,15 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   }
   if (Display* connection = XOpenDisplay(display)) {
     XCloseDisplay(connection);
-  } else {
-    std::cerr << "ivshadow: error: the viewer cannot open the X display '" << display
-              << "' (DISPLAY); start an X server or use 'ivshadow render' to render without one\n";
-    return 3;
+    return 0;
   }
+  std::cerr << "ivshadow: error: the viewer cannot open the X display '" << display
+            << "' (DISPLAY); start an X server or use 'ivshadow render' to render without one\n";
+  return 3;
+}
 
-  int argc = 1;
-  char* argv[] = {const_cast<char*>(programName), nullptr};
-  QApplication application(argc, argv);
-  ViewerWindow window;
+// SoQt, the plugin's nodes and Coin's settings, as the viewer draws with them.
+void initCoin(ViewerWindow& window) {
   SoQt::init(&window);
   init();
   // NURBS shapes give the casters' SoCallbackAction triangles only through an offscreen GL
@@ -182,20 +170,25 @@ int runViewer(const ViewerOptions& options, const char* programName) {
   SoSeparator::setNumRenderCaches(0);
   // The live figures show each pass's GPU time.
   setPassTiming(true);
-  window.createViewer();
-  const bool scripted = options.scripted();
-  window.setInteractive(!scripted);
+}
+
+void showLightDragger(ViewerWindow& window, const ViewerOptions& options) {
   if (options.lightDragger || options.dragLight > 0) window.setLightDraggerShown(true);
   // A screenshot that asks for the dragger shows it as a window does, in view; --drag-light
   // keeps the file's camera, which its pictures are compared with.
   if (options.lightDragger && options.dragLight == 0) window.setBringLightIntoView(true);
   if (options.noLightDragger) window.setLightDraggerShown(false);
+}
 
+// Opens the scene and makes the scripted edits, through what the user would click: the
+// panel's button and editors. 2 when a scripted run cannot go on, else 0.
+int openAndEdit(ViewerWindow& window, const ViewerOptions& options,
+                const std::vector<FieldAssignment>& assignments) {
+  const bool scripted = options.scripted();
   if (!options.scene.empty()) {
     const std::string error = window.openScene(QString::fromStdString(options.scene));
     if (scripted && !error.empty()) return 2;
   }
-  // Scripted edits go through what the user would click: the panel's button and editors.
   try {
     if (options.addLight) {
       const std::string error = window.addDeepShadowLight(options.addGround);
@@ -206,122 +199,178 @@ int runViewer(const ViewerOptions& options, const char* programName) {
     std::cerr << error.what() << '\n';
     if (scripted) return 2;
   }
-  // Written once everything else has succeeded, so that a failed run leaves no file.
-  const auto saveScene = [&]() -> int {
-    if (options.saveScene.empty()) return 0;
-    const std::string error = window.saveSceneAs(QString::fromStdString(options.saveScene));
-    if (!error.empty()) {
-      std::cerr << error << '\n';
-      return 2;
-    }
-    std::cout << "wrote " << options.saveScene << '\n';
-    return 0;
-  };
-  if (scripted && options.screenshot.empty()) return saveScene();
+  return 0;
+}
 
-  const bool inspecting = !options.inspect.empty();
-  if (inspecting) {
-    const InspectRequest request = parseInspect(options.inspect);
-    MapInspector& inspector = window.inspector();
-    inspector.selectFace(request.face);
-    inspector.selectLayer(request.layer);
-    inspector.setShowVisibility(request.visibility);
-    inspector.selectLight(request.light);
-    inspector.show();
+// --save-scene without a screenshot, written once everything else has succeeded, so that a
+// failed run leaves no file.
+int saveScene(ViewerWindow& window, const ViewerOptions& options) {
+  if (options.saveScene.empty()) return 0;
+  const std::string error = window.saveSceneAs(QString::fromStdString(options.saveScene));
+  if (!error.empty()) {
+    std::cerr << error << '\n';
+    return 2;
   }
-  // Laid out once the panel holds the scene's nodes, which set its width. An interactive
-  // window without --size opens as the last one was closed.
+  std::cout << "wrote " << options.saveScene << '\n';
+  return 0;
+}
+
+void showInspector(ViewerWindow& window, const std::string& inspect) {
+  const InspectRequest request = parseInspect(inspect);
+  MapInspector& inspector = window.inspector();
+  inspector.selectFace(request.face);
+  inspector.selectLayer(request.layer);
+  inspector.setShowVisibility(request.visibility);
+  inspector.selectLight(request.light);
+  inspector.show();
+}
+
+// Laid out once the panel holds the scene's nodes, which set its width. An interactive window
+// without --size opens as the last one was closed.
+void layOut(ViewerWindow& window, const ViewerOptions& options, const ImageSize& size) {
+  const bool scripted = options.scripted();
   if (!scripted) window.restoreFoldedSections();
   if (scripted || !options.size.empty() || !window.restoreLayout()) {
     window.setViewerSize(size.width, size.height);
   }
   window.show();
   window.settleDrawable();
+}
 
-  if (scripted) {
-    int status = 1;
-    Image screenshot;
-    // The screenshot is a frame drawn after the first one: should the first still go to a
-    // drawable of a stale size (docs/KNOWN_ISSUES.md), the next is right.
-    auto* waitForFirstFrame = new QTimer(&window);
-    // --drag-light: the drag runs after the first frame, the screenshot after the drag.
-    std::unique_ptr<ScriptedDrag> drag;
-    bool dragged = options.dragLight == 0;
-    QObject::connect(waitForFirstFrame, &QTimer::timeout, &window, [&, waitForFirstFrame] {
-      if (window.framesDrawn() < 1) return;
-      if (!dragged) {
-        if (!drag) {
-          drag = std::make_unique<ScriptedDrag>(window, options.dragLight,
-                                                [&, waitForFirstFrame](const std::string& error) {
-                                                  dragged = true;
-                                                  if (error.empty()) return;
-                                                  waitForFirstFrame->stop();
-                                                  std::cerr << "ivshadow: error: " << error << '\n';
-                                                  status = 2;
-                                                  QTimer::singleShot(0, qApp, [] { qApp->quit(); });
-                                                });
-          drag->start();
-        }
-        return;
+// What a scripted run's frames leave for its outputs: 0 once the screenshot is taken.
+struct ScriptedCapture {
+  int status = 1;
+  Image screenshot;
+  std::unique_ptr<ScriptedDrag> drag;  // --drag-light
+  bool dragged = false;
+};
+
+// Runs the event loop until the screenshot is taken (after the drag, and once the inspector
+// is up to date), or the run fails.
+void captureScripted(ViewerWindow& window, const ViewerOptions& options, bool inspecting,
+                     ScriptedCapture& capture) {
+  // The screenshot is a frame drawn after the first one: should the first still go to a
+  // drawable of a stale size (docs/KNOWN_ISSUES.md), the next is right.
+  auto* waitForFirstFrame = new QTimer(&window);
+  // --drag-light: the drag runs after the first frame, the screenshot after the drag.
+  capture.dragged = options.dragLight == 0;
+  QObject::connect(waitForFirstFrame, &QTimer::timeout, &window, [&, waitForFirstFrame] {
+    if (window.framesDrawn() < 1) return;
+    if (!capture.dragged) {
+      if (!capture.drag) {
+        capture.drag = std::make_unique<ScriptedDrag>(
+            window, options.dragLight, [&, waitForFirstFrame](const std::string& error) {
+              capture.dragged = true;
+              if (error.empty()) return;
+              waitForFirstFrame->stop();
+              std::cerr << "ivshadow: error: " << error << '\n';
+              capture.status = 2;
+              QTimer::singleShot(0, qApp, [] { qApp->quit(); });
+            });
+        capture.drag->start();
       }
-      // The inspector reads the map during a frame after the one that built it.
-      if (inspecting && !window.inspector().upToDate()) return;
-      if (inspecting && window.inspector().picture().isNull()) {
-        // A light or layer that is not there: bad input, and no output files.
-        waitForFirstFrame->stop();
-        std::cerr << "ivshadow: error: --inspect '" << options.inspect
-                  << "': " << window.inspector().status().toStdString() << '\n';
-        status = 2;
-        qApp->quit();
-        return;
-      }
+      return;
+    }
+    // The inspector reads the map during a frame after the one that built it.
+    if (inspecting && !window.inspector().upToDate()) return;
+    if (inspecting && window.inspector().picture().isNull()) {
+      // A light or layer that is not there: bad input, and no output files.
       waitForFirstFrame->stop();
-      window.captureScreenshot([&status, &screenshot](const Image& image) {
-        screenshot = image;
-        status = 0;
-        // Quit after the frame is complete, so its figures are known.
-        QTimer::singleShot(0, qApp, [] { qApp->quit(); });
-      });
-    });
-    waitForFirstFrame->start(100);
-    // A window that never draws (a broken GLX) must not hang scripts and tests.
-    QTimer::singleShot(120000, qApp, [] {
-      std::cerr << "ivshadow: error: the viewer drew no frame within 120 s\n";
+      std::cerr << "ivshadow: error: --inspect '" << options.inspect
+                << "': " << window.inspector().status().toStdString() << '\n';
+      capture.status = 2;
       qApp->quit();
+      return;
+    }
+    waitForFirstFrame->stop();
+    window.captureScreenshot([&capture](const Image& image) {
+      capture.screenshot = image;
+      capture.status = 0;
+      // Quit after the frame is complete, so its figures are known.
+      QTimer::singleShot(0, qApp, [] { qApp->quit(); });
     });
-    application.exec();
-    if (status != 0) return status;
-    // Every output together or none (image/OutputFiles): a figures file that cannot be
-    // written takes the screenshot with it.
-    status = withViewerExitStatus([&] {
-      OutputFiles outputs;
-      outputs.addImage(options.screenshot, screenshot);
-      Image inspectorPicture;
-      if (inspecting && !options.inspectOut.empty()) {
-        inspectorPicture = imageFromQt(window.inspector().picture());
-        outputs.addImage(options.inspectOut, inspectorPicture);
-      }
-      if (!options.saveScene.empty()) window.addScene(outputs, options.saveScene);
-      if (!options.figures.empty()) {
-        nlohmann::json figures = nlohmann::json::parse(window.figures().json());
-        if (drag) figures["drag"] = nlohmann::json::parse(drag->json());
-        outputs.addText(options.figures, figures.dump() + "\n");
-      }
-      Image windowPicture;
-      if (!options.windowShot.empty()) {
-        // Read back from the X server: the GL area as last swapped, and the widgets around it.
-        windowPicture = imageFromQt(window.screen()->grabWindow(window.winId()).toImage());
-        outputs.addImage(options.windowShot, windowPicture);
-      }
-      outputs.commitWhole();
-    });
-    if (status != 0) return status;
-    if (inspecting) std::cout << "inspector: " << window.inspector().status().toStdString() << '\n';
-    for (const std::string* written : {&options.screenshot, &options.inspectOut, &options.saveScene,
-                                       &options.figures, &options.windowShot})
-      if (!written->empty()) std::cout << "wrote " << *written << '\n';
-    return status;
+  });
+  waitForFirstFrame->start(100);
+  // A window that never draws (a broken GLX) must not hang scripts and tests.
+  QTimer::singleShot(120000, qApp, [] {
+    std::cerr << "ivshadow: error: the viewer drew no frame within 120 s\n";
+    qApp->quit();
+  });
+  QApplication::exec();
+}
+
+// Every output together or none (image/OutputFiles): a figures file that cannot be written
+// takes the screenshot with it.
+int writeScriptedOutputs(ViewerWindow& window, const ViewerOptions& options, bool inspecting,
+                         const ScriptedCapture& capture) {
+  return withViewerExitStatus([&] {
+    OutputFiles outputs;
+    outputs.addImage(options.screenshot, capture.screenshot);
+    Image inspectorPicture;
+    if (inspecting && !options.inspectOut.empty()) {
+      inspectorPicture = imageFromQt(window.inspector().picture());
+      outputs.addImage(options.inspectOut, inspectorPicture);
+    }
+    if (!options.saveScene.empty()) window.addScene(outputs, options.saveScene);
+    if (!options.figures.empty()) {
+      nlohmann::json figures = nlohmann::json::parse(window.figures().json());
+      if (capture.drag) figures["drag"] = nlohmann::json::parse(capture.drag->json());
+      outputs.addText(options.figures, figures.dump() + "\n");
+    }
+    Image windowPicture;
+    if (!options.windowShot.empty()) {
+      // Read back from the X server: the GL area as last swapped, and the widgets around it.
+      windowPicture = imageFromQt(window.screen()->grabWindow(window.winId()).toImage());
+      outputs.addImage(options.windowShot, windowPicture);
+    }
+    outputs.commitWhole();
+  });
+}
+
+// A scripted run with a screenshot: its frames, then its outputs.
+int runScripted(ViewerWindow& window, const ViewerOptions& options, bool inspecting) {
+  ScriptedCapture capture;
+  captureScripted(window, options, inspecting, capture);
+  if (capture.status != 0) return capture.status;
+  const int status = writeScriptedOutputs(window, options, inspecting, capture);
+  if (status != 0) return status;
+  if (inspecting) std::cout << "inspector: " << window.inspector().status().toStdString() << '\n';
+  for (const std::string* written : {&options.screenshot, &options.inspectOut, &options.saveScene,
+                                     &options.figures, &options.windowShot})
+    if (!written->empty()) std::cout << "wrote " << *written << '\n';
+  return status;
+}
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options, const char* programName) {
+  ImageSize size;
+  std::vector<FieldAssignment> assignments;
+  try {
+    size = ImageSize::parse(options.size.empty() ? kDefaultSize : options.size, "--size");
+    assignments = checkScriptedOptions(options);
+  } catch (const InputError& error) {
+    std::cerr << error.what() << '\n';
+    return 2;
   }
+  if (const int status = checkDisplay(); status != 0) return status;
+
+  int argc = 1;
+  char* argv[] = {const_cast<char*>(programName), nullptr};
+  QApplication application(argc, argv);
+  ViewerWindow window;
+  initCoin(window);
+  window.createViewer();
+  const bool scripted = options.scripted();
+  window.setInteractive(!scripted);
+  showLightDragger(window, options);
+  if (const int status = openAndEdit(window, options, assignments); status != 0) return status;
+  if (scripted && options.screenshot.empty()) return saveScene(window, options);
+
+  const bool inspecting = !options.inspect.empty();
+  if (inspecting) showInspector(window, options.inspect);
+  layOut(window, options, size);
+  if (scripted) return runScripted(window, options, inspecting);
   return application.exec();
 }
 
