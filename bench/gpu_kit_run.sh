@@ -1,0 +1,213 @@
+#!/usr/bin/env bash
+# The GPU kit's runner (docs/GPU.md), packed beside ivshadow-gpu-kit.tar.xz by
+# bench/gpu_kit.sh as run.sh:
+#   run.sh [--quick] OUTDIR
+# unpacks the kit next to itself (or into a temporary folder where that is read-only), prints
+# the GL vendor, renderer and version, runs the GL tests (all of gl_tests, or with --quick a
+# subset across the shadow methods, transparency and the tracer), the benchmarks behind
+# docs/PERFORMANCE.md's goals and the demo render, and writes to OUTDIR summary.txt
+# ("N passed, M failed", the GL strings, the benchmark medians), tests.log, benchmarks.json,
+# demo.png, glasses.png and gl_stats.json. Nothing here needs the network or a package
+# manager: it runs on a machine with glibc, libstdc++ and a GL driver alone. Exit status: 0
+# when every test passed, 1 when some failed, 3 (one line on stderr) when no GL context can be
+# had through EGL, 2 for a wrong call or a kit that cannot be unpacked.
+set -uo pipefail
+export LC_ALL=C
+
+usage() {
+  echo "usage: run.sh [--quick] OUTDIR" >&2
+  exit 2
+}
+die() {
+  echo "run.sh: $*" >&2
+  exit 2
+}
+quick=0
+[ "${1:-}" = --quick ] && { quick=1; shift; }
+[ $# -eq 1 ] || usage
+here=$(cd "$(dirname "$0")" && pwd -P)
+mkdir -p "$1" || die "cannot make $1"
+out=$(cd "$1" && pwd -P)
+archive=$here/ivshadow-gpu-kit.tar.xz
+[ -f "$archive" ] || die "no $archive beside run.sh"
+started=$SECONDS
+
+# Unpacked afresh each run, so a kit packed again never mixes with an older one.
+if [ -w "$here" ]; then
+  root=$here/ivshadow-gpu-kit
+else
+  root=$(mktemp -d)/ivshadow-gpu-kit
+fi
+rm -rf "$root"
+mkdir -p "$root"
+if command -v xz >/dev/null; then
+  tar -C "$(dirname "$root")" -xJf "$archive" || die "cannot unpack $archive"
+else
+  # Images without xz-utils mostly have Python, whose lzma module reads it.
+  python3 -c 'import sys, tarfile; tarfile.open(sys.argv[1]).extractall(sys.argv[2])' \
+    "$archive" "$(dirname "$root")" || die "cannot unpack $archive: no xz and no python3"
+fi
+. "$root/kit.env"
+bin=$root/$build/bin
+lib=$root/$build/lib
+
+# A library of the kit built against a newer glibc than this machine's is left out, so that
+# the machine's own copy loads instead (Debian 12's libexpat needs glibc 2.36; Ubuntu 22.04
+# has 2.35 and its own libexpat).
+have_glibc=$(getconf GNU_LIBC_VERSION 2>/dev/null | awk '{print $2}')
+if [ -n "$have_glibc" ]; then
+  while read -r file needs; do
+    newest=$(printf '%s\n%s\n' "${needs#GLIBC_}" "$have_glibc" | sort -V | tail -1)
+    [ "$newest" = "$have_glibc" ] && continue
+    case "$file" in
+      lib/*) mkdir -p "$root/too_new" && mv "$lib/${file#lib/}" "$root/too_new/" &&
+        echo "run.sh: warning: ${file#lib/} needs $needs, this machine has glibc $have_glibc: using the machine's copy" >&2 ;;
+      *) echo "run.sh: $file needs $needs, this machine has glibc $have_glibc: the kit cannot run here" >&2
+        exit 2 ;;
+    esac
+  done <"$root/glibc_needs.txt"
+fi
+
+# The test binaries read their scenes, the CLI and their output folder under $link (rewritten
+# at packing from the source folder), which points at this unpacked kit. One run at a time.
+if command -v flock >/dev/null; then
+  exec 9>"$link.lock"
+  flock -w 600 9 || die "another kit run holds $link.lock"
+fi
+if [ -e "$link" ] && [ ! -L "$link" ]; then
+  die "$link exists and is not a link; the test binaries need that path"
+fi
+ln -sfn "$root" "$link" || die "cannot link $link to $root"
+mkdir -p "$root/$build/test-output"
+
+# libglvnd finds the vendor's EGL library through JSON files; NVIDIA's images keep theirs
+# under /usr/local/nvidia, where Debian's libglvnd does not look.
+if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}${__EGL_VENDOR_LIBRARY_DIRS:-}" ]; then
+  dirs=()
+  for nvidia in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do
+    # Named by its path where the loader's cache does not know it.
+    if [ -f "$nvidia/libEGL_nvidia.so.0" ] && ! ldconfig -p 2>/dev/null | grep -q libEGL_nvidia.so.0; then
+      mkdir -p "$root/egl_vendor.d"
+      printf '{"file_format_version": "1.0.0", "ICD": {"library_path": "%s"}}\n' \
+        "$nvidia/libEGL_nvidia.so.0" >"$root/egl_vendor.d/10_nvidia.json"
+      dirs+=("$root/egl_vendor.d")
+      break
+    fi
+  done
+  for dir in /usr/local/nvidia/share/glvnd/egl_vendor.d /etc/glvnd/egl_vendor.d \
+             /usr/share/glvnd/egl_vendor.d /usr/local/share/glvnd/egl_vendor.d; do
+    [ -d "$dir" ] && dirs+=("$dir")
+  done
+  [ ${#dirs[@]} -gt 0 ] || { echo "run.sh: no EGL vendor library: no glvnd egl_vendor.d folder on this machine" >&2; exit 3; }
+  __EGL_VENDOR_LIBRARY_DIRS=$(IFS=:; echo "${dirs[*]}")
+  export __EGL_VENDOR_LIBRARY_DIRS
+fi
+
+summary=$out/summary.txt
+log=$out/tests.log
+: >"$log"
+say() { echo "$*" | tee -a "$summary"; }
+: >"$summary"
+
+# The GL strings: the CLI's statistics name the renderer and version; the vendor comes from
+# a small EGL probe through the kit's own libEGL where Python is at hand.
+probe_err=$(mktemp)
+if ! "$bin/ivshadow" render "$root/iv_scenes/lit_plane.iv" -o "$out/probe.png" --size 16x16 \
+     --stats "$out/gl_stats.json" >/dev/null 2>"$probe_err"; then
+  echo "run.sh: no GL context through EGL on this machine: $(head -1 "$probe_err")" >&2
+  exit 3
+fi
+rm -f "$out/probe.png"
+stat_field() { sed -n "s/^ *\"$1\": \"\(.*\)\",\{0,1\}$/\1/p" "$out/gl_stats.json" | head -1; }
+vendor=unknown
+if command -v python3 >/dev/null; then
+  vendor=$(python3 "$root/gl_vendor.py" "$lib" "$(stat_field egl_platform)" 2>/dev/null) || vendor=unknown
+fi
+say "ivshadow GPU kit $commit (packed $packed), $(if [ $quick = 1 ]; then echo quick; else echo full; fi) run on $(uname -n), $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+say "GL vendor: $vendor"
+say "GL renderer: $(stat_field gl_renderer)"
+say "GL version: $(stat_field gl_version)"
+say "EGL platform: $(stat_field egl_platform)"
+if { [ -e /dev/nvidia0 ] || [ -e /dev/dri/renderD128 ]; } && stat_field gl_renderer | grep -q llvmpipe; then
+  say "warning: a GPU is present but GL runs on llvmpipe"
+fi
+
+# The tests, one process per test suite so that a crash costs one suite, not the run; a test
+# that never reported OK or SKIPPED (its process crashed or hung) counts as failed.
+if [ $quick = 1 ]; then
+  filter='DeepShadow.*:Cases/DeepShadowAnalytic.*:ShadowVolumes.*:RayShadows.*'
+  filter+=':Methods/ScreenShadows.*:MapFragmentListsGLTest.*:ImperfectShadowMapsGLTest.*'
+  filter+=':GroupPeeling.*:Cases/OpacityMapAnalytic.*:TracedGroup.*:Cases/TracedGroupAnalytic.*'
+  filter+=':LightTypesMap.*:GlContextGLTest.*:PassInstrumentsGLTest.*:ShadingVariantsGLTest.*'
+  filter+=':HeadlessRendering.*:RenderCommand.*:Examples.*:GlFault.*:UniformLocationsGLTest.*'
+  filter+=':PerContextGLTest.*:ShadowGroupElementGLTest.*:CoinShadowGroupAgreement.*:KeptFrame.*'
+else
+  filter='*'
+fi
+jobs=$(nproc 2>/dev/null || echo 2)
+[ "$jobs" -gt 8 ] && jobs=8
+suites_dir=$(mktemp -d)
+"$bin/gl_tests" --gtest_list_tests --gtest_filter="$filter" |
+  awk '/^[^ ]/ && !/^Running main/ {suite = $1} /^  / {print suite}' | sort | uniq -c |
+  awk '{print $2, $1}' >"$suites_dir/suites"
+run_suite() {
+  local suite=$1 count=$2 bin=$3 dir=$4 name
+  name=$(echo "$suite" | tr '/.' '__')
+  timeout 600 "$bin/gl_tests" --gtest_filter="$suite*" --gtest_color=no >"$dir/$name.log" 2>&1
+  local ok skipped
+  ok=$(grep -c '^\[       OK \]' "$dir/$name.log")
+  skipped=$(grep -cE '^\[  SKIPPED \] .* \([0-9]+ ms\)$' "$dir/$name.log")
+  echo "$suite $count $ok $skipped" >"$dir/$name.count"
+}
+export -f run_suite
+tests_started=$SECONDS
+sed "s|\$| $bin $suites_dir|" "$suites_dir/suites" |
+  xargs -P "$jobs" -L 1 bash -c 'run_suite "$0" "$1" "$2" "$3"'
+tests_seconds=$((SECONDS - tests_started))
+passed=0 failed=0 skipped=0
+failed_suites=()
+while read -r suite count; do
+  name=$(echo "$suite" | tr '/.' '__')
+  read -r _ _ ok skip <"$suites_dir/$name.count" 2>/dev/null || { ok=0; skip=0; }
+  passed=$((passed + ok))
+  skipped=$((skipped + skip))
+  bad=$((count - ok - skip))
+  failed=$((failed + bad))
+  [ "$bad" -gt 0 ] && failed_suites+=("$suite ($bad)")
+  { echo "===== $suite"; cat "$suites_dir/$name.log"; } >>"$log"
+done <"$suites_dir/suites"
+say "gl_tests ($(wc -l <"$suites_dir/suites") suites, $((passed + failed + skipped)) tests, ${tests_seconds} s, $jobs at a time): $passed passed, $failed failed, $skipped skipped"
+for suite in "${failed_suites[@]}"; do say "  failed in $suite"; done
+grep -h '^\[  FAILED  \] .* ([0-9]* ms)$' "$suites_dir"/*.log | sed 's/^/  /' | tee -a "$summary"
+
+# The benchmarks behind docs/PERFORMANCE.md's goals (bench/performance_docs.sh's filters),
+# medians of 3 repetitions; --quick times one repetition each, enough to see them run.
+bench_started=$SECONDS
+repetitions=3
+[ $quick = 1 ] && repetitions=1
+{
+  echo "{"
+  first=1
+  while read -r name filter; do
+    [ $first = 1 ] || echo ","
+    first=0
+    echo "\"$name\":"
+    "$bin/ivshadow_bench" --benchmark_filter="$filter" --benchmark_repetitions=$repetitions \
+      --benchmark_report_aggregates_only=true --benchmark_format=json 2>>"$log" || echo '{}'
+  done <"$root/bench_filters.txt"
+  echo "}"
+} >"$out/benchmarks.json"
+say "benchmarks ($((SECONDS - bench_started)) s; real time, $(if [ $repetitions = 1 ]; then echo "one repetition"; else echo "median of $repetitions"; fi)):"
+awk '/"name":/ {gsub(/[",]/, "", $2); n = $2}
+     /"real_time":/ {gsub(/,/, "", $2); t = $2}
+     /"time_unit":/ {gsub(/[",]/, "", $2); if (n !~ /_(mean|stddev|cv)$/) printf "  %-60s %12.3f %s\n", n, t, $2}' \
+  "$out/benchmarks.json" | tee -a "$summary"
+
+# The pictures: the demo as ./run demo renders it, and the glasses through exact transparency.
+"$bin/ivshadow" render "$root/iv_scenes/coloured_shadows.iv" -o "$out/demo.png" --size 800x600 \
+  >>"$log" 2>&1 || say "warning: the demo render failed (see tests.log)"
+"$bin/ivshadow" render "$root/iv_scenes/coloured_glasses.iv" -o "$out/glasses.png" \
+  --size 800x600 >>"$log" 2>&1 || say "warning: the glasses render failed (see tests.log)"
+say "total ${SECONDS}s; $passed passed, $failed failed"
+rm -rf "$suites_dir" "$probe_err"
+[ "$failed" -eq 0 ]
