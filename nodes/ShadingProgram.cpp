@@ -3,6 +3,7 @@
 #include "GlslSources.h"
 #include "callbacks/GlProgram.h"
 #include "callbacks/ShadingUniforms.h"
+#include "nodes/ShadowGroupElement.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
@@ -126,6 +127,7 @@ const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVa
   }
   const unsigned int program = currentProgram();
   if (program == 0) return nullptr;
+  ShadowGroupElement::setProgram(action->getState(), int(variant));
   // Coin fills in coin_light_model and coin_two_sided_lighting when the program is bound (from
   // the state here, above the group's shape hints) and afterwards only when the GL state it
   // last sent changes. A frame (or Coin's delayed pass) that begins with two-sided lighting

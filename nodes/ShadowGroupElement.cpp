@@ -25,6 +25,7 @@ void ShadowGroupElement::init(SoState* state) {
   shading_ = nullptr;
   capturing_ = false;
   peeling_ = false;
+  program_ = -1;
 }
 
 void ShadowGroupElement::push(SoState* state) {
@@ -34,12 +35,14 @@ void ShadowGroupElement::push(SoState* state) {
   shading_ = previous->shading_;
   capturing_ = previous->capturing_;
   peeling_ = previous->peeling_;
+  program_ = previous->program_;
 }
 
 SbBool ShadowGroupElement::matches(const SoElement* element) const {
   const auto* other = static_cast<const ShadowGroupElement*>(element);
   return other->group_ == group_ && other->shading_ == shading_ &&
-         other->capturing_ == capturing_ && other->peeling_ == peeling_;
+         other->capturing_ == capturing_ && other->peeling_ == peeling_ &&
+         other->program_ == program_;
 }
 
 SoElement* ShadowGroupElement::copyMatchInfo() const {
@@ -48,6 +51,7 @@ SoElement* ShadowGroupElement::copyMatchInfo() const {
   copy->shading_ = shading_;
   copy->capturing_ = capturing_;
   copy->peeling_ = peeling_;
+  copy->program_ = program_;
   return copy;
 }
 
@@ -69,6 +73,14 @@ void ShadowGroupElement::setCapturing(SoState* state, bool capturing) {
 
 void ShadowGroupElement::setPeeling(SoState* state, bool peeling) {
   static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->peeling_ = peeling;
+}
+
+void ShadowGroupElement::setProgram(SoState* state, int variant) {
+  static_cast<ShadowGroupElement*>(getElement(state, classStackIndex))->program_ = variant;
+}
+
+int ShadowGroupElement::program(SoState* state) {
+  return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->program_;
 }
 
 GroupShading* ShadowGroupElement::activeGroup(SoState* state) {

@@ -15,7 +15,8 @@ class GroupShading;
 // drawn into the capture targets of its RAYS lights, and whether a peeling above (of a group
 // or a SoPeelingSeparator) is drawing them. A SoPeelingSeparator below reads it to shade its
 // layers with that group's programs and maps, or to draw plainly during a capture or inside
-// a peeling (each pixel is peeled once, by the outermost).
+// a peeling (each pixel is peeled once, by the outermost); and which of the plugin's programs
+// shades them.
 class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   typedef SoElement inherited;
   SO_ELEMENT_HEADER(ShadowGroupElement);
@@ -40,6 +41,10 @@ class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   static GroupShading* shading(SoState* state);
   static bool capturing(SoState* state);
   static bool peeling(SoState* state);
+  // The plugin's shading program bound for the shapes below (a ShadingVariant), -1 for none:
+  // ScreenAlignedShapes draws text, images and markers by it.
+  static void setProgram(SoState* state, int variant);
+  static int program(SoState* state);
 
  protected:
   ~ShadowGroupElement() override;
@@ -49,6 +54,7 @@ class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   GroupShading* shading_ = nullptr;
   bool capturing_ = false;
   bool peeling_ = false;
+  int program_ = -1;
 };
 
 }  // namespace ivshadow

@@ -3,6 +3,7 @@
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/LightScopeElement.h"
+#include "nodes/ScreenAlignedShapes.h"
 #include "nodes/ShadowFields.h"
 #include "nodes/ShadowGroupElement.h"
 #include "nodes/TransparentShadowGroupImpl.h"
@@ -19,6 +20,7 @@ void SoTransparentShadowGroup::initClass() {
   ivshadow::ShadowGroupElement::initClass();
   // Its shading adds up GL lights by number: a light turned off must add nothing.
   ivshadow::registerLightScopeElement();
+  ivshadow::registerScreenAlignedShapes();
   // Registered without the "So" prefix, as Coin registers its own nodes: Coin writes that
   // name to files, and SoType::fromName finds "TransparentShadowGroup" from either spelling.
   PRIVATE_COMMON_INIT_CODE(SoTransparentShadowGroup, "TransparentShadowGroup",

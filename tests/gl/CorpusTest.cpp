@@ -88,13 +88,6 @@ constexpr Expectation kDefault{43.0, "no known difference between the GL path an
 // the model's figure; a model that falls under its floor renders differently from before.
 const std::map<std::string, Expectation>& expectations() {
   static const std::map<std::string, Expectation> table = {
-      // 32.8 dB: Text2 labels, which the group's shading program colours nearly black under
-      // RASTER, where the reference draws them as Coin does (docs/KNOWN_ISSUES.md).
-      {"simple/axis.iv", {31.5, "Text2 coloured by the group's program under RASTER"}},
-      // 31.3 dB, the same cause: its Text2 strings. (The reference matched before only because
-      // its GL overlay drew the group by GL's path too, the scope that should have made it a
-      // plain separator being the executable's copy.)
-      {"simple/text.iv", {30.0, "Text2 coloured by the group's program under RASTER"}},
       // 30.8 dB: the logo's strips lie in the case's faces: the two renderers pick different
       // surfaces where they coincide.
       {"sgi/indigo.iv", {29.5, "coplanar decal strips"}},
