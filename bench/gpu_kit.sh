@@ -150,6 +150,8 @@ for file in "$kit/$build_rel"/bin/* "$lib_dir"/*; do
   [ -z "$needs" ] || echo "$(basename "$(dirname "$file")")/$(basename "$file") $needs"
 done >"$kit/glibc_needs.txt"
 cp bench/gpu_kit_gl_vendor.py "$kit/gl_vendor.py"
+cp bench/gpu_kit_goals.py "$kit/goals.py"
+cp bench/performance_goals.py "$kit/performance_goals.py"
 echo "rewrote $source_dir to $padded in the test binaries" >&2
 
 mkdir -p "$dest"

@@ -6,7 +6,8 @@
 # the GL vendor, renderer and version, runs the GL tests (all of gl_tests, or with --quick a
 # subset across the shadow methods, transparency and the tracer), the benchmarks behind
 # docs/PERFORMANCE.md's goals and the demo render, and writes to OUTDIR summary.txt
-# ("N passed, M failed", the GL strings, the benchmark medians), tests.log, benchmarks.json,
+# ("N passed, M failed", the GL strings, the benchmark medians and the goals' table of
+# docs/PERFORMANCE.md where python3 is at hand), tests.log, benchmarks.json,
 # demo.png, glasses.png and gl_stats.json. Nothing here needs the network or a package
 # manager: it runs on a machine with glibc, libstdc++ and a GL driver alone. Exit status: 0
 # when every test passed, 1 when some failed, 3 (one line on stderr) when no GL context can be
@@ -132,8 +133,9 @@ if { [ -e /dev/nvidia0 ] || [ -e /dev/dri/renderD128 ]; } && stat_field gl_rende
   say "warning: a GPU is present but GL runs on llvmpipe"
 fi
 
-# The tests, one process per test suite so that a crash costs one suite, not the run; a test
-# that never reported OK or SKIPPED (its process crashed or hung) counts as failed.
+# The tests, one process per test as CTest runs them (gtest_discover_tests): some tests count
+# messages that Coin or the plugin say once per process. A test that never reported OK or
+# SKIPPED (its process crashed or hung past 5 minutes) counts as failed.
 if [ $quick = 1 ]; then
   filter='DeepShadow.*:Cases/DeepShadowAnalytic.*:ShadowVolumes.*:RayShadows.*'
   filter+=':Methods/ScreenShadows.*:MapFragmentListsGLTest.*:ImperfectShadowMapsGLTest.*'
@@ -146,39 +148,43 @@ else
 fi
 jobs=$(nproc 2>/dev/null || echo 2)
 [ "$jobs" -gt 8 ] && jobs=8
-suites_dir=$(mktemp -d)
+results=$(mktemp -d)
 "$bin/gl_tests" --gtest_list_tests --gtest_filter="$filter" |
-  awk '/^[^ ]/ && !/^Running main/ {suite = $1} /^  / {print suite}' | sort | uniq -c |
-  awk '{print $2, $1}' >"$suites_dir/suites"
-run_suite() {
-  local suite=$1 count=$2 bin=$3 dir=$4 name
-  name=$(echo "$suite" | tr '/.' '__')
-  timeout 600 "$bin/gl_tests" --gtest_filter="$suite*" --gtest_color=no >"$dir/$name.log" 2>&1
-  local ok skipped
-  ok=$(grep -c '^\[       OK \]' "$dir/$name.log")
-  skipped=$(grep -cE '^\[  SKIPPED \] .* \([0-9]+ ms\)$' "$dir/$name.log")
-  echo "$suite $count $ok $skipped" >"$dir/$name.count"
+  awk '/^[^ ]/ && !/^Running main/ {suite = $1} /^  / {print suite $1}' >"$results/tests"
+run_test() {
+  local test=$1 name
+  name=$(echo "$test" | tr '/.' '__')
+  timeout 300 "$KIT_BIN/gl_tests" --gtest_filter="$test" --gtest_color=no >"$KIT_RESULTS/$name.log" 2>&1
+  if grep -q '^\[       OK \]' "$KIT_RESULTS/$name.log"; then
+    echo passed >"$KIT_RESULTS/$name.result"
+  elif grep -qE '^\[  SKIPPED \] .* \([0-9]+ ms\)$' "$KIT_RESULTS/$name.log"; then
+    echo skipped >"$KIT_RESULTS/$name.result"
+  else
+    echo failed >"$KIT_RESULTS/$name.result"
+  fi
+  # Into the report as each test ends, so that a run cut off by the caller's time limit still
+  # brings back the tests it finished.
+  { flock 8 2>/dev/null
+    { echo "===== $test: $(cat "$KIT_RESULTS/$name.result")"; cat "$KIT_RESULTS/$name.log"; } >>"$KIT_LOG"
+  } 8>>"$KIT_LOG"
 }
-export -f run_suite
+export -f run_test
 tests_started=$SECONDS
-sed "s|\$| $bin $suites_dir|" "$suites_dir/suites" |
-  xargs -P "$jobs" -L 1 bash -c 'run_suite "$0" "$1" "$2" "$3"'
+KIT_BIN=$bin KIT_RESULTS=$results KIT_LOG=$log \
+  xargs -P "$jobs" -L 1 bash -c 'run_test "$0"' <"$results/tests"
 tests_seconds=$((SECONDS - tests_started))
 passed=0 failed=0 skipped=0
-failed_suites=()
-while read -r suite count; do
-  name=$(echo "$suite" | tr '/.' '__')
-  read -r _ _ ok skip <"$suites_dir/$name.count" 2>/dev/null || { ok=0; skip=0; }
-  passed=$((passed + ok))
-  skipped=$((skipped + skip))
-  bad=$((count - ok - skip))
-  failed=$((failed + bad))
-  [ "$bad" -gt 0 ] && failed_suites+=("$suite ($bad)")
-  { echo "===== $suite"; cat "$suites_dir/$name.log"; } >>"$log"
-done <"$suites_dir/suites"
-say "gl_tests ($(wc -l <"$suites_dir/suites") suites, $((passed + failed + skipped)) tests, ${tests_seconds} s, $jobs at a time): $passed passed, $failed failed, $skipped skipped"
-for suite in "${failed_suites[@]}"; do say "  failed in $suite"; done
-grep -h '^\[  FAILED  \] .* ([0-9]* ms)$' "$suites_dir"/*.log | sed 's/^/  /' | tee -a "$summary"
+failed_tests=()
+while read -r test; do
+  name=$(echo "$test" | tr '/.' '__')
+  case "$(cat "$results/$name.result" 2>/dev/null)" in
+    passed) passed=$((passed + 1)) ;;
+    skipped) skipped=$((skipped + 1)) ;;
+    *) failed=$((failed + 1)); failed_tests+=("$test") ;;
+  esac
+done <"$results/tests"
+say "gl_tests ($((passed + failed + skipped)) tests, ${tests_seconds} s, $jobs at a time): $passed passed, $failed failed, $skipped skipped"
+for test in "${failed_tests[@]}"; do say "  failed: $test"; done
 
 # The benchmarks behind docs/PERFORMANCE.md's goals (bench/performance_docs.sh's filters),
 # medians of 3 repetitions; --quick times one repetition each, enough to see them run.
@@ -202,6 +208,32 @@ awk '/"name":/ {gsub(/[",]/, "", $2); n = $2}
      /"real_time":/ {gsub(/,/, "", $2); t = $2}
      /"time_unit":/ {gsub(/[",]/, "", $2); if (n !~ /_(mean|stddev|cv)$/) printf "  %-60s %12.3f %s\n", n, t, $2}' \
   "$out/benchmarks.json" | tee -a "$summary"
+if command -v python3 >/dev/null; then
+  say "goals (docs/PERFORMANCE.md's table, less the sweeps, the viewer's drag and the cold start):"
+  python3 "$root/goals.py" "$out/benchmarks.json" 2>&1 | tee -a "$summary"
+fi
+
+# Whole frames of the CLI at both sizes the issue names, up to 1M triangles (full runs only):
+# medians of 10 frames, each scene's groups as the file has them (AUTO).
+if [ $quick = 0 ]; then
+  say "frames (ivshadow render --frames 10: frame and GPU ms, medians; what AUTO picked):"
+  for scene in coloured_shadows stress_100k stress_1m; do
+    for size in 800x600 1920x1080; do
+      stats=$(mktemp)
+      if "$bin/ivshadow" render "$root/iv_scenes/$scene.iv" -o "$stats.png" --size $size \
+           --frames 10 --stats "$stats" >"$stats.log" 2>&1; then
+        picked=$(grep -o 'uses [A-Z_]*' "$stats.log" | sort -u | tr '\n' ' ')
+        say "$(awk -v scene=$scene -v size=$size -v picked="$picked" \
+          '/"frame_ms_median"/ {gsub(/,/, "", $2); f = $2} /"gpu_ms_median"/ {gsub(/,/, "", $2); g = $2}
+           END {printf "  %-18s %-10s %9.2f ms %9.2f ms  %s", scene, size, f, g, picked}' "$stats")"
+      else
+        say "  $scene $size: the render failed (see tests.log)"
+      fi
+      cat "$stats.log" >>"$log"
+      rm -f "$stats" "$stats.png" "$stats.log"
+    done
+  done
+fi
 
 # The pictures: the demo as ./run demo renders it, and the glasses through exact transparency.
 "$bin/ivshadow" render "$root/iv_scenes/coloured_shadows.iv" -o "$out/demo.png" --size 800x600 \
@@ -209,5 +241,5 @@ awk '/"name":/ {gsub(/[",]/, "", $2); n = $2}
 "$bin/ivshadow" render "$root/iv_scenes/coloured_glasses.iv" -o "$out/glasses.png" \
   --size 800x600 >>"$log" 2>&1 || say "warning: the glasses render failed (see tests.log)"
 say "total ${SECONDS}s; $passed passed, $failed failed"
-rm -rf "$suites_dir" "$probe_err"
+rm -rf "$results" "$probe_err"
 [ "$failed" -eq 0 ]
