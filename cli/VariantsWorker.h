@@ -17,8 +17,9 @@ namespace ivshadow {
 // log file (created or emptied), as a render process's did, and stdout nowhere; between
 // requests stderr goes where the worker's went. After a failure other than bad input the
 // worker answers with "last": true and exits: a render that failed midway may have left the
-// GL context or Coin in any state, and the next variant must not inherit it. At the end of
-// stdin it exits 0.
+// GL context or Coin in any state, and the next variant must not inherit it. After a render
+// that logged anything but Coin's infos, the next render reads its scene afresh
+// (RenderSession::forgetScene). At the end of stdin it exits 0.
 int runVariantsWorker();
 
 // The line that asks a worker for the render `options` describe, its stderr to `logPath`.
