@@ -21,6 +21,10 @@ GL_VENDOR = 0x1F00
 
 lib = sys.argv[1]
 want = sys.argv[2] if len(sys.argv) > 2 else ""
+# --stats names a GPU's device after the platform ("device /dev/dri/card0 (CUDA device 0)");
+# Mesa's CPU device is "software device": both are the device platform.
+if "device" in want:
+    want = "device"
 egl = ctypes.CDLL(lib + "/libEGL.so.1")
 gl = ctypes.CDLL(lib + "/libOpenGL.so.0")
 egl.eglGetProcAddress.restype = ctypes.c_void_p

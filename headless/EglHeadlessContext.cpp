@@ -1,7 +1,10 @@
 #include "headless/EglHeadlessContext.h"
 
+#include <Inventor/SoDB.h>
+#include <Inventor/errors/SoDebugError.h>
 #include <epoxy/egl.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -58,6 +61,22 @@ struct Candidate {
   EGLDisplay display;
 };
 
+// A hardware device as --stats names it: its DRM node where the driver tells it
+// (EGL_EXT_device_drm) and its CUDA ordinal on NVIDIA (EGL_NV_device_cuda), so that a report
+// from a machine with several GPUs says which one drew.
+std::string deviceName(EGLDeviceEXT device, const char* extensions) {
+  std::string name = "device";
+  if (hasExtension(extensions, "EGL_EXT_device_drm")) {
+    const char* file = eglQueryDeviceStringEXT(device, EGL_DRM_DEVICE_FILE_EXT);
+    if (file != nullptr && *file != '\0') name += std::string(" ") + file;
+  }
+  EGLAttrib ordinal = -1;
+  if (hasExtension(extensions, "EGL_NV_device_cuda") &&
+      eglQueryDeviceAttribEXT(device, EGL_CUDA_DEVICE_NV, &ordinal))
+    name += " (CUDA device " + std::to_string(ordinal) + ")";
+  return name;
+}
+
 // EGL devices, hardware ones first; Mesa marks its CPU device with EGL_MESA_device_software.
 std::vector<Candidate> deviceDisplays(bool software) {
   std::vector<Candidate> out;
@@ -70,7 +89,7 @@ std::vector<Candidate> deviceDisplays(bool software) {
     if (hasExtension(extensions, "EGL_MESA_device_software") != software) continue;
     EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
     if (display != EGL_NO_DISPLAY)
-      out.push_back({software ? "software device" : "device", display});
+      out.push_back({software ? "software device" : deviceName(devices[i], extensions), display});
   }
   return out;
 }
@@ -166,6 +185,16 @@ std::unique_ptr<EglHeadlessContext> EglHeadlessContext::create(std::string& erro
         result->display_ = candidate.display;
         result->context_ = context;
         result->platform_ = candidate.platform;
+        // A GPU that is there but cannot make a context must not pass unnoticed: the
+        // rendering goes on, on the software platform that could.
+        if (!reasons.empty() && candidates.front().platform.rfind("device", 0) == 0) {
+          const std::string warning = "the GPU's EGL device could not be used (" + reasons +
+                                      "); rendering on the " + candidate.platform + " platform";
+          if (SoDB::isInitialized())
+            SoDebugError::postWarning("ivshadow", "%s", warning.c_str());
+          else
+            std::fprintf(stderr, "ivshadow: warning: %s\n", warning.c_str());
+        }
         return result;
       }
       why = failure("eglMakeCurrent without a surface");

@@ -21,7 +21,8 @@ class EglHeadlessContext {
   bool makeCurrent();
   // Whether this context is current on the calling thread.
   bool isCurrent() const;
-  // Which EGL platform the context lives on, e.g. "surfaceless" or "device".
+  // Which EGL platform the context lives on, e.g. "surfaceless", "software device" or, for a
+  // GPU, "device" followed by its DRM node and CUDA ordinal where the driver names them.
   const std::string& platform() const { return platform_; }
 
  private:
