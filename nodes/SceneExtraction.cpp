@@ -252,6 +252,41 @@ glm::vec2 sphereMap(const SbVec3f& eye, SbVec3f normal) {
   return glm::vec2(r[0] / m + 0.5f, r[1] / m + 0.5f);
 }
 
+// A triangle's texture coordinates at its vertices, as GL takes them: the shape's, or GL's
+// sphere map where a TextureCoordinateEnvironment generates them, through the texture matrix.
+class TextureCoordinates {
+ public:
+  TextureCoordinates(SoCallbackAction* action, Extraction& data)
+      : textureMatrix_(action->getTextureMatrix()),
+        sphereMapped_(TextureCoordinateSource::isEnvironment(action->getState(), data)) {
+    if (!sphereMapped_) return;
+    data.texCoordsFollowView = true;
+    modelView_ = action->getModelMatrix() * data.viewing;
+    eyeNormals_ = modelView_.inverse().transpose();
+  }
+
+  glm::vec2 at(const SoPrimitiveVertex& v) const {
+    SbVec4f generated = v.getTextureCoords();
+    if (sphereMapped_) {
+      SbVec3f eye, eyeNormal;
+      modelView_.multVecMatrix(v.getPoint(), eye);
+      eyeNormals_.multDirMatrix(v.getNormal(), eyeNormal);
+      const glm::vec2 st = sphereMap(eye, eyeNormal);
+      generated = SbVec4f(st.x, st.y, 0.0f, 1.0f);
+    }
+    SbVec4f tc;
+    textureMatrix_.multVecMatrix(generated, tc);
+    const float w = tc[3] != 0.0f ? tc[3] : 1.0f;
+    return glm::vec2(tc[0] / w, tc[1] / w);
+  }
+
+ private:
+  const SbMatrix& textureMatrix_;
+  bool sphereMapped_;
+  SbMatrix modelView_;
+  SbMatrix eyeNormals_;
+};
+
 void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
               const SoPrimitiveVertex* v2, const SoPrimitiveVertex* v3) {
   auto& data = *static_cast<Extraction*>(user);
@@ -261,11 +296,7 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
   data.haveCamera = true;
   const SbMatrix& model = action->getModelMatrix();
   const SbMatrix normalMatrix = model.inverse().transpose();
-  const SbMatrix& textureMatrix = action->getTextureMatrix();
-  const bool sphereMapped = TextureCoordinateSource::isEnvironment(state, data);
-  const SbMatrix modelView = model * data.viewing;
-  const SbMatrix eyeNormalMatrix = modelView.inverse().transpose();
-  if (sphereMapped) data.texCoordsFollowView = true;
+  const TextureCoordinates texCoords(action, data);
 
   Triangle out;
   out.shape = data.shape;
@@ -339,18 +370,7 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
     action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency,
                         v->getMaterialIndex());
     out.colour[i] = drawnColour(diffuse, transparency);
-    SbVec4f tc;
-    SbVec4f generated = v->getTextureCoords();
-    if (sphereMapped) {
-      SbVec3f eye, eyeNormal;
-      modelView.multVecMatrix(v->getPoint(), eye);
-      eyeNormalMatrix.multDirMatrix(v->getNormal(), eyeNormal);
-      const glm::vec2 st = sphereMap(eye, eyeNormal);
-      generated = SbVec4f(st.x, st.y, 0.0f, 1.0f);
-    }
-    textureMatrix.multVecMatrix(generated, tc);
-    const float w = tc[3] != 0.0f ? tc[3] : 1.0f;
-    out.texCoord[i] = glm::vec2(tc[0] / w, tc[1] / w);
+    out.texCoord[i] = texCoords.at(*v);
     data.positions.push_back(world[i]);
   }
   out.geometricNormal = glm::cross(world[1] - world[0], world[2] - world[0]);
