@@ -515,6 +515,25 @@ bool SceneTracer::viewDependent() const {
   return data_->extraction.fogFollowsView || data_->extraction.texCoordsFollowView;
 }
 
+namespace {
+
+// Whether `row` asks the shadow rays `kept` asked, of the same casters: the answers are then
+// the same (a caster that moved was read again, and its surfaces are not reused).
+bool sameQuestions(const SurfacesMet::Row& kept, const RowShading& row) {
+  if (kept.queries.size() != row.queries.size() || kept.queryCasters != row.queryCasters)
+    return false;
+  for (std::size_t i = 0; i < row.queries.size(); ++i) {
+    const CasterScene::Query& a = kept.queries[i];
+    const CasterScene::Query& b = row.queries[i];
+    if (a.from != b.from || a.normal != b.normal || a.to != b.to || a.model != b.model ||
+        a.directional != b.directional)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 // One worker's working memory: kept from trace to trace, as a frame's rows otherwise grew their
 // vectors from nothing again, and on cache lines of its own, as neighbouring workers wrote
 // into the same lines (the vectors' ends).
@@ -638,7 +657,17 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
             }
           }
         }
-        shades.traceShadows();
+        if (reuse && sameQuestions(*keptRow, shades)) {
+          shades.answers = keptRow->answers;
+          counts.shadow -= shades.queries.size();
+        } else {
+          shades.traceShadows();
+          if (keptRow != nullptr) {
+            keptRow->queries = shades.queries;
+            keptRow->queryCasters = shades.queryCasters;
+            keptRow->answers = shades.answers;
+          }
+        }
         for (int x = 0; x < options.width; ++x) {
           const PixelResult p = tracer.resolve(shades, std::size_t(x));
           float* rgba = &out.rgba[(row + std::size_t(x)) * 4];

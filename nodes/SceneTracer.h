@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ivshadow/Export.h"
+#include "raytrace/CasterScene.h"
 #include "scene/ShadowTypes.h"
 
 #include <Inventor/SbMatrix.h>
@@ -34,6 +35,12 @@ struct SurfacesMet {
     std::vector<Hit> hits;
     std::vector<std::uint32_t> ends;  // where each pixel's hits end in `hits`
     std::vector<float> depth;         // each pixel's window depth
+    // The shadow rays its surfaces asked for when last shaded (of which casters), and their
+    // answers: a trace that asks the same of the same casters (a light's intensity or colour
+    // changed, not where it is) takes the answers again instead of tracing the rays.
+    std::vector<CasterScene::Query> queries;
+    std::vector<const CasterScene*> queryCasters;
+    std::vector<glm::vec3> answers;
   };
   std::vector<Row> rows;
 };

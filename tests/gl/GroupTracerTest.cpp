@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <string>
@@ -239,6 +240,36 @@ TEST(TracedGroup, ALightMovedAfterACamerasMotionTracesTheCameraRaysAgain) {
   r.expectAnalytic(scene, "the light back after the motion");
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerCameraRays, 0u)
       << "the frame after the motion kept its surfaces";
+}
+
+// A light whose intensity changes, not its place, asks the same shadow rays of the same
+// casters: their answers are taken again, none is traced, and the picture is the one a fresh
+// read of the scene at that intensity draws. A light moved after it traces its rays.
+TEST(TracedGroup, ALightsIntensityAloneTracesNoShadowRayAgain) {
+  ShadowScene scene = traced(ShadowScene{});
+  scene.filters = {kRedGlass, kGreenGlass};
+  Rendering r(scene);
+  ASSERT_TRUE(r.renderer && r.lamp);
+  const SbVec3f place = r.lamp->location.getValue();
+  r.frame();
+  r.lamp->location = place + SbVec3f(0.05f, 0.0f, 0.0f);
+  r.frame();  // the first change keeps the surfaces and their shadow rays' answers
+  r.lamp->location = place;
+  ASSERT_GT(r.frame().raysTraced, 0u);
+  r.lamp->intensity = 0.6f;
+  const DeepShadowStatistics dimmed = r.frame();
+  EXPECT_EQ(dimmed.tracerFrames, 4);
+  EXPECT_EQ(dimmed.raysTraced, 0u) << "the answers were taken again";
+  const Image kept = r.renderer->read();
+  Rendering fresh(scene);
+  fresh.lamp->intensity = 0.6f;
+  EXPECT_GT(fresh.frame().raysTraced, 0u);
+  const Image expected = fresh.renderer->read();
+  EXPECT_EQ(
+      std::memcmp(kept.data(), expected.data(), std::size_t(kept.width()) * kept.height() * 4), 0)
+      << "the same answers give the same picture";
+  r.lamp->location = place + SbVec3f(0.0f, 0.05f, 0.0f);
+  EXPECT_GT(r.frame().raysTraced, 0u) << "a moved light asks other rays";
 }
 
 // After a light moved the picture is composited from the surfaces kept, with their depth:
