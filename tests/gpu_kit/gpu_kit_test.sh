@@ -12,7 +12,13 @@ here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
 # The fastest compression: this test checks the packing, not the archive's best size.
-GPU_KIT_XZ_LEVEL=1 BUILD_DIR=$build_dir "$source_dir/bench/gpu_kit.sh" pack "$work/kit" --no-build
+# Exit status 4: a checkout whose path is too short for the rewrite (under 6 characters); the
+# test is skipped there (77, SKIP_RETURN_CODE) rather than failed.
+status=0
+GPU_KIT_XZ_LEVEL=1 BUILD_DIR=$build_dir "$source_dir/bench/gpu_kit.sh" pack "$work/kit" --no-build ||
+  status=$?
+[ "$status" -eq 4 ] && exit 77
+[ "$status" -eq 0 ]
 ls "$work/kit"
 [ "$(ls "$work/kit" | sort | tr '\n' ' ')" = "ivshadow-gpu-kit.tar.xz run.sh " ]
 status=0
