@@ -39,12 +39,14 @@ fail() {
   exit 1
 }
 
-command -v patchelf >/dev/null || fail "patchelf is missing (apt-get install -y patchelf; ./run installs it)"
+command -v patchelf >/dev/null ||
+  fail "patchelf is missing (apt-get install -y patchelf; ./run installs it)"
 command -v python3 >/dev/null || fail "python3 is missing"
 cache=$build/CMakeCache.txt
 [ -f "$cache" ] || fail "no build in $build: run ./run build first"
 build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$cache")
-[ "$build_type" = Release ] || fail "$build is a '$build_type' build; the kit's timings need Release"
+[ "$build_type" = Release ] ||
+  fail "$build is a '$build_type' build; the kit's timings need Release"
 source_dir=$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$cache")
 build_abs=$(cd "$build" && pwd -P)
 case "$build_abs/" in
@@ -57,7 +59,8 @@ if [ ${#source_dir} -lt ${#kit_link} ]; then
   kit_link=${kit_link:0:${#source_dir}}
 fi
 if [ ${#source_dir} -lt 6 ]; then
-  echo "gpu_kit.sh: the source folder $source_dir is shorter than /tmp/i: its compiled-in paths cannot be rewritten" >&2
+  echo "gpu_kit.sh: the source folder $source_dir is shorter than /tmp/i:" \
+    "its compiled-in paths cannot be rewritten" >&2
   exit 4
 fi
 
@@ -85,7 +88,8 @@ cp -r tests/variants tests/loader "$kit/tests/"
 # Left on the machine: glibc, the C++ runtime, and the driver. Everything else the binaries
 # load comes along, also the libraries loaded by name at run time rather than linked:
 # libglvnd's EGL and GL (libepoxy and Coin open them), TBB's allocator (Embree opens it).
-system_only='^(linux-vdso|ld-linux|libc|libm|libmvec|libdl|libpthread|librt|libresolv|libutil|libanl|libnsl|libstdc\+\+|libgcc_s)\.so'
+system_only='^(linux-vdso|ld-linux|libc|libm|libmvec|libdl|libpthread|librt|libresolv|libutil'
+system_only+='|libanl|libnsl|libstdc\+\+|libgcc_s)\.so'
 driver='^(libEGL_|libGLX_|libgallium|libglapi|libdrm|libgbm|libLLVM|libnvidia|libcuda)'
 loaded_by_name=(libEGL.so.1 libGL.so.1 libOpenGL.so.0 libGLX.so.0 libGLdispatch.so.0
                 libtbbmalloc.so.2)

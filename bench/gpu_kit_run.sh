@@ -62,8 +62,10 @@ if [ -n "$have_glibc" ]; then
     [ "$newest" = "$have_glibc" ] && continue
     case "$file" in
       lib/*) mkdir -p "$root/too_new" && mv "$lib/${file#lib/}" "$root/too_new/" &&
-        echo "run.sh: warning: ${file#lib/} needs $needs, this machine has glibc $have_glibc: using the machine's copy" >&2 ;;
-      *) echo "run.sh: $file needs $needs, this machine has glibc $have_glibc: the kit cannot run here" >&2
+        echo "run.sh: warning: ${file#lib/} needs $needs, this machine has glibc" \
+          "$have_glibc: using the machine's copy" >&2 ;;
+      *) echo "run.sh: $file needs $needs, this machine has glibc $have_glibc:" \
+           "the kit cannot run here" >&2
         exit 2 ;;
     esac
   done <"$root/glibc_needs.txt"
@@ -87,7 +89,8 @@ if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}${__EGL_VENDOR_LIBRARY_DIRS:-}" ]; t
   dirs=()
   for nvidia in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do
     # Named by its path where the loader's cache does not know it.
-    if [ -f "$nvidia/libEGL_nvidia.so.0" ] && ! ldconfig -p 2>/dev/null | grep -q libEGL_nvidia.so.0; then
+    if [ -f "$nvidia/libEGL_nvidia.so.0" ] &&
+       ! ldconfig -p 2>/dev/null | grep -q libEGL_nvidia.so.0; then
       mkdir -p "$root/egl_vendor.d"
       printf '{"file_format_version": "1.0.0", "ICD": {"library_path": "%s"}}\n' \
         "$nvidia/libEGL_nvidia.so.0" >"$root/egl_vendor.d/10_nvidia.json"
@@ -99,7 +102,10 @@ if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}${__EGL_VENDOR_LIBRARY_DIRS:-}" ]; t
              /usr/share/glvnd/egl_vendor.d /usr/local/share/glvnd/egl_vendor.d; do
     [ -d "$dir" ] && dirs+=("$dir")
   done
-  [ ${#dirs[@]} -gt 0 ] || { echo "run.sh: no EGL vendor library: no glvnd egl_vendor.d folder on this machine" >&2; exit 3; }
+  if [ ${#dirs[@]} -eq 0 ]; then
+    echo "run.sh: no EGL vendor library: no glvnd egl_vendor.d folder on this machine" >&2
+    exit 3
+  fi
   __EGL_VENDOR_LIBRARY_DIRS=$(IFS=:; echo "${dirs[*]}")
   export __EGL_VENDOR_LIBRARY_DIRS
 fi
@@ -122,14 +128,19 @@ rm -f "$out/probe.png"
 stat_field() { sed -n "s/^ *\"$1\": \"\(.*\)\",\{0,1\}$/\1/p" "$out/gl_stats.json" | head -1; }
 vendor=unknown
 if command -v python3 >/dev/null; then
-  vendor=$(python3 "$root/gl_vendor.py" "$lib" "$(stat_field egl_platform)" 2>/dev/null) || vendor=unknown
+  vendor=$(python3 "$root/gl_vendor.py" "$lib" "$(stat_field egl_platform)" 2>/dev/null) ||
+    vendor=unknown
 fi
-say "ivshadow GPU kit $commit (packed $packed), $(if [ $quick = 1 ]; then echo quick; else echo full; fi) run on $(uname -n), $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+mode=full
+[ $quick = 1 ] && mode=quick
+say "ivshadow GPU kit $commit (packed $packed), $mode run on $(uname -n)," \
+  "$(date -u +%Y-%m-%dT%H:%M:%SZ)"
 say "GL vendor: $vendor"
 say "GL renderer: $(stat_field gl_renderer)"
 say "GL version: $(stat_field gl_version)"
 say "EGL platform: $(stat_field egl_platform)"
-if { [ -e /dev/nvidia0 ] || [ -e /dev/dri/renderD128 ]; } && stat_field gl_renderer | grep -q llvmpipe; then
+if { [ -e /dev/nvidia0 ] || [ -e /dev/dri/renderD128 ]; } &&
+   stat_field gl_renderer | grep -q llvmpipe; then
   say "warning: a GPU is present but GL runs on llvmpipe"
 fi
 
@@ -154,7 +165,8 @@ results=$(mktemp -d)
 run_test() {
   local test=$1 name
   name=$(echo "$test" | tr '/.' '__')
-  timeout 300 "$KIT_BIN/gl_tests" --gtest_filter="$test" --gtest_color=no >"$KIT_RESULTS/$name.log" 2>&1
+  timeout 300 "$KIT_BIN/gl_tests" --gtest_filter="$test" --gtest_color=no \
+    >"$KIT_RESULTS/$name.log" 2>&1
   if grep -q '^\[       OK \]' "$KIT_RESULTS/$name.log"; then
     echo passed >"$KIT_RESULTS/$name.result"
   elif grep -qE '^\[  SKIPPED \] .* \([0-9]+ ms\)$' "$KIT_RESULTS/$name.log"; then
@@ -165,7 +177,8 @@ run_test() {
   # Into the report as each test ends, so that a run cut off by the caller's time limit still
   # brings back the tests it finished.
   { flock 8 2>/dev/null
-    { echo "===== $test: $(cat "$KIT_RESULTS/$name.result")"; cat "$KIT_RESULTS/$name.log"; } >>"$KIT_LOG"
+    echo "===== $test: $(cat "$KIT_RESULTS/$name.result")" >>"$KIT_LOG"
+    cat "$KIT_RESULTS/$name.log" >>"$KIT_LOG"
   } 8>>"$KIT_LOG"
 }
 export -f run_test
@@ -183,7 +196,8 @@ while read -r test; do
     *) failed=$((failed + 1)); failed_tests+=("$test") ;;
   esac
 done <"$results/tests"
-say "gl_tests ($((passed + failed + skipped)) tests, ${tests_seconds} s, $jobs at a time): $passed passed, $failed failed, $skipped skipped"
+say "gl_tests ($((passed + failed + skipped)) tests, ${tests_seconds} s, $jobs at a time):" \
+  "$passed passed, $failed failed, $skipped skipped"
 for test in "${failed_tests[@]}"; do say "  failed: $test"; done
 
 # The benchmarks behind docs/PERFORMANCE.md's goals (bench/performance_docs.sh's filters),
@@ -203,10 +217,13 @@ repetitions=3
   done <"$root/bench_filters.txt"
   echo "}"
 } >"$out/benchmarks.json"
-say "benchmarks ($((SECONDS - bench_started)) s; real time, $(if [ $repetitions = 1 ]; then echo "one repetition"; else echo "median of $repetitions"; fi)):"
+how="median of $repetitions"
+[ $repetitions = 1 ] && how="one repetition"
+say "benchmarks ($((SECONDS - bench_started)) s; real time, $how):"
 awk '/"name":/ {gsub(/[",]/, "", $2); n = $2}
      /"real_time":/ {gsub(/,/, "", $2); t = $2}
-     /"time_unit":/ {gsub(/[",]/, "", $2); if (n !~ /_(mean|stddev|cv)$/) printf "  %-60s %12.3f %s\n", n, t, $2}' \
+     /"time_unit":/ {gsub(/[",]/, "", $2)
+                     if (n !~ /_(mean|stddev|cv)$/) printf "  %-60s %12.3f %s\n", n, t, $2}' \
   "$out/benchmarks.json" | tee -a "$summary"
 if command -v python3 >/dev/null; then
   say "goals (docs/PERFORMANCE.md's table, less the sweeps, the viewer's drag and the cold start):"
@@ -230,7 +247,8 @@ if [ $quick = 0 ]; then
           list && first == "" {first = $1; sub(/,/, "", first)}
           /"frame_ms_median"/ {gsub(/,/, "", $2); f = $2}
           /"gpu_ms_median"/ {gsub(/,/, "", $2); g = $2}
-          END {printf "  %-18s %-10s %9.2f ms %9.2f ms %9.2f ms  %s", scene, size, first, f, g, picked}' "$stats")"
+          END {printf "  %-18s %-10s %9.2f ms %9.2f ms %9.2f ms  %s",
+                      scene, size, first, f, g, picked}' "$stats")"
       else
         say "  $scene $size: the render failed (see tests.log)"
       fi
