@@ -226,11 +226,14 @@ SoCallbackAction::Response environmentFunction(void* user, SoCallbackAction*, co
 }
 
 // Which node set the texture coordinates of unit 0 and how: Coin keeps it in the element's
-// unit data, which only a derived class reads.
+// unit data, which only a derived class may name. The element is Coin's, not this class: it is
+// read through a pointer to the base's member, which the derived class forms, not through a
+// cast of the element.
 struct TextureCoordinateSource : SoMultiTextureCoordinateElement {
   static bool isEnvironment(SoState* state, const Extraction& data) {
-    const auto* element = static_cast<const TextureCoordinateSource*>(getInstance(state));
-    const UnitData& unit = element->getUnitData(0);
+    using UnitOf = const UnitData& (SoMultiTextureCoordinateElement::*)(int) const;
+    const UnitOf unitOf = &TextureCoordinateSource::getUnitData;
+    const UnitData& unit = (getInstance(state)->*unitOf)(0);
     return unit.whatKind == FUNCTION &&
            std::find(data.environmentFunctions.begin(), data.environmentFunctions.end(),
                      unit.nodeid) != data.environmentFunctions.end();
