@@ -83,6 +83,14 @@ fi
 ln -sfn "$root" "$link" || die "cannot link $link to $root"
 mkdir -p "$root/$build/test-output"
 
+# The loader's cache, also where /sbin is not on the PATH (env -i, the device's shell).
+ld_cache() {
+  local tool
+  for tool in ldconfig /sbin/ldconfig /usr/sbin/ldconfig; do
+    command -v "$tool" >/dev/null && { "$tool" -p 2>/dev/null; return; }
+  done
+}
+
 # libglvnd finds the vendor's EGL library through JSON files; NVIDIA's images keep theirs
 # under /usr/local/nvidia, where Debian's libglvnd does not look.
 if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}${__EGL_VENDOR_LIBRARY_DIRS:-}" ]; then
@@ -90,7 +98,7 @@ if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}${__EGL_VENDOR_LIBRARY_DIRS:-}" ]; t
   for nvidia in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do
     # Named by its path where the loader's cache does not know it.
     if [ -f "$nvidia/libEGL_nvidia.so.0" ] &&
-       ! ldconfig -p 2>/dev/null | grep -q libEGL_nvidia.so.0; then
+       ! ld_cache | grep libEGL_nvidia.so.0 >/dev/null; then
       mkdir -p "$root/egl_vendor.d"
       printf '{"file_format_version": "1.0.0", "ICD": {"library_path": "%s"}}\n' \
         "$nvidia/libEGL_nvidia.so.0" >"$root/egl_vendor.d/10_nvidia.json"
@@ -121,7 +129,26 @@ say() { echo "$*" | tee -a "$summary"; }
 probe_err=$(mktemp)
 if ! "$bin/ivshadow" render "$root/iv_scenes/lit_plane.iv" -o "$out/probe.png" --size 16x16 \
      --stats "$out/gl_stats.json" >/dev/null 2>"$probe_err"; then
-  echo "run.sh: no GL context through EGL on this machine: $(head -1 "$probe_err")" >&2
+  line="run.sh: no GL context through EGL on this machine: $(head -1 "$probe_err")"
+  echo "$line" >&2
+  # What the one call on a lent machine brings back must say why: the vendor files libglvnd
+  # read, the libraries they name and whether the loader knows them, the GPUs the machine has.
+  {
+    echo "$line"
+    echo "__EGL_VENDOR_LIBRARY_DIRS=${__EGL_VENDOR_LIBRARY_DIRS:-}"
+    echo "__EGL_VENDOR_LIBRARY_FILENAMES=${__EGL_VENDOR_LIBRARY_FILENAMES:-}"
+    for dir in ${__EGL_VENDOR_LIBRARY_DIRS//:/ }; do
+      for json in "$dir"/*.json; do
+        [ -f "$json" ] || continue
+        library=$(sed -n 's/.*"library_path" *: *"\([^"]*\)".*/\1/p' "$json")
+        echo "$json: $library: $(ld_cache | grep -F "${library##*/}" | head -1 |
+          sed 's/.*=> //')"
+      done
+    done
+    ls -l /dev/nvidia* /dev/dri 2>&1
+    command -v nvidia-smi >/dev/null && nvidia-smi -L 2>&1
+    cat "$probe_err"
+  } >"$summary"
   exit 3
 fi
 rm -f "$out/probe.png"
