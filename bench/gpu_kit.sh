@@ -14,6 +14,8 @@
 # the same length (padded with slashes, which the kernel reads as one), and run.sh points
 # that path at wherever the kit was unpacked.
 set -euo pipefail
+# DIR as the caller named it, from where it called (BUILD_DIR, as for ./run, from the root).
+caller=$PWD
 cd "$(dirname "$0")/.."
 export LC_ALL=C
 
@@ -22,7 +24,10 @@ usage() {
   exit 2
 }
 [ "${1:-}" = pack ] && [ -n "${2:-}" ] || usage
-dest=$2
+case "$2" in
+  /*) dest=$2 ;;
+  *) dest=$caller/$2 ;;
+esac
 build_first=1
 [ "${3:-}" = --no-build ] && build_first=0
 [ -z "${3:-}" ] || [ "$3" = --no-build ] || usage
@@ -94,8 +99,10 @@ driver='^(libEGL_|libGLX_|libgallium|libglapi|libdrm|libgbm|libLLVM|libnvidia|li
 loaded_by_name=(libEGL.so.1 libGL.so.1 libOpenGL.so.0 libGLX.so.0 libGLdispatch.so.0
                 libtbbmalloc.so.2)
 lib_dir=$kit/$build_rel/lib
+# The loader's cache, also where /sbin is not on the PATH.
+ldconfig=$(command -v ldconfig || echo /sbin/ldconfig)
 for name in "${loaded_by_name[@]}"; do
-  path=$(ldconfig -p | awk -v n="$name" '$1 == n && /x86-64/ && !found {print $NF; found = 1}')
+  path=$("$ldconfig" -p | awk -v n="$name" '$1 == n && /x86-64/ && !found {print $NF; found = 1}')
   [ -n "$path" ] || fail "$name is not installed here"
   cp -L "$path" "$lib_dir/$name"
 done
