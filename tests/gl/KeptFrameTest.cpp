@@ -2,8 +2,8 @@
 // the picture left is put back by one blit instead of compositing the picture again, and it is
 // the composite's picture to the bit, colour and depth; a change of what GL drew before the
 // group composites the picture again, without tracing it.
-#include "headless/OffscreenRenderer.h"
 #include "ivshadow/DeepShadowStatistics.h"
+#include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/GlCallCounter.h"
 #include "tests/gl/ShadowScene.h"
 
@@ -33,7 +33,7 @@ ShadowScene tracedGlass() {
 }
 
 // The renderer's framebuffer's depth, as GL converts it to floats.
-std::vector<float> depthOf(OffscreenRenderer& renderer) {
+std::vector<float> depthOf(CheckedRenderer& renderer) {
   renderer.read();  // binds its framebuffer for reading
   std::vector<float> depth(std::size_t(renderer.width()) * std::size_t(renderer.height()));
   glReadPixels(0, 0, renderer.width(), renderer.height(), GL_DEPTH_COMPONENT, GL_FLOAT,
@@ -51,7 +51,7 @@ bool samePixels(const Image& a, const Image& b) {
 Image firstFrame(const ShadowScene& scene, const SbColor& background) {
   SoSeparator* root = readIv(scene.text());
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   EXPECT_TRUE(renderer) << error;
   Image image;
   if (renderer) {
@@ -67,7 +67,7 @@ TEST(KeptFrame, AStillFrameIsPutBackByABlitAndIsTheCompositesPicture) {
   const ShadowScene scene = tracedGlass();
   SoSeparator* root = readIv(scene.text());
   std::string error;
-  auto renderer = OffscreenRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
   renderer->render(root);
   const Image first = renderer->read();
