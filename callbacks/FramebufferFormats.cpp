@@ -89,37 +89,17 @@ PixelTransfer depthTransfer(unsigned int format) {
   }
 }
 
-PixelTransfer preferredColourTransfer() {
-  GLint format = GL_NONE, type = GL_NONE;
-  glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT, &format);
-  glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE, &type);
-  int components = 0;
+PixelTransfer colourTransfer(unsigned int format) {
   switch (format) {
-    case GL_RGBA:
-    case GL_BGRA:
-      components = 4;
-      break;
-    case GL_RGB:
-    case GL_BGR:
-      components = 3;
-      break;
-    default:
-      return {};
-  }
-  switch (type) {
-    case GL_UNSIGNED_BYTE:
-      return {GLenum(format), GLenum(type), components};
-    case GL_UNSIGNED_SHORT:
-    case GL_HALF_FLOAT:
-      return {GLenum(format), GLenum(type), 2 * components};
-    case GL_FLOAT:
-      return {GLenum(format), GLenum(type), 4 * components};
-    case GL_UNSIGNED_INT_8_8_8_8:
-    case GL_UNSIGNED_INT_8_8_8_8_REV:
-    case GL_UNSIGNED_INT_2_10_10_10_REV:
-      return components == 4 ? PixelTransfer{GLenum(format), GLenum(type), 4} : PixelTransfer{};
-    case GL_UNSIGNED_SHORT_5_6_5:
-      return components == 3 ? PixelTransfer{GLenum(format), GLenum(type), 2} : PixelTransfer{};
+    case GL_RGBA8:
+      return {GL_RGBA, GL_UNSIGNED_BYTE, 4};
+    case GL_RGB8:
+      return {GL_RGB, GL_UNSIGNED_BYTE, 3};
+    case GL_RGB10_A2:
+    case GL_RGB10:
+      return {GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV, 4};
+    case GL_RGB565:
+      return {GL_RGB, GL_UNSIGNED_SHORT_5_6_5, 2};
     default:
       return {};
   }

@@ -21,8 +21,8 @@ struct PixelTransfer {
   int bytes = 0;
 };
 IVSHADOW_INTERNAL PixelTransfer depthTransfer(unsigned int depthFormat);
-// The colour read GL prefers for the framebuffer bound for reading
-// (GL_IMPLEMENTATION_COLOR_READ_FORMAT and _TYPE), when this knows its pixel size.
-IVSHADOW_INTERNAL PixelTransfer preferredColourTransfer();
+// How a colour buffer of `colourFormat` is read with every bit it stores (a driver's preferred
+// read of a 10-bit or 565 buffer may be 8 bits a channel, which would lose some).
+IVSHADOW_INTERNAL PixelTransfer colourTransfer(unsigned int colourFormat);
 
 }  // namespace ivshadow

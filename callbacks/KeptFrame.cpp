@@ -24,17 +24,23 @@ bool hasStencil(GLenum depthFormat) {
 }
 
 // The colour buffer the framebuffer bound for drawing reads, when it draws into that one
-// buffer alone with every channel writable (then it is what the picture changed, and a blit
+// buffer alone (every other draw buffer GL_NONE: a blit writes them all) with every channel
+// writable (then it is what the picture changed, and a blit
 // into it changes nothing a draw would not); else GL_NONE. The framebuffer must be bound for
 // reading too.
 GLenum drawnAndRead() {
-  GLint readBuffer = GL_NONE, first = GL_NONE, second = GL_NONE;
+  GLint readBuffer = GL_NONE, first = GL_NONE, buffers = 1;
   glGetIntegerv(GL_READ_BUFFER, &readBuffer);
   glGetIntegerv(GL_DRAW_BUFFER0, &first);
-  glGetIntegerv(GL_DRAW_BUFFER1, &second);
+  glGetIntegerv(GL_MAX_DRAW_BUFFERS, &buffers);
+  bool one = first == readBuffer;
+  for (GLint i = 1; i < buffers && one; ++i) {
+    GLint other = GL_NONE;
+    glGetIntegerv(GLenum(GL_DRAW_BUFFER0 + i), &other);
+    one = other == GL_NONE;
+  }
   GLboolean mask[4] = {GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE};
   glGetBooleanv(GL_COLOR_WRITEMASK, mask);
-  const bool one = first == readBuffer && second == GL_NONE;
   return one && mask[0] && mask[1] && mask[2] && mask[3] ? GLenum(readBuffer) : GLenum(GL_NONE);
 }
 
@@ -55,7 +61,7 @@ bool KeptFrame::readBefore(const std::array<int, 4>& viewport) {
   layout_.depthFormat = depthFormat(drawn);
   const PixelTransfer depth = depthTransfer(layout_.depthFormat);
   if (layout_.colourFormat == GL_NONE || depth.bytes == 0) return false;
-  const PixelTransfer colour = preferredColourTransfer();
+  const PixelTransfer colour = colourTransfer(layout_.colourFormat);
   if (colour.bytes == 0) return false;
   PixelStoreScope store;
   now_.colour.resize(packedSize(viewport[2], viewport[3], colour.bytes));
@@ -101,13 +107,15 @@ void KeptFrame::keep() {
   if (!readable_) return;
   const std::array<int, 4>& viewport = layout_.viewport;
   if (!(layout_ == keptLayout_) || !framebuffer_) {
+    // A layout GL could not hold is not tried again every frame.
+    if (failedLayout_ && *failedLayout_ == layout_) return;
     framebuffer_ = GlFramebuffer();
     clearGlErrors();
     colour_ = createRenderbuffer();
     glNamedRenderbufferStorage(colour_.get(), layout_.colourFormat, viewport[2], viewport[3]);
     depth_ = createRenderbuffer();
     glNamedRenderbufferStorage(depth_.get(), layout_.depthFormat, viewport[2], viewport[3]);
-    if (!glAllocationError(GlAllocation::Framebuffer).empty()) return;
+    if (!glAllocationError(GlAllocation::Framebuffer).empty()) return giveUp();
     GlFramebuffer framebuffer = createFramebuffer();
     glNamedFramebufferRenderbuffer(framebuffer.get(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
                                    colour_.get());
@@ -115,7 +123,7 @@ void KeptFrame::keep() {
         framebuffer.get(),
         hasStencil(layout_.depthFormat) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
         GL_RENDERBUFFER, depth_.get());
-    if (!framebufferIncompleteness(framebuffer.get()).empty()) return;
+    if (!framebufferIncompleteness(framebuffer.get()).empty()) return giveUp();
     framebuffer_ = std::move(framebuffer);
     keptLayout_ = layout_;
   }
@@ -124,6 +132,12 @@ void KeptFrame::keep() {
   keptBefore_ = now_;
   keptAtTracedDepth_ = depthAsTraced_;
   valid_ = true;
+}
+
+void KeptFrame::giveUp() {
+  colour_ = GlRenderbuffer();
+  depth_ = GlRenderbuffer();
+  failedLayout_ = layout_;
 }
 
 void KeptFrame::blit(unsigned int from, unsigned int to, bool toKept) const {

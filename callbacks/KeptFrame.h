@@ -4,6 +4,7 @@
 #include "ivshadow/Export.h"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace ivshadow {
@@ -52,6 +53,8 @@ class IVSHADOW_INTERNAL KeptFrame {
     }
   };
 
+  // Lets go of a copy GL could not hold, and remembers its layout.
+  void giveUp();
   // Blits the viewport between the draw framebuffer and the copy, colour, depth and stencil.
   void blit(unsigned int from, unsigned int to, bool toKept) const;
 
@@ -67,6 +70,7 @@ class IVSHADOW_INTERNAL KeptFrame {
   GlFramebuffer framebuffer_;
   GlRenderbuffer colour_;
   GlRenderbuffer depth_;
+  std::optional<Layout> failedLayout_;
 };
 
 }  // namespace ivshadow
