@@ -117,6 +117,8 @@ bool FragmentListPass::begin(int x, int y, int width, int height) {
       return false;
     }
   }
+  // A group still open is popped before the new one is pushed: nested, not crossed.
+  passGroup_.reset();
   passGroup_ = std::make_unique<GlDebugGroup>("fragment list pass");
   saved_ = std::make_unique<GlStateScope>(
       GlStateScope::kFramebuffers | GlStateScope::kStorageBuffers | GlStateScope::kImageBindings);

@@ -128,6 +128,8 @@ void submitImmediateMode() {
 }  // namespace
 
 void PeelPass::beginOpaque() {
+  // A group still open is popped before the new one is pushed: nested, not crossed.
+  opaqueGroup_.reset();
   opaqueGroup_ = std::make_unique<GlDebugGroup>("opaque pass (peeling's first)");
   // Only the storage binding changes: the opaque pass draws where and how Coin chose.
   savedOpaque_ = std::make_unique<GlStateScope>(GlStateScope::kStorageBuffers);
@@ -147,6 +149,9 @@ bool PeelPass::endOpaque() {
 }
 
 void PeelPass::begin(int x, int y, int width, int height) {
+  // A group still open is popped before the new one is pushed: nested, not crossed.
+  passGroup_.reset();
+  peelingGroup_.reset();
   peelingGroup_ = std::make_unique<GlDebugGroup>("depth peeling");
   timer_.start();
   // Until end(): the peel targets with MAX blending, the progress flag, the compositing
@@ -173,6 +178,8 @@ void PeelPass::begin(int x, int y, int width, int height) {
 }
 
 void PeelPass::startPass(int pass) {
+  // A group still open is popped before the new one is pushed: nested, not crossed.
+  passGroup_.reset();
   passGroup_ = std::make_unique<GlDebugGroup>("peel pass " + std::to_string(pass));
   const int write = pass % 2, read = 1 - write;
   const GLuint fbo = peelFramebuffer_[std::size_t(write)].get();
@@ -225,6 +232,7 @@ void PeelPass::end(int passes) {
   if (passes == 0) {  // nothing was peeled: leave the opaque picture as it is
     saved_.reset();
     timer_.stop();
+    passGroup_.reset();
     peelingGroup_.reset();
     return;
   }
@@ -247,6 +255,7 @@ void PeelPass::end(int passes) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   saved_.reset();
   timer_.stop();
+  passGroup_.reset();
   peelingGroup_.reset();
 }
 

@@ -74,6 +74,9 @@ std::string RayShadowPass::allocate(int width, int height) {
 }
 
 std::string RayShadowPass::beginCapture(int x, int y, int width, int height) {
+  // A group still open is popped before the new one is pushed: nested, not crossed.
+  layerGroup_.reset();
+  captureGroup_.reset();
   captureGroup_ = std::make_unique<GlDebugGroup>("ray capture");
   // Until endCapture(): the capture targets, their depth test and the previous captures on
   // two units. Binding texture 0 there unbinds every target, so both kinds are saved.
@@ -91,6 +94,8 @@ std::string RayShadowPass::beginCapture(int x, int y, int width, int height) {
 }
 
 void RayShadowPass::startLayer(int layer, const UniformLocations& program) {
+  // A group still open is popped before the new one is pushed: nested, not crossed.
+  layerGroup_.reset();
   layerGroup_ = std::make_unique<GlDebugGroup>("ray capture layer " + std::to_string(layer));
   const std::size_t target = targetOf(layer);
   const GLuint fbo = framebuffers_[target].get();
