@@ -1,6 +1,7 @@
 #include "cli/RenderWorkers.h"
 
 #include "cli/ChildProcesses.h"
+#include "cli/InterruptGuard.h"
 #include "cli/VariantsWorker.h"
 
 #include <fcntl.h>
@@ -141,7 +142,7 @@ std::optional<VariantRenders::Finished> RenderWorkers::readFrom(Worker& worker) 
     worker.received.erase(0, end + 1);
     if (!answer || worker.id < 0)
       throw std::runtime_error("a render worker answered what it was not asked");
-    const Finished finished{worker.id, answer->exitCode};
+    const Finished finished{worker.id, answer->exitCode, worker.retried};
     worker.id = -1;
     worker.last = answer->last;
     return finished;
@@ -149,7 +150,8 @@ std::optional<VariantRenders::Finished> RenderWorkers::readFrom(Worker& worker) 
   // The worker ended, or its socket broke, which it does not survive.
   const int exitCode = reap(worker);
   if (worker.id < 0) return std::nullopt;
-  if (!worker.retried && !stopping_) {
+  // A worker Ctrl-C reached before the sweep saw the signal is not started again either.
+  if (!worker.retried && !stopping_ && !InterruptGuard::interrupted()) {
     // Whatever killed it may have been left by an earlier variant (or come from outside):
     // the variant gets a fresh process before it is called failed.
     spawn(worker);
@@ -157,7 +159,7 @@ std::optional<VariantRenders::Finished> RenderWorkers::readFrom(Worker& worker) 
     send(worker);
     return std::nullopt;
   }
-  const Finished finished{worker.id, exitCode};
+  const Finished finished{worker.id, exitCode, worker.retried};
   worker.id = -1;
   return finished;
 }

@@ -13,8 +13,9 @@ namespace ivshadow {
 class VariantRenders {
  public:
   struct Finished {
-    int id = 0;         // as given to start()
-    int exitCode = -1;  // -1 when the render was killed by a signal
+    int id = 0;            // as given to start()
+    int exitCode = -1;     // -1 when the render was killed by a signal
+    bool retried = false;  // its first render's process died, and it was rendered again
   };
 
   // `jobs` at a time by long-lived workers (RenderWorkers); one `ivshadow render` process per

@@ -327,7 +327,10 @@ int runVariants(const VariantsOptions& options) {
       outcome.write(options.outputDir);
       std::filesystem::remove(scratch(i, ".stats.json"), made);
       std::filesystem::remove(scratch(i, ".log"), made);
-      if (done.exitCode != 0) removeTemporaries(options.outputDir, variants[i].name);
+      // Also after a retried success: a worker killed while it wrote the variant's files left
+      // temporaries named for its own process, which the retry's process did not replace.
+      if (done.exitCode != 0 || done.retried)
+        removeTemporaries(options.outputDir, variants[i].name);
       if (done.exitCode == 0) {
         ++rendered;
       } else {

@@ -44,7 +44,14 @@ class RenderWorker:
             for _ in range(2):
                 if self._process is None:
                     self._start(executable, place)
-                answer = self._ask(line)
+                try:
+                    answer = self._ask(line)
+                except BaseException:
+                    # Interrupted between the request and its answer (Ctrl-C, a line that is
+                    # not JSON): the answer left unread would be taken for the next render's.
+                    self._process.kill()
+                    self._end(wait=True)
+                    raise
                 if answer is not None:
                     if answer.get("last"):
                         self._end(wait=True)
