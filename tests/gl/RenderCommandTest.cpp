@@ -290,35 +290,6 @@ TEST(RenderCommand, WithoutTheGlFeaturesTheGroupWarnsOnceAndRendersPlainly) {
   EXPECT_GT(nonBlack, 160 * 120);
 }
 
-TEST(CompareCommand, MeasuresTwoRendersAndWritesAHeatMap) {
-  const std::string dir = test::outputDir();
-  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/a.png", "--size", "120x120"}));
-  ASSERT_TRUE(render({scene("lit_plane.iv"), "-o", dir + "/b.png", "--size", "120x120", "--set",
-                      "Lamp.intensity=0.5"}));
-  const test::ProcessResult result =
-      run({test::ivshadowExe(), "compare", dir + "/a.png", dir + "/b.png", "--diff",
-           dir + "/diff.png", "--json", dir + "/metrics.json"});
-  ASSERT_EQ(result.exitCode, 0) << result.err;
-  std::ifstream in(dir + "/metrics.json");
-  const nlohmann::json metrics = nlohmann::json::parse(in);
-  // Half the light: the plane's brightest pixels (near 255) lose about half.
-  EXPECT_GE(metrics.at("all").at("max_abs_error").get<int>(), 120);
-  EXPECT_GT(metrics.at("all").at("share_above_2").get<double>(), 0.5);
-  EXPECT_EQ(readPng(dir + "/diff.png").width(), 120);
-
-  const test::ProcessResult missing =
-      run({test::ivshadowExe(), "compare", dir + "/a.png", dir + "/none.png"});
-  EXPECT_EQ(missing.exitCode, 2);
-  EXPECT_EQ(test::lines(missing.err).size(), 1u) << missing.err;
-  // A scene given for a picture: compare reads it, so it cannot *read* that type.
-  const std::string iv = scene("lit_plane.iv");
-  const test::ProcessResult notAPicture = run({test::ivshadowExe(), "compare", iv, dir + "/a.png"});
-  EXPECT_EQ(notAPicture.exitCode, 2);
-  EXPECT_EQ(notAPicture.err,
-            iv + ": error: cannot read images of type '.iv' (the reference); compare "
-                 "reads PNG and JPEG: .png, .jpg, .jpeg\n");
-}
-
 // no_camera.iv has neither camera nor light. The added perspective camera looks down -z, so
 // the cube's front face (normal +z) faces it squarely and the headlight, direction (1,-1,-10)
 // in eye space as in SoQt's viewers, lights it with cos = 10 / sqrt(102). Each channel is then
