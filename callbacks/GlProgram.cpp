@@ -32,7 +32,7 @@ GLuint compile(GLenum stage, const std::string& source, std::string& error) {
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    error = std::string(stage == GL_VERTEX_SHADER     ? "vertex"
+    error = std::string(stage == GL_VERTEX_SHADER    ? "vertex"
                         : stage == GL_COMPUTE_SHADER ? "compute"
                                                      : "fragment") +
             " shader does not compile: " + infoLog(shader, false);
@@ -46,7 +46,7 @@ GLuint compile(GLenum stage, const std::string& source, std::string& error) {
 
 std::string composeShader(const std::string& body, const std::string& defines) {
   return "#version 450 compatibility\n" + shaderConstantDefines() + defines +
-         glsl::kDeepShadowCommonGlsl + body;
+         glsl::kDeepShadowCommonGlsl + glsl::kSurfaceOpticsGlsl + body;
 }
 
 GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fragmentSource,

@@ -10,10 +10,18 @@
 namespace ivshadow {
 namespace {
 
-constexpr int kTextureBlend = 0x0BE2;
-constexpr int kTextureModulate = 0x2100;
-constexpr int kTextureDecal = 0x2101;
-constexpr int kTextureReplace = 0x1E01;
+// The formulas the GLSL programs evaluate, compiled from their text: glm's names are GLSL's.
+namespace shared {
+using glm::clamp;
+using glm::mix;
+using glm::pow;
+using glm::vec3;
+using glm::vec4;
+constexpr int kColourMonochrome = int(ShadowColourModel::Monochrome);
+constexpr int kColourSaturate = int(ShadowColourModel::Saturate);
+constexpr int kColourPower = int(ShadowColourModel::Power);
+#include "scene/surface_optics.glsl"
+}  // namespace shared
 
 int wrap(int i, int size, bool repeat) {
   if (repeat) {
@@ -34,24 +42,12 @@ glm::vec4 texel(const TextureImage& image, int x, int y) {
 }  // namespace
 
 glm::vec3 transmittance(const glm::vec4& c, ShadowColourModel model) {
-  const float clear = 1.0f - c.a;
-  const glm::vec3 colour(c);
-  if (model == ShadowColourModel::Saturate)
-    return clear * glm::clamp(glm::vec3(clear) + colour, 0.0f, 1.0f);
-  if (model == ShadowColourModel::Power) return glm::pow(glm::vec3(clear), 2.0f - colour);
-  return glm::vec3(clear);
+  return shared::transmittance(c, int(model));
 }
 
 glm::vec4 applyTextureModel(const glm::vec4& colour, const glm::vec4& texel, int model,
                             const glm::vec3& blendColour) {
-  if (model == kTextureModulate) return colour * texel;
-  if (model == kTextureDecal)
-    return glm::vec4(glm::mix(glm::vec3(colour), glm::vec3(texel), texel.a), colour.a);
-  if (model == kTextureReplace) return texel;
-  if (model == kTextureBlend)
-    return glm::vec4(glm::mix(glm::vec3(colour), blendColour, glm::vec3(texel)),
-                     colour.a * texel.a);
-  return colour;
+  return shared::applyTextureModel(colour, texel, model, blendColour);
 }
 
 glm::vec4 sampleTexture(const TextureImage& image, float s, float t) {

@@ -11,7 +11,7 @@ namespace ivshadow {
 
 struct TextureImage;
 
-// The CPU twins of deep_shadow_common.glsl: how a surface colours and filters light. The ray
+// The CPU side of scene/surface_optics.glsl: how a surface colours and filters light. The ray
 // tracers use them so that only the discretisation differs from the GL path, never the model.
 
 // Opacity within half an 8-bit step of 1 counts as opaque (kOpaqueAlpha).
