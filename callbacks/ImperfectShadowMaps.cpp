@@ -145,16 +145,16 @@ void ImperfectShadowMaps::pullPush(const BounceMapRequest& request) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   glUseProgram(pull_.name());
   for (int level = 0; level < kIsmPullLevels; ++level) {
-    glBindImageTexture(0, atlas_.get(), level, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(1, atlas_.get(), level + 1, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(kIsmReadUnit, atlas_.get(), level, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(kIsmWriteUnit, atlas_.get(), level + 1, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     const int coarse = size >> (level + 1);
     glDispatchCompute(groupsFor(coarse), groupsFor(coarse), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   glUseProgram(push_.name());
   for (int level = kIsmPullLevels - 1; level >= 0; --level) {
-    glBindImageTexture(0, atlas_.get(), level + 1, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(1, atlas_.get(), level, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    glBindImageTexture(kIsmReadUnit, atlas_.get(), level + 1, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(kIsmWriteUnit, atlas_.get(), level, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     push_.setInt("uCoarseTileSize", request.mapSize >> (level + 1));
     const int fine = size >> level;
     glDispatchCompute(groupsFor(fine), groupsFor(fine), 1);

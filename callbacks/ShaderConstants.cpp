@@ -59,6 +59,8 @@ std::string shaderConstantDefines() {
        << "#define IVSHADOW_ISM_BIAS " << kIsmBias << "\n"
        << "#define IVSHADOW_ISM_NORMAL_OFFSET " << kIsmNormalOffset * 4.0f << "\n"
        << "#define IVSHADOW_ISM_GROUP_SIZE " << kIsmGroupSize << "\n"
+       << "#define IVSHADOW_ISM_READ_UNIT " << kIsmReadUnit << "\n"
+       << "#define IVSHADOW_ISM_WRITE_UNIT " << kIsmWriteUnit << "\n"
        << "#define IVSHADOW_INVERSE_PI " << 0.318309886f << "\n"
        << "#define IVSHADOW_COLOUR_MONOCHROME " << int(ShadowColourModel::Monochrome) << "\n"
        << "#define IVSHADOW_COLOUR_SATURATE " << int(ShadowColourModel::Saturate) << "\n"

@@ -150,8 +150,13 @@ inline constexpr float kIsmPointSize = 3.0f;
 // Pull-push levels over the atlas (seeds/001: the last two push steps come nearest the
 // perfect map); tiles of at least 16 texels stay apart through them.
 inline constexpr int kIsmPullLevels = 2;
-// The pull and push compute programs' work group side.
+// The pull and push compute programs' work group side, and their image units: the level each
+// reads (finer for the pull, coarser for the push) and the level it writes (within
+// kImageUnits, which GlStateScope restores).
 inline constexpr int kIsmGroupSize = 8;
+inline constexpr int kIsmReadUnit = 0;
+inline constexpr int kIsmWriteUnit = 1;
+static_assert(kIsmReadUnit < kImageUnits && kIsmWriteUnit < kImageUnits);
 // What a texel holds where no point fell (after pull-push: no surface that way).
 inline constexpr float kIsmEmpty = 1.0e30f;
 // A receiver counts as seen by a light while its distance is within this fraction beyond the

@@ -2,8 +2,8 @@
 // finer texels, empty when none is. Tiles are powers of two on aligned corners, so a 2 x 2
 // block never spans two lights' maps.
 layout(local_size_x = IVSHADOW_ISM_GROUP_SIZE, local_size_y = IVSHADOW_ISM_GROUP_SIZE) in;
-layout(r32f, binding = 0) uniform readonly image2D uFine;
-layout(r32f, binding = 1) uniform writeonly image2D uCoarse;
+layout(r32f, binding = IVSHADOW_ISM_READ_UNIT) uniform readonly image2D uFine;
+layout(r32f, binding = IVSHADOW_ISM_WRITE_UNIT) uniform writeonly image2D uCoarse;
 
 void main() {
   ivec2 coarse = ivec2(gl_GlobalInvocationID.xy);

@@ -3,8 +3,8 @@
 // texel keeps what its points gave it. In place: each texel writes only itself and reads the
 // coarser level, already final.
 layout(local_size_x = IVSHADOW_ISM_GROUP_SIZE, local_size_y = IVSHADOW_ISM_GROUP_SIZE) in;
-layout(r32f, binding = 0) uniform readonly image2D uCoarse;
-layout(r32f, binding = 1) uniform image2D uFine;
+layout(r32f, binding = IVSHADOW_ISM_READ_UNIT) uniform readonly image2D uCoarse;
+layout(r32f, binding = IVSHADOW_ISM_WRITE_UNIT) uniform image2D uFine;
 uniform int uCoarseTileSize;  // a tile's side at the coarser level, in its texels
 
 void main() {
