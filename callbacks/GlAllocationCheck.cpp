@@ -66,21 +66,6 @@ bool isForced(GlAllocation kind) {
   return false;
 }
 
-std::string errorName(GLenum error) {
-  switch (error) {
-    case GL_OUT_OF_MEMORY:
-      return "GL_OUT_OF_MEMORY";
-    case GL_INVALID_VALUE:
-      return "GL_INVALID_VALUE";
-    case GL_INVALID_ENUM:
-      return "GL_INVALID_ENUM";
-    case GL_INVALID_OPERATION:
-      return "GL_INVALID_OPERATION";
-    default:
-      return "GL error " + std::to_string(error);
-  }
-}
-
 std::string statusName(GLenum status) {
   switch (status) {
     case GL_FRAMEBUFFER_UNDEFINED:
@@ -107,11 +92,35 @@ void clearGlErrors() {
   }
 }
 
+std::string glErrorName(unsigned int error) {
+  switch (error) {
+    case GL_INVALID_ENUM:
+      return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE:
+      return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION:
+      return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION:
+      return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY:
+      return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW:
+      return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW:
+      return "GL_STACK_UNDERFLOW";
+    default: {
+      std::ostringstream text;
+      text << "GL error 0x" << std::hex << error;
+      return text.str();
+    }
+  }
+}
+
 std::string glAllocationError(GlAllocation kind) {
   GLenum first = GL_NO_ERROR;
   for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError())
     if (first == GL_NO_ERROR || error == GL_OUT_OF_MEMORY) first = error;
-  if (first != GL_NO_ERROR) return errorName(first);
+  if (first != GL_NO_ERROR) return glErrorName(first);
   if (isForced(kind)) return "GL_OUT_OF_MEMORY (forced by IVSHADOW_FAIL_GL)";
   return {};
 }

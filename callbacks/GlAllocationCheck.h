@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ivshadow/Export.h"
+
 #include <string>
 
 namespace ivshadow {
@@ -9,6 +11,10 @@ namespace ivshadow {
 // FragmentSlots: the camera's fragment lists with slots of their own in each pixel (a failure
 // there makes them try fewer, down to none, before they are counted as FragmentList's).
 enum class GlAllocation { Texture, Buffer, Framebuffer, FragmentList, FragmentSlots };
+
+// A glGetError code by its name ("GL_OUT_OF_MEMORY"; "GL error 0x..." for one GL does not
+// list): the passes' messages and the GL tests' reports name errors alike.
+IVSHADOW_INTERNAL std::string glErrorName(unsigned int error);
 
 // Takes GL's pending errors off: an error raised before an allocation is not the
 // allocation's, and would otherwise be taken for its failure.

@@ -87,8 +87,7 @@ std::string TracedPicturePass::readDepth(const std::array<int, 4>& viewport,
   glReadPixels(0, 0, viewport[2], viewport[3], GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     out.assign(out.size(), 1.0f);
-    return "GL error " + std::to_string(error) + " resolving its " + std::to_string(samples) +
-           " samples";
+    return glErrorName(error) + " resolving its " + std::to_string(samples) + " samples";
   }
   return {};
 }

@@ -1,37 +1,10 @@
 #include "tests/gl/GlDebugErrors.h"
 
+#include "callbacks/GlAllocationCheck.h"
+
 #include <epoxy/gl.h>
 
-#include <sstream>
-
 namespace ivshadow::test {
-namespace {
-
-std::string errorName(GLenum error) {
-  switch (error) {
-    case GL_INVALID_ENUM:
-      return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE:
-      return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION:
-      return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION:
-      return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY:
-      return "GL_OUT_OF_MEMORY";
-    case GL_STACK_OVERFLOW:
-      return "GL_STACK_OVERFLOW";
-    case GL_STACK_UNDERFLOW:
-      return "GL_STACK_UNDERFLOW";
-    default: {
-      std::ostringstream text;
-      text << "GL error 0x" << std::hex << error;
-      return text.str();
-    }
-  }
-}
-
-}  // namespace
 
 GlDebugErrors::GlDebugErrors() {
   while (glGetError() != GL_NO_ERROR) {
@@ -74,7 +47,7 @@ std::string GlDebugErrors::take(bool contextCurrent) {
   // repeat it. Without one they are errors it did not report (debug output was off).
   std::string kept;
   for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError())
-    kept += "\n  glGetError: " + errorName(error);
+    kept += "\n  glGetError: " + glErrorName(error);
   return reported ? errors : errors + kept;
 }
 
