@@ -102,6 +102,25 @@ GlStateScope::GlStateScope(unsigned int changes, const Textures& textures) : cha
   }
 }
 
+int GlStateScope::queriesFor(unsigned int changes, const Textures& textures) {
+  // What the constructor reads, group by group.
+  int queries = textures.units.empty()
+                    ? 0
+                    : 1 + int(textures.units.size() * textures.targets.size());  // + active unit
+  if (changes & kFramebuffers) queries += 2;                                     // draw and read
+  if (changes & kViewport) queries += 1;
+  if (changes & kProgram) queries += 1;
+  if (changes & kVertexArray) queries += 1;
+  if (changes & kStorageBuffers) queries += 1 + kStorageBindings;
+  if (changes & kImageBindings) queries += int(sizeof(ImageBinding) / sizeof(int)) * kImageUnits;
+  if (changes & kBlendFunction) queries += 6;  // 4 factors, 2 equations
+  if (changes & kDepth) queries += 2;          // function and write mask
+  if (changes & kColourMask) queries += 1;
+  if (changes & kClipControl) queries += 2;
+  if (changes & kFragmentTests) queries += 1 + int(fragmentSwitches().size());  // + polygon mode
+  return queries;
+}
+
 void GlStateScope::disableFragmentTests() const {
   for (const auto& entry : enables_) glDisable(entry.first);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);

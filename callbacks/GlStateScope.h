@@ -38,6 +38,10 @@ class IVSHADOW_INTERNAL GlStateScope {
   };
 
   explicit GlStateScope(unsigned int changes, const Textures& textures = {});
+  // The queries a scope for `changes` and `textures` makes in the current context: one a
+  // value of glGetIntegerv, glGetIntegeri_v, glGetBooleanv or glIsEnabled (the depth range,
+  // read with glGetDoublev, is not counted). Tests hold a steady frame to it.
+  static int queriesFor(unsigned int changes, const Textures& textures = {});
   ~GlStateScope();
   GlStateScope(const GlStateScope&) = delete;
   GlStateScope& operator=(const GlStateScope&) = delete;

@@ -3,7 +3,6 @@
 // its state only where a pass must put back what it changes: as many queries as the
 // transparency mode's passes save state for, counted here from the passes themselves.
 #include "callbacks/GlStateScope.h"
-#include "callbacks/ShaderConstants.h"
 #include "ivshadow/PeelStatistics.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/SceneLoader.h"
@@ -16,7 +15,6 @@
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoSeparator.h>
-#include <epoxy/gl.h>
 
 #include <string>
 
@@ -35,32 +33,13 @@ struct FrameCase {
   const char* separatorMethod;
 };
 
-// The queries a GlStateScope makes for what it saves (GlStateScope.cpp), one a value of each
-// group: glGetIntegerv, glGetIntegeri_v, glGetBooleanv and glIsEnabled, which the counter
-// counts (the depth range is read with glGetDoublev, which it does not). `units` texture units
-// of `targets` bindings each cost the active unit and one query a binding.
+// The queries a GlStateScope saving `changes` makes, with `units` texture units of `targets`
+// bindings each (GlStateScope::queriesFor, which the glGet* calls the counter counts follow).
 int scopeQueries(unsigned changes, int units = 0, int targets = 1) {
-  GLint clipDistances = 0;  // one switch each (GL_CLIP_DISTANCEi)
-  glGetIntegerv(GL_MAX_CLIP_DISTANCES, &clipDistances);
-  // GL_BLEND, GL_ALPHA_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_STENCIL_TEST,
-  // GL_POLYGON_STIPPLE, GL_POLYGON_OFFSET_FILL, GL_COLOR_LOGIC_OP, GL_FRAMEBUFFER_SRGB,
-  // GL_DEPTH_CLAMP, GL_RASTERIZER_DISCARD, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_PROGRAM_POINT_SIZE,
-  // GL_POINT_SMOOTH, GL_DEPTH_TEST.
-  constexpr int kFragmentSwitches = 15;
-  int queries = units > 0 ? 1 + units * targets : 0;
-  if (changes & GlStateScope::kFramebuffers) queries += 2;  // draw and read
-  if (changes & GlStateScope::kViewport) queries += 1;
-  if (changes & GlStateScope::kProgram) queries += 1;
-  if (changes & GlStateScope::kVertexArray) queries += 1;
-  if (changes & GlStateScope::kStorageBuffers) queries += 1 + kStorageBindings;
-  if (changes & GlStateScope::kImageBindings) queries += 6 * kImageUnits;  // 6 values a unit
-  if (changes & GlStateScope::kBlendFunction) queries += 6;                // 4 factors, 2 equations
-  if (changes & GlStateScope::kDepth) queries += 2;  // function and write mask
-  if (changes & GlStateScope::kColourMask) queries += 1;
-  if (changes & GlStateScope::kClipControl) queries += 2;
-  if (changes & GlStateScope::kFragmentTests)
-    queries += 1 + kFragmentSwitches + clipDistances;  // the polygon mode, each switch
-  return queries;
+  GlStateScope::Textures textures;
+  textures.units.assign(std::size_t(units), 0);
+  textures.targets.assign(std::size_t(targets), 0u);
+  return GlStateScope::queriesFor(changes, textures);
 }
 
 // A steady frame of a group: its shading program bound (the current program read back, 1)
