@@ -7,8 +7,8 @@
 #include "cli/VariantsCommand.h"
 #include "cli/VariantsMerge.h"
 #include "cli/VariantsWorker.h"
+#include "cli/ViewerProcess.h"
 #include "ivshadow/IvShadowInit.h"
-#include "viewer/ViewerApplication.h"
 
 #include <algorithm>
 #include <cctype>
@@ -284,9 +284,9 @@ CommandLine::CommandLine()
       app_.add_subcommand("variants-worker", "Render the variants a sweep sends on stdin")
           ->group("");
 
-  CLI::App* viewCommand = app_.add_subcommand("view", "Open an .iv file in the viewer");
-  viewCommand->footer(footer(kViewExamples));
-  addViewerOptions(*viewCommand, view_);
+  viewCommand_ = app_.add_subcommand("view", "Open an .iv file in the viewer");
+  viewCommand_->footer(footer(kViewExamples));
+  addViewerOptions(*viewCommand_, view_);
 }
 
 std::optional<int> CommandLine::parse(int argc, char** argv) {
@@ -296,6 +296,13 @@ std::optional<int> CommandLine::parse(int argc, char** argv) {
   }
   try {
     app_.parse(argc, argv);
+    // The command is the first argument that is not an option (ivshadow's own options take no
+    // value), so what follows `view` is the viewer's command line.
+    if (viewCommand_->parsed()) {
+      int first = 1;
+      while (first < argc && std::string(argv[first]) != "view") ++first;
+      viewArguments_.assign(argv + std::min(first + 1, argc), argv + argc);
+    }
   } catch (const CLI::ParseError& error) {
     if (const std::string unknown = unknownOption(app_);
         error.get_exit_code() != 0 && !unknown.empty()) {
@@ -314,7 +321,7 @@ std::string CommandLine::command() const {
   return {};
 }
 
-int CommandLine::run(const char* programName) {
+int CommandLine::run() {
   if (renderCommand_->parsed()) return runRender(render_);
   if (variantsCommand_->parsed()) return runVariants(variants_);
   if (mergeCommand_->parsed()) return runVariantsMerge(merge_);
@@ -325,7 +332,7 @@ int CommandLine::run(const char* programName) {
     return runReference(reference_);
   }
   if (tradeCommand_->parsed()) return runTrade(trade_);
-  return runViewer(view_, programName);
+  return runViewerProcess(viewArguments_);
 }
 
 }  // namespace ivshadow

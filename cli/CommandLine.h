@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ivshadow {
 
@@ -31,8 +32,9 @@ class CommandLine {
   std::optional<int> parse(int argc, char** argv);
   // The parsed command's name ("render", "view", ...), empty before parse().
   std::string command() const;
-  // Runs the parsed command and returns its exit status.
-  int run(const char* programName);
+  // Runs the parsed command and returns its exit status (`view` replaces this process with
+  // the viewer's, cli/ViewerProcess.h).
+  int run();
 
  private:
   CLI::App app_;
@@ -51,6 +53,9 @@ class CommandLine {
   CLI::App* compareCommand_ = nullptr;
   CLI::App* workerCommand_ = nullptr;
   CLI::Option* bounceOption_ = nullptr;
+  CLI::App* viewCommand_ = nullptr;
+  // The arguments after `view`, passed on to the viewer program as they were typed.
+  std::vector<std::string> viewArguments_;
 };
 
 }  // namespace ivshadow

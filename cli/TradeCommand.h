@@ -32,7 +32,7 @@ struct TradeOptions {
 // (resolution x layers x precision x filter for the deep shadow map, resolution x slices x
 // precision x filter for the opacity map),
 // times each (map build and frame separately, median of --frames), measures its error against
-// the exact reference and writes DIR/trade.csv and DIR/trade.png (error against time, Pareto
+// the exact reference and writes DIR/trade.csv and DIR/trade.svg (error against time, Pareto
 // front marked) with the baselines. Exit 0, 2 on bad input, 3 without GL, 1 otherwise.
 int runTrade(const TradeOptions& options);
 

@@ -34,9 +34,11 @@ void markParetoFront(std::vector<TradePoint>& points);
 // Draws the error in dB (PSNR against the reference, higher is closer) against time on a log
 // axis, with round ticks: each method in a colour and shape of its own, named in a legend; the
 // Pareto front as a staircase, its points and the baselines labelled, labels kept off one
-// another; the reference, whose PSNR is infinite, on a band above the axis. Adds the PNG to
-// `outputs`, written with the command's other files. Needs no display (Qt's offscreen
-// platform is used when there is none).
+// another; the reference, whose PSNR is infinite, on a band above the axis. An SVG picture
+// (1100 x 720 units), which browsers and Markdown pages show.
+std::string tradePlotSvg(const std::string& title, const std::vector<TradePoint>& points);
+
+// Adds tradePlotSvg's picture to `outputs` as `path`, written with the command's other files.
 void addTradePlot(OutputFiles& outputs, const std::string& path, const std::string& title,
                   const std::vector<TradePoint>& points);
 

@@ -3,5 +3,5 @@
 int main(int argc, char** argv) {
   ivshadow::CommandLine commandLine;
   if (const std::optional<int> status = commandLine.parse(argc, argv)) return *status;
-  return commandLine.run(argv[0]);
+  return commandLine.run();
 }

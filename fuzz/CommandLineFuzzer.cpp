@@ -110,7 +110,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool runs = command == "render" || command == "reference" || command == "compare" ||
                     command == "variants-merge";
   if (runs && quickAndLocal(arguments, command == "render" || command == "reference")) {
-    const int status = commandLine.run(argv[0]);
+    const int status = commandLine.run();
     // The contract: success, bad input or no GL; anything else (1) is a finding to look at,
     // printed rather than stopped at (a device full or a signal are 1 by design).
     if (status != 0 && status != 2 && status != 3)

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "viewer/ViewerApplication.h"
+#include "viewer/ViewerOptions.h"
 
 namespace CLI {
 class App;
@@ -8,7 +8,7 @@ class App;
 
 namespace ivshadow {
 
-// The viewer's options, shared by `ivshadow-viewer` and (to be) `ivshadow view`.
+// The viewer's options, shared by `ivshadow-viewer` and `ivshadow view`.
 void addViewerOptions(CLI::App& app, ViewerOptions& options);
 
 // Makes CLI11's parse errors read as the project's other errors: "PROGRAM: error: WHAT", then

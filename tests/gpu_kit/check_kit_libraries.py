@@ -1,6 +1,7 @@
 """Checks that an unpacked GPU kit (bench/gpu_kit.sh) depends on nothing of this machine but
 glibc, the C++ runtime and the GL driver:
   - statically: every library that `ldd` resolves for the kit's binaries and libraries,
+  - that the headless programs (ivshadow, gl_tests, the benchmarks) load no Qt, SoQt or ICU,
   - at run time: every library a render through the kit loads (LD_DEBUG), the ones opened by
     name (libEGL by libepoxy, libGL by Coin, TBB's allocator by Embree) included.
 The driver is whatever libglvnd's libEGL/libGLX open through the vendor files (egl_vendor.d),
@@ -33,6 +34,11 @@ def inside(path):
     return os.path.realpath(path).startswith(root + os.sep)
 
 
+# The headless programs load no GUI toolkit: Qt, SoQt and ICU (about 40 MB) are the viewer's
+# alone (`ivshadow view` runs ivshadow-viewer).
+HEADLESS = {"ivshadow", "gl_tests", "ivshadow_bench", "render_scene_graph"}
+GUI = re.compile(r"^lib(Qt5|SoQt|icu)")
+
 files = [os.path.join(d, f) for d in (bin_dir, lib_dir) for f in sorted(os.listdir(d))]
 files = [f for f in files if not os.path.islink(f)]
 for path in files:
@@ -42,6 +48,8 @@ for path in files:
         if len(fields) < 3 or fields[1] != "=>":
             continue
         name, resolved = fields[0], fields[2]
+        if os.path.basename(path) in HEADLESS and GUI.match(name):
+            problems.append(f"{os.path.basename(path)}: loads {name}, a GUI library")
         if resolved == "not":
             problems.append(f"{os.path.basename(path)}: {name} not found")
         elif not inside(resolved) and not SYSTEM.match(name):
