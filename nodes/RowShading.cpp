@@ -29,4 +29,17 @@ void RowShading::traceShadows() {
   }
 }
 
+bool RowShading::asksAgain(const std::vector<CasterScene::Query>& keptQueries,
+                           const std::vector<const CasterScene*>& keptCasters) const {
+  if (keptQueries.size() != queries.size() || keptCasters != queryCasters) return false;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const CasterScene::Query& a = keptQueries[i];
+    const CasterScene::Query& b = queries[i];
+    if (a.from != b.from || a.normal != b.normal || a.to != b.to || a.model != b.model ||
+        a.directional != b.directional)
+      return false;
+  }
+  return true;
+}
+
 }  // namespace ivshadow::detail

@@ -44,6 +44,11 @@ struct RowShading {
   std::vector<glm::vec3> answers;
   // Answers every query of the row (into `answers`), each group's casters its own, in packets.
   void traceShadows();
+  // Whether the row asks the shadow rays `keptQueries` asked, of the same casters: their
+  // answers are then the same (a caster that moved was read again, and its surfaces are not
+  // reused).
+  bool asksAgain(const std::vector<CasterScene::Query>& keptQueries,
+                 const std::vector<const CasterScene*>& keptCasters) const;
   void clear() {
     shades.clear();
     pixelEnds.clear();

@@ -515,25 +515,6 @@ bool SceneTracer::viewDependent() const {
   return data_->extraction.fogFollowsView || data_->extraction.texCoordsFollowView;
 }
 
-namespace {
-
-// Whether `row` asks the shadow rays `kept` asked, of the same casters: the answers are then
-// the same (a caster that moved was read again, and its surfaces are not reused).
-bool sameQuestions(const SurfacesMet::Row& kept, const RowShading& row) {
-  if (kept.queries.size() != row.queries.size() || kept.queryCasters != row.queryCasters)
-    return false;
-  for (std::size_t i = 0; i < row.queries.size(); ++i) {
-    const CasterScene::Query& a = kept.queries[i];
-    const CasterScene::Query& b = row.queries[i];
-    if (a.from != b.from || a.normal != b.normal || a.to != b.to || a.model != b.model ||
-        a.directional != b.directional)
-      return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 // One worker's working memory: kept from trace to trace, as a frame's rows otherwise grew their
 // vectors from nothing again, and on cache lines of its own, as neighbouring workers wrote
 // into the same lines (the vectors' ends).
@@ -546,6 +527,82 @@ struct alignas(64) WorkerMemory {
 struct SceneTracer::Workers {
   std::vector<WorkerMemory> memory;
 };
+
+namespace {
+
+// Row y's surfaces, shaded up to their shadows into the worker's row: those `keptRow` holds
+// where `reuse`, else those its camera rays meet up to `limits` (GL's depth, or none), kept
+// into `keptRow` when there is one.
+void shadeSurfaces(const Tracer& tracer, int y, int width, const float* limits, bool reuse,
+                   SurfacesMet::Row* keptRow, WorkerMemory& own) {
+  if (keptRow != nullptr && !reuse) {
+    keptRow->hits.clear();
+    keptRow->ends.resize(std::size_t(width));
+    keptRow->depth.resize(std::size_t(width));
+  }
+  RowShading& shades = own.shading;
+  shades.clear();
+  for (int x = 0; x < width; x += kMaxPacket) {
+    const int count = std::min(kMaxPacket, width - x);
+    CameraRay cameraRays[kMaxPacket];
+    for (int i = 0; i < count; ++i) cameraRays[i] = tracer.cameraRays().ray(x + i, y);
+    if (reuse) {
+      for (int i = 0; i < count; ++i) {
+        const std::size_t at = std::size_t(x + i);
+        const std::uint32_t begin = at > 0 ? keptRow->ends[at - 1] : 0u;
+        tracer.gather(cameraRays[i], keptRow->hits.data() + begin, keptRow->ends[at] - begin,
+                      keptRow->depth[at], own.rays, shades);
+      }
+      continue;
+    }
+    float ends[kMaxPacket];
+    float depths[kMaxPacket];
+    for (int i = 0; i < count; ++i) ends[i] = limits != nullptr ? limits[x + i] : 1.0f;
+    std::vector<Hit>* found = own.hits;
+    tracer.visible(cameraRays, ends, count, found, depths);
+    for (int i = 0; i < count; ++i) {
+      tracer.gather(cameraRays[i], found[i].data(), found[i].size(), depths[i], own.rays, shades);
+      if (keptRow != nullptr) {
+        const std::size_t at = std::size_t(x + i);
+        keptRow->hits.insert(keptRow->hits.end(), found[i].begin(), found[i].end());
+        keptRow->ends[at] = std::uint32_t(keptRow->hits.size());
+        keptRow->depth[at] = depths[i];
+      }
+    }
+  }
+}
+
+// The row's shadow rays answered: where the surfaces reused ask what `keptRow`'s answers
+// answered, those answers (no ray traced, none counted); else traced, and kept.
+void answerShadows(bool reuse, SurfacesMet::Row* keptRow, WorkerMemory& own) {
+  RowShading& shades = own.shading;
+  if (reuse && shades.asksAgain(keptRow->queries, keptRow->queryCasters)) {
+    shades.answers = keptRow->answers;
+    own.rays.shadow -= shades.queries.size();
+    return;
+  }
+  shades.traceShadows();
+  if (keptRow == nullptr) return;
+  keptRow->queries = shades.queries;
+  keptRow->queryCasters = shades.queryCasters;
+  keptRow->answers = shades.answers;
+}
+
+// Row y's pixels composited into `out`.
+void writeRow(const Tracer& tracer, const RowShading& shades, int y, TracedPixels& out) {
+  const std::size_t row = std::size_t(y) * std::size_t(out.width);
+  for (int x = 0; x < out.width; ++x) {
+    const PixelResult p = tracer.resolve(shades, std::size_t(x));
+    float* rgba = &out.rgba[(row + std::size_t(x)) * 4];
+    rgba[0] = p.colour.r;
+    rgba[1] = p.colour.g;
+    rgba[2] = p.colour.b;
+    rgba[3] = p.transmitted;
+    out.depth[row + std::size_t(x)] = p.depth;
+  }
+}
+
+}  // namespace
 
 SceneTracer::SceneTracer(std::unique_ptr<Data> data)
     : data_(std::move(data)), workers_(std::make_unique<Workers>()) {}
@@ -612,71 +669,16 @@ bool SceneTracer::trace(const SbMatrix& viewing, const SbMatrix& projection,
   parallelRows(
       options.height, workers,
       [&](int y, int worker) {
-        const std::size_t row = std::size_t(y) * std::size_t(options.width);
         // GL's rows run bottom to top.
         const float* limits =
             depthLimit != nullptr
                 ? depthLimit + std::size_t(options.height - 1 - y) * std::size_t(options.width)
                 : nullptr;
         WorkerMemory& own = memory[std::size_t(worker)];
-        std::vector<Hit>* found = own.hits;
         SurfacesMet::Row* keptRow = kept != nullptr ? &kept->rows[std::size_t(y)] : nullptr;
-        if (keptRow != nullptr && !reuse) {
-          keptRow->hits.clear();
-          keptRow->ends.resize(std::size_t(options.width));
-          keptRow->depth.resize(std::size_t(options.width));
-        }
-        RowShading& shades = own.shading;
-        RayCounts& counts = own.rays;
-        shades.clear();
-        for (int x = 0; x < options.width; x += kMaxPacket) {
-          const int count = std::min(kMaxPacket, options.width - x);
-          CameraRay cameraRays[kMaxPacket];
-          for (int i = 0; i < count; ++i) cameraRays[i] = tracer.cameraRays().ray(x + i, y);
-          if (reuse) {
-            for (int i = 0; i < count; ++i) {
-              const std::size_t at = std::size_t(x + i);
-              const std::uint32_t begin = at > 0 ? keptRow->ends[at - 1] : 0u;
-              tracer.gather(cameraRays[i], keptRow->hits.data() + begin, keptRow->ends[at] - begin,
-                            keptRow->depth[at], counts, shades);
-            }
-            continue;
-          }
-          float ends[kMaxPacket];
-          float depths[kMaxPacket];
-          for (int i = 0; i < count; ++i) ends[i] = limits != nullptr ? limits[x + i] : 1.0f;
-          tracer.visible(cameraRays, ends, count, found, depths);
-          for (int i = 0; i < count; ++i) {
-            tracer.gather(cameraRays[i], found[i].data(), found[i].size(), depths[i], counts,
-                          shades);
-            if (keptRow != nullptr) {
-              const std::size_t at = std::size_t(x + i);
-              keptRow->hits.insert(keptRow->hits.end(), found[i].begin(), found[i].end());
-              keptRow->ends[at] = std::uint32_t(keptRow->hits.size());
-              keptRow->depth[at] = depths[i];
-            }
-          }
-        }
-        if (reuse && sameQuestions(*keptRow, shades)) {
-          shades.answers = keptRow->answers;
-          counts.shadow -= shades.queries.size();
-        } else {
-          shades.traceShadows();
-          if (keptRow != nullptr) {
-            keptRow->queries = shades.queries;
-            keptRow->queryCasters = shades.queryCasters;
-            keptRow->answers = shades.answers;
-          }
-        }
-        for (int x = 0; x < options.width; ++x) {
-          const PixelResult p = tracer.resolve(shades, std::size_t(x));
-          float* rgba = &out.rgba[(row + std::size_t(x)) * 4];
-          rgba[0] = p.colour.r;
-          rgba[1] = p.colour.g;
-          rgba[2] = p.colour.b;
-          rgba[3] = p.transmitted;
-          out.depth[row + std::size_t(x)] = p.depth;
-        }
+        shadeSurfaces(tracer, y, options.width, limits, reuse, keptRow, own);
+        answerShadows(reuse, keptRow, own);
+        writeRow(tracer, own.shading, y, out);
         if (options.rowsDone) ++*options.rowsDone;
       },
       options.cancel);
