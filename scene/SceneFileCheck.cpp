@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace ivshadow {
@@ -162,34 +163,73 @@ std::string canonicalPath(const std::filesystem::path& path) {
   return ec ? path.string() : canonical.string();
 }
 
+// The text of a regular file, or nothing where Coin names what it cannot open itself: a
+// directory (File { name "." }) opens as a stream on Linux and throws on the first read (found
+// by the scene reader fuzzer).
+std::optional<std::string> readText(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string text;
+  // A regular file can still fail to read (/proc/self/mem: EIO on the first read, which
+  // libstdc++'s stream buffer throws as a bare basic_filebuf error).
+  try {
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  } catch (const std::exception&) {
+    throw InputError(path + ": error: cannot read: " + std::strerror(errno));
+  }
+  return text;
+}
+
+// The header as Coin reads it: its reader drops NUL bytes from the line (found by
+// SceneReaderFuzzer: "#Inventor V2.1 asci", 80 NULs and "i" was read as ASCII, and the cycle
+// it held, never checked, overflowed the stack).
+std::string headerOf(const std::string& text) {
+  std::string header = text.substr(0, text.find('\n'));
+  header.erase(std::remove(header.begin(), header.end(), '\0'), header.end());
+  return header;
+}
+
+// Whether Coin reads a file with this header as ASCII Inventor or VRML; binary files are left
+// to Coin.
+bool readAsAscii(const std::string& header) {
+  return header.rfind("#Inventor", 0) == 0 ? header.find("ascii") != std::string::npos
+                                           : header.rfind("#VRML", 0) == 0;
+}
+
 class Checker {
  public:
   void checkFile(const std::string& path, int nesting) {
-    // Coin names what it cannot open; a directory (File { name "." }) opens as a stream on
-    // Linux and throws on the first read (found by the scene reader fuzzer).
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return;
-    std::string text;
-    // A regular file can still fail to read (/proc/self/mem: EIO on the first read, which
-    // libstdc++'s stream buffer throws as a bare basic_filebuf error).
-    try {
-      text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    } catch (const std::exception&) {
-      throw InputError(path + ": error: cannot read: " + std::strerror(errno));
-    }
-    // The header as Coin reads it: its reader drops NUL bytes from the line (found by
-    // SceneReaderFuzzer: "#Inventor V2.1 asci", 80 NULs and "i" was read as ASCII, and the
-    // cycle it held, never checked, overflowed the stack).
-    std::string header = text.substr(0, text.find('\n'));
-    header.erase(std::remove(header.begin(), header.end(), '\0'), header.end());
-    const bool ascii = header.rfind("#Inventor", 0) == 0 ? header.find("ascii") != std::string::npos
-                                                         : header.rfind("#VRML", 0) == 0;
-    if (!ascii) return;
-    const bool vrml97 = header.rfind("#VRML V2.0", 0) == 0;
+    const std::optional<std::string> text = readText(path);
+    if (!text) return;
+    const std::string header = headerOf(*text);
+    if (!readAsAscii(header)) return;
     open_.push_back(canonicalPath(path));
+    Reading file(*text, path, nesting, header.rfind("#VRML V2.0", 0) == 0);
+    for (Token token; file.tokenizer.next(token);) {
+      if (file.percent.line == 0 && token.text.find('%') != std::string::npos) file.percent = token;
+      if (file.printsNames.line == 0 && printsNamesAsFormat(token, file.vrml97))
+        file.printsNames = token;
+      if (!readFieldValue(file, token)) readStructure(file, token);
+      file.before = {file.before[1], file.before[2], token};
+    }
+    refusePercent(file);
+    open_.pop_back();
+  }
 
+ private:
+  // What is known of one file while it is read, token by token.
+  struct Reading {
+    Reading(const std::string& text, const std::string& path, int nesting, bool vrml97)
+        : path(path), nesting(nesting), vrml97(vrml97), tokenizer(text, path) {}
+    // How deep the current node is nested, counting the files that include this one.
+    int depth() const { return nesting + int(braces.size()); }
+
+    const std::string& path;
+    const int nesting;  // the braces open in the files that include this one
+    const bool vrml97;
+    Tokenizer tokenizer;
     // Per open brace: the DEF name of the node it opens ("" for none). Per DEF name: the
     // depth of the brace of its newest definition while that is open, -1 once it is closed;
     // a USE refers to the newest definition, so a USE of an open one names an ancestor.
@@ -208,134 +248,151 @@ class Checker {
     std::vector<long long> imageSize;
     bool useNext = false;
     // The first '%' anywhere in the file's names and values, and the first node that names a
-    // file Coin may print as a format: the backstop below.
+    // file Coin may print as a format: the backstop (refusePercent).
     Token percent;
     Token printsNames;
     // Where an EXTERNPROTO is read: 1 its name next, 2 its interface's '[', 3 inside it, 4 its
     // url or url list next, 5 that list's first name next; 0 none.
     int externProto = 0;
-    Tokenizer tokenizer(text, path);
-    for (Token token; tokenizer.next(token);) {
-      if (percent.line == 0 && token.text.find('%') != std::string::npos) percent = token;
-      if (printsNames.line == 0 && printsNamesAsFormat(token, vrml97)) printsNames = token;
-      // A file name or an image size is read only while the tokens are what the field holds:
-      // anything else (a brace, IS, a connection) ends it and is read as usual.
-      bool consumed = false;
-      if (externProto != 0) {
-        consumed = true;
-        if (externProto == 1 || (externProto == 2 && token.is("[")) ||
-            (externProto == 3 && token.is("]"))) {
-          ++externProto;
-        } else if (externProto == 4 && token.is("[")) {
-          externProto = 5;
-        } else if (externProto >= 4) {
-          checkNamedFile(path, kExternProto, token, nesting + int(braces.size()));
-          externProto = 0;
-        } else if (externProto == 2) {
-          externProto = 0;  // not Coin's syntax: Coin reports it
-          consumed = false;
-        }
-      } else if (fileField != nullptr) {
-        // Inside brackets Coin reads names up to ']', braces included (found by
-        // SceneReaderFuzzer: a list holding "the}" and later "1.37%" was left at the brace).
-        if (!inList && !token.quoted && (token.is("{") || token.is("}") || token.is("]"))) {
-          fileField = nullptr;
-          inList = false;
-        } else if (!inList && token.is("[")) {
-          consumed = inList = true;
-          listIndex = 0;
-        } else if (inList && token.is("]")) {
-          consumed = true;
-          fileField = nullptr;
-          inList = false;
-        } else {
-          consumed = true;
-          if (!fileField->firstOnly || listIndex++ == 0)
-            checkNamedFile(path, *fileField, token, nesting + int(braces.size()));
-          if (!inList) fileField = nullptr;
-        }
-      } else if (imageField != nullptr) {
-        char* end = nullptr;
-        const long long value = std::strtoll(token.text.c_str(), &end, 0);
-        if (token.quoted || token.text.empty() || *end != '\0') {
-          imageField = nullptr;
-        } else {
-          consumed = true;
-          imageSize.push_back(value);
-          if (int(imageSize.size()) == imageField->dimensions + 1) {
-            checkImageSize(path, *imageField, imageSize, token.line, tokenizer.remaining());
-            imageField = nullptr;
-          }
-        }
-      }
-      if (consumed) {
-        // The field's value, checked above.
-      } else if (useNext) {
-        useNext = false;
-        const auto found = newest.find(token.text);
-        if (found != newest.end() && found->second > 0)
-          throw InputError(locationPrefix(path, token.line) + "error: USE " + token.text +
-                           " inside the node DEF " + token.text +
-                           " itself (a node that contains itself cannot be traversed)");
-      } else if (token.is("{")) {
-        const bool defined = before[0].is("DEF");
-        braces.push_back(defined ? before[1].text : "");
-        if (defined) newest[before[1].text] = int(braces.size());
-        if (nesting + int(braces.size()) > kMaxSceneNesting)
-          throw InputError(locationPrefix(path, token.line) + "error: nodes nested more than " +
-                           std::to_string(kMaxSceneNesting) + " levels deep");
-        types.push_back(before[2].quoted ? std::string() : before[2].text);
-      } else if (token.is("}")) {
-        if (!braces.empty()) {  // Coin reports an unbalanced brace itself
-          const std::string& name = braces.back();
-          if (!name.empty() && newest[name] == int(braces.size())) newest[name] = -1;
-          braces.pop_back();
-          types.pop_back();
-        }
-      } else if (token.is("USE")) {
-        useNext = true;
-      } else if (token.is(kExternProto.node)) {
-        externProto = 1;
-      } else if (!types.empty() && !token.quoted) {
-        for (const FileField& field : kFileFields) {
-          // Coin reads a field's name as an identifier: "name%x.iv" is the field name and a
-          // value (found by SceneReaderFuzzer: File { name%no_such_file.iv" }).
-          const std::size_t length = std::strlen(field.field);
-          const std::string& text = token.text;
-          if (!sameNode(types.back(), field.node, vrml97) ||
-              text.compare(0, length, field.field) != 0 ||
-              (text.size() > length &&
-               (std::isalnum(static_cast<unsigned char>(text[length])) || text[length] == '_')))
-            continue;
-          fileField = &field;
-          listIndex = 0;
-          if (text.size() > length) {
-            checkNamedFile(path, field, Token{text.substr(length), token.line, false},
-                           nesting + int(braces.size()));
-            fileField = nullptr;
-          }
-        }
-        for (const ImageField& field : kImageFields)
-          if (sameNode(types.back(), field.node, vrml97) && token.text == field.field) {
-            imageField = &field;
-            imageSize.clear();
-          }
-      }
-      before = {before[1], before[2], token};
-    }
-    // The checks above follow Coin's reader field by field, and each way they fell short of it
-    // let a '%' through to a crash (a second Inline, a list holding a brace, a value joined
-    // to its field's name). Whatever the file's structure, a '%' in a file with such a node
-    // is refused, naming both.
-    if (percent.line != 0 && printsNames.line != 0)
-      throw InputError(locationPrefix(path, percent.line) + "error: '" + percent.text +
-                       "' holds a '%' in a file holding " + printsNames.text + " (line " +
-                       std::to_string(printsNames.line) +
-                       "), a node whose file names Coin may print as a format; remove the '%'");
-    open_.pop_back();
+  };
+
+  // A file name or an image size is read only while the tokens are what the field holds:
+  // anything else (a brace, IS, a connection) ends it and is read as usual. Whether `token`
+  // was the field's value, checked here.
+  bool readFieldValue(Reading& file, const Token& token) {
+    if (file.externProto != 0) return readExternProto(file, token);
+    if (file.fileField != nullptr) return readFileName(file, token);
+    if (file.imageField != nullptr) return readImageSize(file, token);
+    return false;
   }
 
- private:
+  bool readExternProto(Reading& file, const Token& token) {
+    if (file.externProto == 1 || (file.externProto == 2 && token.is("[")) ||
+        (file.externProto == 3 && token.is("]"))) {
+      ++file.externProto;
+    } else if (file.externProto == 4 && token.is("[")) {
+      file.externProto = 5;
+    } else if (file.externProto >= 4) {
+      checkNamedFile(file.path, kExternProto, token, file.depth());
+      file.externProto = 0;
+    } else if (file.externProto == 2) {
+      file.externProto = 0;  // not Coin's syntax: Coin reports it
+      return false;
+    }
+    return true;
+  }
+
+  bool readFileName(Reading& file, const Token& token) {
+    // Inside brackets Coin reads names up to ']', braces included (found by
+    // SceneReaderFuzzer: a list holding "the}" and later "1.37%" was left at the brace).
+    if (!file.inList && !token.quoted && (token.is("{") || token.is("}") || token.is("]"))) {
+      file.fileField = nullptr;
+      file.inList = false;
+      return false;
+    }
+    if (!file.inList && token.is("[")) {
+      file.inList = true;
+      file.listIndex = 0;
+    } else if (file.inList && token.is("]")) {
+      file.fileField = nullptr;
+      file.inList = false;
+    } else {
+      if (!file.fileField->firstOnly || file.listIndex++ == 0)
+        checkNamedFile(file.path, *file.fileField, token, file.depth());
+      if (!file.inList) file.fileField = nullptr;
+    }
+    return true;
+  }
+
+  static bool readImageSize(Reading& file, const Token& token) {
+    char* end = nullptr;
+    const long long value = std::strtoll(token.text.c_str(), &end, 0);
+    if (token.quoted || token.text.empty() || *end != '\0') {
+      file.imageField = nullptr;
+      return false;
+    }
+    file.imageSize.push_back(value);
+    if (int(file.imageSize.size()) == file.imageField->dimensions + 1) {
+      checkImageSize(file.path, *file.imageField, file.imageSize, token.line,
+                     file.tokenizer.remaining());
+      file.imageField = nullptr;
+    }
+    return true;
+  }
+
+  // A token outside a field's value: nodes, their braces, DEF and USE, and the names of the
+  // fields whose values are checked.
+  void readStructure(Reading& file, const Token& token) {
+    if (file.useNext) {
+      file.useNext = false;
+      const auto found = file.newest.find(token.text);
+      if (found != file.newest.end() && found->second > 0)
+        throw InputError(locationPrefix(file.path, token.line) + "error: USE " + token.text +
+                         " inside the node DEF " + token.text +
+                         " itself (a node that contains itself cannot be traversed)");
+    } else if (token.is("{")) {
+      const bool defined = file.before[0].is("DEF");
+      file.braces.push_back(defined ? file.before[1].text : "");
+      if (defined) file.newest[file.before[1].text] = int(file.braces.size());
+      if (file.depth() > kMaxSceneNesting)
+        throw InputError(locationPrefix(file.path, token.line) + "error: nodes nested more than " +
+                         std::to_string(kMaxSceneNesting) + " levels deep");
+      file.types.push_back(file.before[2].quoted ? std::string() : file.before[2].text);
+    } else if (token.is("}")) {
+      if (!file.braces.empty()) {  // Coin reports an unbalanced brace itself
+        const std::string& name = file.braces.back();
+        if (!name.empty() && file.newest[name] == int(file.braces.size())) file.newest[name] = -1;
+        file.braces.pop_back();
+        file.types.pop_back();
+      }
+    } else if (token.is("USE")) {
+      file.useNext = true;
+    } else if (token.is(kExternProto.node)) {
+      file.externProto = 1;
+    } else if (!file.types.empty() && !token.quoted) {
+      readFieldName(file, token);
+    }
+  }
+
+  // A field of the current node whose value names a file or holds an image comes next.
+  void readFieldName(Reading& file, const Token& token) {
+    const std::string& type = file.types.back();
+    for (const FileField& field : kFileFields) {
+      // Coin reads a field's name as an identifier: "name%x.iv" is the field name and a
+      // value (found by SceneReaderFuzzer: File { name%no_such_file.iv" }).
+      const std::size_t length = std::strlen(field.field);
+      const std::string& text = token.text;
+      if (!sameNode(type, field.node, file.vrml97) || text.compare(0, length, field.field) != 0 ||
+          (text.size() > length &&
+           (std::isalnum(static_cast<unsigned char>(text[length])) || text[length] == '_')))
+        continue;
+      file.fileField = &field;
+      file.listIndex = 0;
+      if (text.size() > length) {
+        checkNamedFile(file.path, field, Token{text.substr(length), token.line, false},
+                       file.depth());
+        file.fileField = nullptr;
+      }
+    }
+    for (const ImageField& field : kImageFields)
+      if (sameNode(type, field.node, file.vrml97) && token.text == field.field) {
+        file.imageField = &field;
+        file.imageSize.clear();
+      }
+  }
+
+  // The checks above follow Coin's reader field by field, and each way they fell short of it
+  // let a '%' through to a crash (a second Inline, a list holding a brace, a value joined
+  // to its field's name). Whatever the file's structure, a '%' in a file with such a node
+  // is refused, naming both.
+  static void refusePercent(const Reading& file) {
+    if (file.percent.line != 0 && file.printsNames.line != 0)
+      throw InputError(locationPrefix(file.path, file.percent.line) + "error: '" +
+                       file.percent.text + "' holds a '%' in a file holding " +
+                       file.printsNames.text + " (line " + std::to_string(file.printsNames.line) +
+                       "), a node whose file names Coin may print as a format; remove the '%'");
+  }
+
   // A file named by `field`, found beside the file that names it as Coin finds it: only a
   // regular file (a FIFO or /dev/zero blocked the reader forever), a scene not one of the
   // files being read, and no '%' where Coin would print the name as a format.
