@@ -1,8 +1,8 @@
 #include "cli/ChildProcesses.h"
 
-#include <fcntl.h>
+#include "cli/ChildSpawn.h"
+
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,25 +11,12 @@
 #include <cstring>
 #include <stdexcept>
 
-extern char** environ;
-
 namespace ivshadow {
 
 void ChildProcesses::start(int id, const std::vector<std::string>& arguments,
                            const std::string& stderrPath) {
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, stderrPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                   0644);
-  pid_t pid = 0;
-  const int status = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (status != 0)
-    throw std::runtime_error("cannot start " + arguments[0] + ": " + std::strerror(status));
+  const pid_t pid = spawnChild(
+      arguments, {ChildStream::writeTo(1, "/dev/null"), ChildStream::freshFile(2, stderrPath)});
   running_.push_back({pid, id});
 }
 

@@ -1,13 +1,13 @@
 #include "cli/RenderWorkers.h"
 
 #include "cli/ChildProcesses.h"
+#include "cli/ChildSpawn.h"
 #include "cli/InterruptGuard.h"
 #include "cli/VariantsWorker.h"
 
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,8 +15,6 @@
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
-
-extern char** environ;
 
 namespace ivshadow {
 
@@ -51,25 +49,19 @@ void RenderWorkers::spawn(Worker& worker) {
   int ends[2];
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
     throw std::runtime_error(std::string("cannot start a render worker: ") + std::strerror(errno));
-  const std::vector<std::string> arguments = {executable_, "variants-worker"};
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, ends[1], 0);
-  posix_spawn_file_actions_adddup2(&actions, ends[1], 1);
-  // Between variants a worker has nothing to say: a render process's last words (at its exit)
-  // went to its log, deleted once read, never to the terminal.
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  const int status = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  close(ends[1]);
-  if (status != 0) {
+  pid_t pid = -1;
+  try {
+    // Between variants a worker has nothing to say: a render process's last words (at its
+    // exit) went to its log, deleted once read, never to the terminal.
+    pid = spawnChild({executable_, "variants-worker"},
+                     {ChildStream::descriptor(0, ends[1]), ChildStream::descriptor(1, ends[1]),
+                      ChildStream::writeTo(2, "/dev/null")});
+  } catch (const std::runtime_error&) {
     close(ends[0]);
-    throw std::runtime_error("cannot start " + executable_ + ": " + std::strerror(status));
+    close(ends[1]);
+    throw;
   }
+  close(ends[1]);
   worker.pid = pid;
   worker.socket = ends[0];
   worker.received.clear();
