@@ -4,11 +4,10 @@
 #include "cli/ExitStatus.h"
 #include "cli/InterruptGuard.h"
 #include "cli/OutputDirectory.h"
-#include "cli/ProgressBar.h"
 #include "cli/RenderMemory.h"
 #include "cli/SlurmScript.h"
+#include "cli/SweepRun.h"
 #include "cli/VariantManifest.h"
-#include "cli/VariantRenders.h"
 #include "cli/VariantShard.h"
 #include "cli/VariantsMerge.h"
 #include "cli/VariantsPlan.h"
@@ -22,52 +21,14 @@
 #include "scene/VariantsFile.h"
 
 #include <Inventor/nodes/SoSeparator.h>
-#include <unistd.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
-#include <csignal>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <set>
 
 namespace ivshadow {
 namespace {
-
-std::string hostName() {
-  char name[256] = {};
-  gethostname(name, sizeof name - 1);
-  return name;
-}
-
-std::string readFirstLine(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  return line;
-}
-
-// The child names the --set that failed; the variants file line of that assignment is where
-// the user must look.
-int lineOfFailure(const Variant& variant, const std::string& error) {
-  for (const Variant::Assignment& assignment : variant.assignments)
-    if (error.find(assignment.text) != std::string::npos) return assignment.line;
-  return variant.line;
-}
-
-// Files a render killed while writing leaves: the temporaries (AtomicFile's ".FILE.tmpPID")
-// of its picture and of its statistics scratch file, in the output directory.
-void removeTemporaries(const std::string& dir, const std::string& name) {
-  std::error_code ec;
-  const std::string prefixes[] = {"." + name + ".png.tmp", ".." + name + ".stats.json.tmp"};
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    for (const std::string& prefix : prefixes)
-      if (entry.path().filename().string().rfind(prefix, 0) == 0)
-        std::filesystem::remove(entry.path(), ec);
-}
 
 // The variants this run renders: those of its shard, and of those the ones --only names.
 std::vector<std::size_t> selectVariants(const VariantsOptions& options,
@@ -166,6 +127,104 @@ int writeSlurmScripts(const VariantsOptions& options, const VariantsPlan& plan) 
   return 0;
 }
 
+// A count the command line gives, which must be a whole number of at least 1.
+void checkCount(const char* option, int value) {
+  if (value < 1)
+    throw InputError(std::string(option) + " " + std::to_string(value) +
+                     ": error: expected a whole number of at least 1");
+}
+
+// What no variant could render with, refused before the variants file is read: every
+// variant's render checks its own size (memory for its shadow method, the GL limits); this
+// refuses at once what none could render with --jobs at a time.
+void checkRenderOptions(const VariantsOptions& options) {
+  const ImageSize size = ImageSize::parse(options.size, "--size");
+  checkCount("--frames", options.frames);
+  checkCount("--jobs", options.jobs);
+  MemoryBudget::check(size, {kFrameBytesPerPixel, kFrameFixedBytes},
+                      "a render of the plainest variant", options.jobs, MemoryBudget::available());
+  outputDirectory(options).check();
+  if (!options.slurmDir.empty()) slurmDirectory(options).check();
+}
+
+// The options that split a sweep into parts go together: --shards and --limit shape the
+// Slurm array, whose scripts cover the whole sweep and choose a part per array task.
+void checkPartOptions(const VariantsOptions& options) {
+  if (options.slurmDir.empty() && (options.shards != 0 || options.limit != 0))
+    throw InputError(std::string(options.shards != 0 ? "--shards" : "--limit") +
+                     ": error: only for --slurm DIR (the array's tasks); a run of one part "
+                     "takes --shard K/N");
+  if (!options.slurmDir.empty() &&
+      (!options.shard.empty() || !options.only.empty() || options.list))
+    throw InputError(
+        "--slurm: error: writes the scripts of the whole sweep; it cannot be "
+        "combined with --shard, --only or --list");
+}
+
+// One line a variant: its name, a tab, and the command that renders it alone, for GNU
+// parallel or any queue (docs/VARIANTS.md).
+void listParts(const VariantsOptions& options, const VariantsPlan& plan,
+               const std::vector<std::size_t>& selected) {
+  for (std::size_t i : selected) {
+    std::vector<std::string> command =
+        partCommand(options, options.base, options.variantsFile, options.outputDir);
+    command.push_back("--only");
+    command.push_back(plan.variants[i].name);
+    std::cout << plan.variants[i].name << '\t' << shellCommand(command) << '\n';
+  }
+}
+
+// The selected variants left to render: one whose manifest is current and whose picture
+// exists was rendered by an earlier run (or another shard); it is kept, not rendered again.
+std::vector<std::size_t> variantsToRender(const VariantsOptions& options, const VariantsPlan& plan,
+                                          const std::vector<std::size_t>& selected) {
+  const SweepState before =
+      SweepState::collect(plan, options.outputDir, SweepState::BrokenManifest::RenderAgain);
+  std::vector<std::size_t> todo;
+  for (std::size_t i : selected)
+    if (!before.outcomes[i].ok()) todo.push_back(i);
+  return todo;
+}
+
+// The whole sweep ran here: the reports, as variants-merge would write them.
+int reportWholeSweep(const VariantsOptions& options, const VariantsPlan& plan,
+                     const std::string& keptText) {
+  const SweepState state = SweepState::collect(plan, options.outputDir);
+  reportSweep(plan, state, options.outputDir);
+  std::cout << "rendered " << state.done << " of " << plan.variants.size() << " variants to "
+            << options.outputDir << " (variants.csv, index.html" << keptText << ")\n";
+  return state.exitStatus();
+}
+
+// A part of a sweep: its errors now, the reports from variants-merge once all parts ran.
+int reportPart(const VariantsOptions& options, const VariantsPlan& plan,
+               const std::vector<std::size_t>& selected, const SweepRun& run,
+               const std::string& keptText) {
+  for (std::size_t i : run.todo()) {
+    const std::optional<VariantManifest> manifest =
+        VariantManifest::read(options.outputDir, plan.variants[i].name);
+    if (manifest && !manifest->ok()) std::cerr << manifest->error << '\n';
+  }
+  const std::string part =
+      options.shard.empty() ? "the variants --only names" : "shard " + options.shard;
+  const std::string merge =
+      "; `ivshadow variants-merge " + options.outputDir + "` writes the reports\n";
+  if (selected.empty()) {
+    // More shards than variants: this one was given none.
+    std::cout << part << " holds none of the sweep's " << plan.variants.size()
+              << " variants; nothing to render" << merge;
+  } else if (run.todo().empty()) {
+    // "rendered 0 of 0" would read as a failure; the part is done, by this or another run.
+    std::cout << part << ": nothing left to render; all " << selected.size()
+              << " of its variants were already rendered to " << options.outputDir << merge;
+  } else {
+    std::cout << "rendered " << run.rendered() << " of " << run.todo().size() << " variants"
+              << (options.shard.empty() ? std::string() : " of shard " + options.shard) << " to "
+              << options.outputDir << keptText << merge;
+  }
+  return run.exitStatus();
+}
+
 }  // namespace
 
 int runVariants(const VariantsOptions& options) {
@@ -175,20 +234,7 @@ int runVariants(const VariantsOptions& options) {
   const InterruptGuard guard;
   const std::atomic<bool>& interrupted = InterruptGuard::flag();
   return withExitStatus([&] {
-    const ImageSize size = ImageSize::parse(options.size, "--size");
-    if (options.frames < 1)
-      throw InputError("--frames " + std::to_string(options.frames) +
-                       ": error: expected a whole number of at least 1");
-    if (options.jobs < 1)
-      throw InputError("--jobs " + std::to_string(options.jobs) +
-                       ": error: expected a whole number of at least 1");
-    // Every variant's render checks its own size (memory for its shadow method, the GL
-    // limits); this refuses at once what no variant could render with --jobs at a time.
-    MemoryBudget::check(size, {kFrameBytesPerPixel, kFrameFixedBytes},
-                        "a render of the plainest variant", options.jobs,
-                        MemoryBudget::available());
-    outputDirectory(options).check();
-    if (!options.slurmDir.empty()) slurmDirectory(options).check();
+    checkRenderOptions(options);
     std::vector<Variant> parsed = readVariantsFile(options.variantsFile);
     checkOutputPaths(options, parsed);
     const std::vector<std::size_t> selected = selectVariants(options, parsed);
@@ -196,190 +242,29 @@ int runVariants(const VariantsOptions& options) {
     loadScene(options.base);  // a broken base scene is one error, not one per variant
     const VariantsPlan plan = VariantsPlan::make(options.base, options.variantsFile, options.size,
                                                  options.frames, std::move(parsed));
-    const std::vector<Variant>& variants = plan.variants;
-    if (options.slurmDir.empty() && (options.shards != 0 || options.limit != 0))
-      throw InputError(std::string(options.shards != 0 ? "--shards" : "--limit") +
-                       ": error: only for --slurm DIR (the array's tasks); a run of one part "
-                       "takes --shard K/N");
-    if (!options.slurmDir.empty()) {
-      // The scripts cover the whole sweep; a part of it is chosen per array task.
-      if (!options.shard.empty() || !options.only.empty() || options.list)
-        throw InputError(
-            "--slurm: error: writes the scripts of the whole sweep; it cannot be "
-            "combined with --shard, --only or --list");
-      return writeSlurmScripts(options, plan);
-    }
+    checkPartOptions(options);
+    if (!options.slurmDir.empty()) return writeSlurmScripts(options, plan);
     if (options.list) {
-      // One line a variant: its name, a tab, and the command that renders it alone, for GNU
-      // parallel or any queue (docs/VARIANTS.md).
-      for (std::size_t i : selected) {
-        std::vector<std::string> command =
-            partCommand(options, options.base, options.variantsFile, options.outputDir);
-        command.push_back("--only");
-        command.push_back(variants[i].name);
-        std::cout << variants[i].name << '\t' << shellCommand(command) << '\n';
-      }
+      listParts(options, plan, selected);
       return 0;
     }
     outputDirectory(options).create();
     OutputDirectory{"-o", options.outputDir + "/manifests", "the sweep's manifests"}.create();
-    std::error_code made;
     plan.write(options.outputDir);
 
-    // A variant whose manifest is current and whose picture exists was rendered by an
-    // earlier run (or another shard); it is kept, not rendered again.
-    const SweepState before =
-        SweepState::collect(plan, options.outputDir, SweepState::BrokenManifest::RenderAgain);
-    std::vector<std::size_t> todo;
-    for (std::size_t i : selected)
-      if (!before.outcomes[i].ok()) todo.push_back(i);
-    const int kept = int(selected.size() - todo.size());
-
-    const std::string host = hostName();
-    ProgressBar bar;
-    const std::unique_ptr<VariantRenders> renders = VariantRenders::create(options.jobs);
-    std::vector<std::chrono::steady_clock::time_point> started(variants.size());
-    std::size_t next = 0;
-    int finished = 0, rendered = 0, failed = 0, badInput = 0;
-    const int total = int(todo.size());
-    auto scratch = [&](std::size_t i, const char* what) {
-      return options.outputDir + "/." + variants[i].name + what;
-    };
-    bool stopping = false;
-    std::set<std::string> saidIdle;
-    // Keeps every worker busy: called again as soon as a render ends, so that the next
-    // variant renders while this process files the one that ended.
-    const auto startRenders = [&] {
-      while (next < todo.size() && !renders->full() && !interrupted) {
-        const std::size_t i = todo[next];
-        RenderOptions render;
-        render.scene = options.base;
-        render.output = options.outputDir + "/" + variants[i].name + ".png";
-        render.size = options.size;
-        render.frames = options.frames;
-        render.statsPath = scratch(i, ".stats.json");
-        for (const Variant::Assignment& assignment : variants[i].assignments)
-          render.assignments.push_back(assignment.text);
-        started[i] = std::chrono::steady_clock::now();
-        renders->start(int(i), render, scratch(i, ".log"));
-        ++next;
-      }
-    };
-    while ((next < todo.size() && !interrupted) || !renders->empty()) {
-      if (interrupted && !stopping) {
-        // The terminal sent Ctrl-C to the renders too; a signal sent to this process alone
-        // reaches them here.
-        stopping = true;
-        renders->signalAll(SIGINT);
-      }
-      startRenders();
-      if (renders->empty()) continue;  // interrupted before any render started
-      const std::optional<VariantRenders::Finished> ended = renders->waitAny();
-      if (!ended) continue;  // a signal: the loop sees to it
-      const VariantRenders::Finished& done = *ended;
-      const std::size_t i = std::size_t(done.id);
-      startRenders();
-      if (interrupted && done.exitCode != 0) {
-        // Interrupted, not failed: no manifest, so a rerun renders it.
-        std::filesystem::remove(scratch(i, ".stats.json"), made);
-        std::filesystem::remove(scratch(i, ".log"), made);
-        removeTemporaries(options.outputDir, variants[i].name);
-        continue;
-      }
-      VariantManifest outcome;
-      outcome.variant = variants[i].name;
-      for (const Variant::Assignment& assignment : variants[i].assignments)
-        outcome.assignments.push_back(assignment.text);
-      outcome.size = options.size;
-      outcome.frames = options.frames;
-      outcome.hash = plan.hashes[i];
-      outcome.host = host;
-      outcome.seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started[i]).count();
-      outcome.exitCode = done.exitCode;
-      if (done.exitCode == 0) {
-        std::ifstream in(scratch(i, ".stats.json"));
-        outcome.stats = nlohmann::json::parse(in, nullptr, false);
-        // A setting that did nothing on the path this machine renders by: said once here for
-        // the sweep, and kept with the variant for its report.
-        if (outcome.stats.is_object()) {
-          std::ifstream log(scratch(i, ".log"));
-          nlohmann::json idle = nlohmann::json::array();
-          for (std::string line; std::getline(log, line);) {
-            const std::size_t at = line.find("): ");
-            if (line.find(" does nothing: ") == std::string::npos) continue;
-            const std::string what = at == std::string::npos ? line : line.substr(at + 3);
-            idle.push_back(what);
-            if (saidIdle.insert(what).second)
-              std::cerr << "ivshadow: warning: variant " << variants[i].name << ": " << what
-                        << '\n';
-          }
-          if (!idle.empty()) outcome.stats["idle_settings"] = idle;
-        }
-      } else {
-        const std::string message = readFirstLine(scratch(i, ".log"));
-        const char* fallback =
-            done.exitCode == -1 ? "the render was killed by a signal" : "the render failed";
-        outcome.error = options.variantsFile + ":" +
-                        std::to_string(lineOfFailure(variants[i], message)) + ": error: variant " +
-                        variants[i].name + ": " + (message.empty() ? fallback : message);
-      }
-      outcome.write(options.outputDir);
-      std::filesystem::remove(scratch(i, ".stats.json"), made);
-      std::filesystem::remove(scratch(i, ".log"), made);
-      // Also after a retried success: a worker killed while it wrote the variant's files left
-      // temporaries named for its own process, which the retry's process did not replace.
-      if (done.exitCode != 0 || done.retried)
-        removeTemporaries(options.outputDir, variants[i].name);
-      if (done.exitCode == 0) {
-        ++rendered;
-      } else {
-        ++failed;
-        badInput += done.exitCode == 2 ? 1 : 0;
-      }
-      bar.update(++finished, total, variants[i].name);
-    }
+    SweepRun run(options, plan, variantsToRender(options, plan, selected), interrupted);
+    run.renderAll();
     if (interrupted) {
-      std::cerr << "ivshadow: interrupted: " << rendered << " of " << total
+      std::cerr << "ivshadow: interrupted: " << run.rendered() << " of " << run.todo().size()
                 << " variants rendered to " << options.outputDir << "; no report written\n";
       return InterruptGuard::exitStatus();
     }
-
+    const std::size_t kept = selected.size() - run.todo().size();
     const std::string keptText =
         kept > 0 ? ", " + std::to_string(kept) + " kept from an earlier run" : std::string();
-    if (options.shard.empty() && options.only.empty()) {
-      // The whole sweep ran here: the reports, as variants-merge would write them.
-      const SweepState state = SweepState::collect(plan, options.outputDir);
-      reportSweep(plan, state, options.outputDir);
-      std::cout << "rendered " << state.done << " of " << variants.size() << " variants to "
-                << options.outputDir << " (variants.csv, index.html" << keptText << ")\n";
-      return state.exitStatus();
-    }
-    // A part of a sweep: its errors now, the reports from variants-merge once all parts ran.
-    for (std::size_t i : todo) {
-      const std::optional<VariantManifest> manifest =
-          VariantManifest::read(options.outputDir, variants[i].name);
-      if (manifest && !manifest->ok()) std::cerr << manifest->error << '\n';
-    }
-    const std::string part =
-        options.shard.empty() ? "the variants --only names" : "shard " + options.shard;
-    const std::string merge =
-        "; `ivshadow variants-merge " + options.outputDir + "` writes the reports\n";
-    if (selected.empty()) {
-      // More shards than variants: this one was given none.
-      std::cout << part << " holds none of the sweep's " << variants.size()
-                << " variants; nothing to render" << merge;
-    } else if (todo.empty()) {
-      // "rendered 0 of 0" would read as a failure; the part is done, by this or another run.
-      std::cout << part << ": nothing left to render; all " << selected.size()
-                << " of its variants were already rendered to " << options.outputDir << merge;
-    } else {
-      std::cout << "rendered " << rendered << " of " << total << " variants"
-                << (options.shard.empty() ? std::string() : " of shard " + options.shard) << " to "
-                << options.outputDir << keptText << merge;
-    }
-    if (failed == 0) return 0;
-    return badInput == failed ? 2 : 1;
+    if (options.shard.empty() && options.only.empty())
+      return reportWholeSweep(options, plan, keptText);
+    return reportPart(options, plan, selected, run, keptText);
   });
 }
 
