@@ -1,5 +1,7 @@
 #include "cli/ImageArguments.h"
 
+#include "image/AtomicFile.h"
+#include "image/CommandPaths.h"
 #include "image/ImageFile.h"
 #include "scene/InputError.h"
 
@@ -13,6 +15,14 @@ void checkImageOutput(const std::string& option, const std::string& path) {
     throw InputError(path + ": error: " + option +
                      " names a directory; expected the name of an image file, e.g. " +
                      (std::filesystem::path(path) / "picture.png").string());
+}
+
+void checkPictureOutputs(const std::string& scene, const std::string& output,
+                         const std::string& option, const std::string& path) {
+  CommandPaths().input("scene", scene).output("-o", output).output(option, path).check();
+  checkImageOutput("-o", output);
+  imageFormatFor(output);
+  AtomicFile::checkWritable(output, "the image");
 }
 
 void checkImageInput(const std::string& argument, const std::string& path) {

@@ -9,7 +9,6 @@
 #include "cli/RenderMemory.h"
 #include "headless/CoinOffscreenContexts.h"
 #include "image/AtomicFile.h"
-#include "image/CommandPaths.h"
 #include "image/ImageFile.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
@@ -35,6 +34,57 @@
 #include <iostream>
 
 namespace ivshadow {
+namespace {
+
+// Only the groups that ask for it bounce: --bounce says so where none does.
+void warnIfNothingBounces(const ReferenceCommandOptions& options, SoNode* root) {
+  if (!options.bounceGiven || options.bounce <= 0) return;
+  bool groups = false;
+  forEachNodeOfType<SoTransparentShadowGroup>(root, [&](SoTransparentShadowGroup& g) {
+    groups = groups || (g.isActive.getValue() && g.bounce.getValue());
+  });
+  if (!groups)
+    std::cerr << options.scene
+              << ": warning: --bounce: no active TransparentShadowGroup has bounce TRUE, so "
+                 "no light bounces\n";
+}
+
+// Traces `root` on a thread of its own while this one shows the rows done as a progress bar,
+// for a trace that makes the user wait (a second from `start`). Nothing when interrupted.
+std::optional<ReferenceResult> traceWithProgress(SoNode* root, ReferenceOptions reference,
+                                                 std::chrono::steady_clock::time_point start) {
+  std::atomic<int> rows{0};
+  reference.rowsDone = &rows;
+  auto future = std::async(std::launch::async, [&] { return renderReference(root, reference); });
+  ProgressBar bar;
+  bool shown = false;
+  while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
+    if (std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) continue;
+    if (bar.terminal() || !shown) bar.update(rows.load(), reference.height, "rows");
+    shown = true;
+  }
+  std::optional<ReferenceResult> result = future.get();
+  if (shown && bar.terminal() && rows.load() < reference.height) std::cerr << '\n';
+  return result;
+}
+
+// The picture and, with --pfm, its unrounded floats: both files or neither. False when a
+// signal came after the trace's last row or during the writes, which leaves no file either.
+bool writeFiles(const ReferenceCommandOptions& options, const ReferenceResult& result,
+                const std::atomic<bool>& interrupted) {
+  const Image picture = result.image.toImage();
+  OutputFiles outputs;
+  outputs.addImage(options.output, picture);
+  if (!options.pfm.empty()) {
+    const FloatImage& image = result.image;
+    outputs.add(options.pfm, [&](const std::string& file) {
+      writePfmTo(file, options.pfm, image.width, image.height, image.rgb);
+    });
+  }
+  return outputs.commit(&interrupted);
+}
+
+}  // namespace
 
 int runReference(const ReferenceCommandOptions& options) {
   // From the start: Ctrl-C while the scene loads stops the render as soon as it begins, so
@@ -52,14 +102,7 @@ int runReference(const ReferenceCommandOptions& options) {
     std::vector<FieldAssignment> assignments;
     for (const std::string& text : options.assignments)
       assignments.push_back(FieldAssignment::parse(text));
-    CommandPaths()
-        .input("scene", options.scene)
-        .output("-o", options.output)
-        .output("--pfm", options.pfm)
-        .check();
-    checkImageOutput("-o", options.output);
-    imageFormatFor(options.output);
-    AtomicFile::checkWritable(options.output, "the image");
+    checkPictureOutputs(options.scene, options.output, "--pfm", options.pfm);
     MemoryBudget::check(size, kReferenceCost, "the reference render", 1, MemoryBudget::available());
     if (!options.pfm.empty()) AtomicFile::checkWritable(options.pfm, "the float image");
 
@@ -71,40 +114,16 @@ int runReference(const ReferenceCommandOptions& options) {
       assignment.apply(scene.root.get(), options.scene);
     const ViewSetup view = ViewSetup::prepare(
         scene.root.get(), SbViewportRegion(short(size.width), short(size.height)));
-    if (options.bounceGiven && options.bounce > 0) {
-      // Only the groups that ask for it bounce: say so where none does.
-      bool groups = false;
-      forEachNodeOfType<SoTransparentShadowGroup>(
-          scene.root.get(), [&](SoTransparentShadowGroup& g) {
-            groups = groups || (g.isActive.getValue() && g.bounce.getValue());
-          });
-      if (!groups)
-        std::cerr << options.scene
-                  << ": warning: --bounce: no active TransparentShadowGroup has bounce TRUE, so "
-                     "no light bounces\n";
-    }
+    warnIfNothingBounces(options, scene.root.get());
 
     ReferenceOptions reference;
     reference.width = size.width;
     reference.height = size.height;
     reference.threads = options.threads;
     reference.bounceSamples = options.bounce;
-    std::atomic<int> rows{0};
-    reference.rowsDone = &rows;
     reference.cancel = &interrupted;
     const auto start = std::chrono::steady_clock::now();
-    auto future =
-        std::async(std::launch::async, [&] { return renderReference(view.root.get(), reference); });
-    ProgressBar bar;
-    bool shown = false;
-    while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
-      // Only renders that make the user wait get a bar.
-      if (std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) continue;
-      if (bar.terminal() || !shown) bar.update(rows.load(), size.height, "rows");
-      shown = true;
-    }
-    std::optional<ReferenceResult> result = future.get();
-    if (shown && bar.terminal() && rows.load() < size.height) std::cerr << '\n';
+    std::optional<ReferenceResult> result = traceWithProgress(view.root.get(), reference, start);
     if (!result) {
       std::cerr << "ivshadow: interrupted; nothing written\n";
       return InterruptGuard::exitStatus();
@@ -114,18 +133,7 @@ int runReference(const ReferenceCommandOptions& options) {
     if (const std::string error = drawUntracedOver(view.root.get(), reference.background, *result);
         !error.empty())
       std::cerr << options.scene << ": warning: the shapes GL draws are missing: " << error << '\n';
-    // Both files or neither.
-    const Image picture = result->image.toImage();
-    OutputFiles outputs;
-    outputs.addImage(options.output, picture);
-    if (!options.pfm.empty()) {
-      const FloatImage& image = result->image;
-      outputs.add(options.pfm, [&](const std::string& file) {
-        writePfmTo(file, options.pfm, image.width, image.height, image.rgb);
-      });
-    }
-    // A signal after the trace's last row, or during the writes, leaves no file either.
-    if (!outputs.commit(&interrupted)) {
+    if (!writeFiles(options, *result, interrupted)) {
       std::cerr << "ivshadow: interrupted; nothing written\n";
       return InterruptGuard::exitStatus();
     }

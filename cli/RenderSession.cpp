@@ -11,7 +11,6 @@
 #include "headless/FrameStatistics.h"
 #include "headless/OffscreenRenderer.h"
 #include "image/AtomicFile.h"
-#include "image/CommandPaths.h"
 #include "image/ImageFile.h"
 #include "image/ImageSize.h"
 #include "image/MemoryBudget.h"
@@ -51,6 +50,37 @@ bool tracedAlone(const DeepShadowStatistics& before, const DeepShadowStatistics&
          peeling.tracedFrames == 0;
 }
 
+// Writes the picture the frames left, and their statistics with --stats, and says so: 0, or
+// the interrupt's exit status when a signal came first. `before`: the statistics the kept
+// scene had before the frames, which the render's own statistics leave out.
+int writeOutputs(const RenderOptions& options, const ImageSize& size, OffscreenRenderer& renderer,
+                 SoNode* root, const std::vector<double>& wallMs, const std::vector<double>& gpuMs,
+                 const DeepShadowStatistics* before) {
+  // Both files or neither: statistics that cannot be written (a full disk) take the
+  // picture with them, as the exit status says.
+  const Image picture = renderer.read();
+  OutputFiles outputs;
+  outputs.addImage(options.output, picture);
+  if (!options.statsPath.empty()) {
+    const std::string name = transparencyTypeName(renderer.action().getTransparencyType());
+    outputs.addText(
+        options.statsPath,
+        renderStatistics(options, renderer, wallMs, gpuMs, name, root, before).dump(2) + "\n");
+  }
+  // From here a signal would leave the temporaries behind: it is held off until the files
+  // are written, then none of them is kept.
+  const InterruptGuard guard;
+  if (!outputs.commit(&InterruptGuard::flag())) {
+    std::cerr << "ivshadow: interrupted; nothing written\n";
+    return InterruptGuard::exitStatus();
+  }
+  std::cout << "wrote " << options.output << " (" << size.toString() << ", " << options.frames
+            << (options.frames == 1 ? " frame, " : " frames, median ")
+            << FrameStatistics::median(wallMs) << " ms on " << renderer.capabilities().renderer
+            << ")\n";
+  return 0;
+}
+
 }  // namespace
 
 int RenderSession::render(const RenderOptions& options) {
@@ -76,14 +106,7 @@ int RenderSession::renderScene(const RenderOptions& options, bool& keep) {
     for (const std::string& text : options.assignments) {
       assignments.push_back(FieldAssignment::parse(text));
     }
-    CommandPaths()
-        .input("scene", options.scene)
-        .output("-o", options.output)
-        .output("--stats", options.statsPath)
-        .check();
-    checkImageOutput("-o", options.output);
-    imageFormatFor(options.output);
-    AtomicFile::checkWritable(options.output, "the image");
+    checkPictureOutputs(options.scene, options.output, "--stats", options.statsPath);
     if (!options.statsPath.empty()) AtomicFile::checkWritable(options.statsPath, "statistics");
 
     init();
@@ -92,38 +115,10 @@ int RenderSession::renderScene(const RenderOptions& options, bool& keep) {
     // The statistics report GPU time per pass; without them no pass waits for its timer.
     setPassTiming(!options.statsPath.empty());
     const std::optional<KeptScene::FileState> file = KeptScene::stateOf(options.scene);
-    // A render that would neither put back nor assign anything finds nothing changed: its
-    // frames would trace nothing, and its statistics would not be a fresh read's.
-    const bool reused = kept_ && file && kept_->serves(options, *file) &&
-                        (kept_->assigned() || !assignments.empty()) && kept_->restore();
-    if (!reused) {
-      kept_.reset();
-      kept_ = std::make_unique<KeptScene>(loadScene(options.scene), options,
-                                          file.value_or(KeptScene::FileState{}));
-    }
+    const bool reused = prepareScene(options, assignments, file);
     LoadedScene& scene = kept_->scene();
-    for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
-    kept_->remember(assignments);
-    for (const FieldAssignment& assignment : assignments) {
-      assignment.apply(scene.root.get(), options.scene);
-    }
-
-    // Before the frame buffer is allocated (seconds at the largest sizes): what the scene
-    // needs whatever the GL; AUTO counts as a map until the renderer says it traces.
-    const auto checkMemory = [&](bool softwareRenderer) {
-      const RenderMemory memory = RenderMemory::of(scene.root.get(), softwareRenderer);
-      MemoryBudget::check(size, memory.cost, memory.what, 1, MemoryBudget::available());
-    };
-    checkMemory(false);
-    if (renderer_ && (renderer_->width() != size.width || renderer_->height() != size.height))
-      renderer_.reset();
-    if (!renderer_) {
-      renderer_ = openRenderer(size);
-      if (!renderer_) return 3;
-      defaultTransparency_ = renderer_->action().getTransparencyType();
-    }
-    OffscreenRenderer* renderer = renderer_.get();
-    checkMemory(renderer->capabilities().isSoftwareRenderer());
+    OffscreenRenderer* renderer = rendererFor(size, scene.root.get());
+    if (!renderer) return 3;
     // A render before this one may have set another type: without --transparency, Coin's
     // default, as a process of its own would have it.
     renderer->action().setTransparencyType(defaultTransparency_);
@@ -150,32 +145,49 @@ int RenderSession::renderScene(const RenderOptions& options, bool& keep) {
     keep = file && (options.frames >= 2 || !reused) &&
            tracedAlone(before, collectDeepShadowStatistics(view.root.get()),
                        collectPeelStatistics(view.root.get()));
-    // Both files or neither: statistics that cannot be written (a full disk) take the
-    // picture with them, as the exit status says.
-    const Image picture = renderer->read();
-    OutputFiles outputs;
-    outputs.addImage(options.output, picture);
-    if (!options.statsPath.empty()) {
-      const std::string name = transparencyTypeName(renderer->action().getTransparencyType());
-      outputs.addText(options.statsPath,
-                      renderStatistics(options, *renderer, wallMs, gpuMs, name, view.root.get(),
-                                       reused ? &before : nullptr)
-                              .dump(2) +
-                          "\n");
-    }
-    // From here a signal would leave the temporaries behind: it is held off until the files
-    // are written, then none of them is kept.
-    const InterruptGuard guard;
-    if (!outputs.commit(&InterruptGuard::flag())) {
-      std::cerr << "ivshadow: interrupted; nothing written\n";
-      return InterruptGuard::exitStatus();
-    }
-    std::cout << "wrote " << options.output << " (" << size.toString() << ", " << options.frames
-              << (options.frames == 1 ? " frame, " : " frames, median ")
-              << FrameStatistics::median(wallMs) << " ms on " << renderer->capabilities().renderer
-              << ")\n";
-    return 0;
+    return writeOutputs(options, size, *renderer, view.root.get(), wallMs, gpuMs,
+                        reused ? &before : nullptr);
   });
+}
+
+bool RenderSession::prepareScene(const RenderOptions& options,
+                                 const std::vector<FieldAssignment>& assignments,
+                                 const std::optional<KeptScene::FileState>& file) {
+  // A render that would neither put back nor assign anything finds nothing changed: its
+  // frames would trace nothing, and its statistics would not be a fresh read's.
+  const bool reused = kept_ && file && kept_->serves(options, *file) &&
+                      (kept_->assigned() || !assignments.empty()) && kept_->restore();
+  if (!reused) {
+    kept_.reset();
+    kept_ = std::make_unique<KeptScene>(loadScene(options.scene), options,
+                                        file.value_or(KeptScene::FileState{}));
+  }
+  LoadedScene& scene = kept_->scene();
+  for (const std::string& warning : scene.warnings) std::cerr << warning << '\n';
+  kept_->remember(assignments);
+  for (const FieldAssignment& assignment : assignments) {
+    assignment.apply(scene.root.get(), options.scene);
+  }
+  return reused;
+}
+
+OffscreenRenderer* RenderSession::rendererFor(const ImageSize& size, SoNode* root) {
+  // Before the frame buffer is allocated (seconds at the largest sizes): what the scene
+  // needs whatever the GL; AUTO counts as a map until the renderer says it traces.
+  const auto checkMemory = [&](bool softwareRenderer) {
+    const RenderMemory memory = RenderMemory::of(root, softwareRenderer);
+    MemoryBudget::check(size, memory.cost, memory.what, 1, MemoryBudget::available());
+  };
+  checkMemory(false);
+  if (renderer_ && (renderer_->width() != size.width || renderer_->height() != size.height))
+    renderer_.reset();
+  if (!renderer_) {
+    renderer_ = openRenderer(size);
+    if (!renderer_) return nullptr;
+    defaultTransparency_ = renderer_->action().getTransparencyType();
+  }
+  checkMemory(renderer_->capabilities().isSoftwareRenderer());
+  return renderer_.get();
 }
 
 }  // namespace ivshadow

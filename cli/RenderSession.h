@@ -7,8 +7,14 @@
 #include <Inventor/actions/SoGLRenderAction.h>
 
 #include <memory>
+#include <optional>
+#include <vector>
+
+class SoNode;
 
 namespace ivshadow {
+
+struct ImageSize;
 
 // `ivshadow render`, one scene after another in one process: the headless renderer (its EGL
 // context, framebuffer, render action and Coin's GL caches) is made by the first render and
@@ -37,6 +43,14 @@ class RenderSession {
  private:
   // The render itself; `keep` says whether the scene may serve the next render.
   int renderScene(const RenderOptions& options, bool& keep);
+  // Makes kept_ the scene this render draws: the kept one with its assigned fields put back
+  // where it serves, else the file read afresh; says its warnings and applies `assignments`.
+  // Whether the kept scene served.
+  bool prepareScene(const RenderOptions& options, const std::vector<FieldAssignment>& assignments,
+                    const std::optional<KeptScene::FileState>& file);
+  // The renderer of `size`, made again when the size changed, with the memory `root` needs
+  // checked before it is made and again for its GL; nullptr when no GL context can be made.
+  OffscreenRenderer* rendererFor(const ImageSize& size, SoNode* root);
 
   std::unique_ptr<OffscreenRenderer> renderer_;
   SoGLRenderAction::TransparencyType defaultTransparency_ = SoGLRenderAction::BLEND;
