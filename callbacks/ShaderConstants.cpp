@@ -1,6 +1,7 @@
 #include "callbacks/ShaderConstants.h"
 
 #include "callbacks/GlLimits.h"
+#include "callbacks/LightSlotFields.h"
 
 #include <iomanip>
 #include <limits>
@@ -18,6 +19,16 @@ std::string faceArray(const FaceVectors& vectors) {
     text << (face > 0 ? ", " : "") << "vec3(" << v[0] << ", " << v[1] << ", " << v[2] << ")";
   }
   text << ")";
+  return text.str();
+}
+
+// The per-light uniform arrays of LightSlotFields.h, on one line: "uniform vec3 uMapLight[8]; ...".
+std::string lightSlotDeclarations() {
+  std::ostringstream text;
+#define IVSHADOW_LIGHT_SLOT_DECLARATION(glslType, perSlot, Element, member, uniform, initial) \
+  text << "uniform " #glslType " " #uniform "[" << kMaxGlLights * (perSlot) << "]; ";
+  IVSHADOW_LIGHT_SLOT_FIELDS(IVSHADOW_LIGHT_SLOT_DECLARATION)
+#undef IVSHADOW_LIGHT_SLOT_DECLARATION
   return text.str();
 }
 
@@ -64,7 +75,8 @@ std::string shaderConstantDefines() {
        << "#define IVSHADOW_INVERSE_PI " << 0.318309886f << "\n"
        << "#define IVSHADOW_COLOUR_MONOCHROME " << int(ShadowColourModel::Monochrome) << "\n"
        << "#define IVSHADOW_COLOUR_SATURATE " << int(ShadowColourModel::Saturate) << "\n"
-       << "#define IVSHADOW_COLOUR_POWER " << int(ShadowColourModel::Power) << "\n";
+       << "#define IVSHADOW_COLOUR_POWER " << int(ShadowColourModel::Power) << "\n"
+       << "#define IVSHADOW_LIGHT_SLOT_UNIFORMS " << lightSlotDeclarations() << "\n";
   return text.str();
 }
 

@@ -7,6 +7,26 @@
 #include <algorithm>
 
 namespace ivshadow {
+namespace {
+
+// The upload of a LightSlotFields.h array of `count` values of its GLSL type.
+void setArray_int(GLuint program, int location, int count, const int* values) {
+  glProgramUniform1iv(program, location, count, values);
+}
+void setArray_vec2(GLuint program, int location, int count, const float* values) {
+  glProgramUniform2fv(program, location, count, values);
+}
+void setArray_vec3(GLuint program, int location, int count, const float* values) {
+  glProgramUniform3fv(program, location, count, values);
+}
+void setArray_vec4(GLuint program, int location, int count, const float* values) {
+  glProgramUniform4fv(program, location, count, values);
+}
+void setArray_mat4(GLuint program, int location, int count, const float* values) {
+  glProgramUniformMatrix4fv(program, location, count, GL_FALSE, values);
+}
+
+}  // namespace
 
 void ShadingUniforms::apply(const UniformLocations& locations) const {
   const GLuint program = locations.program();
@@ -25,17 +45,10 @@ void ShadingUniforms::apply(const UniformLocations& locations) const {
   // samplers of different types on one unit make the draw call invalid.
   glProgramUniform1iv(program, at("uMapDepth"), kMaxLights, depthUnits.data());
   glProgramUniform1iv(program, at("uMapVisibility"), kMaxLights, visibilityUnits.data());
-  glProgramUniform3fv(program, at("uMapLight"), kMaxLights, mapLight.data());
-  glProgramUniform3fv(program, at("uMapLightEye"), kMaxLights, mapLightEye.data());
-  glProgramUniform4fv(program, at("uMapParams"), kMaxLights, mapParams.data());
-  glProgramUniform1iv(program, at("uMapColoured"), kMaxLights, mapColoured.data());
-  glProgramUniform1iv(program, at("uMapProjection"), kMaxLights, mapProjection.data());
-  glProgramUniformMatrix4fv(program, at("uMapLookup"), kMaxLights, GL_FALSE, mapLookup.data());
-  glProgramUniform2fv(program, at("uMapTexelScale"), kMaxLights, mapTexelScale.data());
-  glProgramUniform1iv(program, at("uMapFaceFirst"), 6 * kMaxLights, mapFaceFirst.data());
-  glProgramUniform1iv(program, at("uMapFaceLayers"), 6 * kMaxLights, mapFaceLayers.data());
-  glProgramUniform3fv(program, at("uMapSlices"), kMaxLights, mapSlices.data());
-  glProgramUniform1iv(program, at("uMapRay"), kMaxLights, mapRay.data());
+#define IVSHADOW_SET_LIGHT_SLOT_FIELD(glslType, perSlot, Element, member, uniform, initial) \
+  setArray_##glslType(program, at(#uniform), kMaxLights*(perSlot), member.data());
+  IVSHADOW_LIGHT_SLOT_FIELDS(IVSHADOW_SET_LIGHT_SLOT_FIELD)
+#undef IVSHADOW_SET_LIGHT_SLOT_FIELD
   glProgramUniform1i(program, at("uRayLayers"), rayLayers);
   // The ray samplers always get their own units, used or not (see the map samplers above).
   glProgramUniform1i(program, at("uRayOpaque"), firstRayUnit(textureUnits) + 0);

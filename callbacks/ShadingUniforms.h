@@ -1,6 +1,7 @@
 #pragma once
 
 #include "callbacks/GlLimits.h"
+#include "callbacks/LightSlotFields.h"
 
 #include <array>
 
@@ -11,28 +12,13 @@ class UniformLocations;
 // The uniforms of the camera-pass program (shading.frag) that Coin does not manage. Coin's
 // SoShaderParameter nodes cannot set them: Coin matches uniform names against
 // glGetActiveUniform, which reports arrays as "name[0]", and does not know sampler arrays.
-struct ShadingUniforms {
+// The per-light arrays are LightSlotArrays' (LightSlotFields.h).
+struct ShadingUniforms : LightSlotArrays {
   static constexpr int kMaxLights = kMaxGlLights;
   int lightCount = 0;
   int mapCount = 0;
   float eyeToLocal[16] = {};  // column-major, as glUniformMatrix4fv reads it
   int fogType = 0;
-  std::array<float, 3 * kMaxLights> mapLight{};
-  std::array<float, 3 * kMaxLights> mapLightEye{};
-  std::array<float, 4 * kMaxLights> mapParams{};
-  std::array<int, kMaxLights> mapColoured{};
-  // Per slot, its map's MapFrame: projection (MapProjection), lookup matrix (column-major),
-  // texel scale.
-  std::array<int, kMaxLights> mapProjection{};
-  std::array<float, 16 * kMaxLights> mapLookup{};
-  std::array<float, 2 * kMaxLights> mapTexelScale{};
-  std::array<int, 6 * kMaxLights> mapFaceFirst{};
-  std::array<int, 6 * kMaxLights> mapFaceLayers{};
-  // Per slot: an opacity map's sliced distances (near, far) and slices per face; 0 slices for
-  // a deep shadow map.
-  std::array<float, 3 * kMaxLights> mapSlices{};
-  // Per slot: the index of its RAYS light among the traced ones, -1 for a slot with a map.
-  std::array<int, kMaxLights> mapRay = noRays();
   int rayLayers = 0;  // captured surface layers of the traced visibility
   // One bounce (ImperfectShadowMaps): the lights, the atlas's tiles per row and tile size, the
   // maps' lift off their surfaces, and the matrix that takes eye-space normals to the group's
@@ -45,12 +31,6 @@ struct ShadingUniforms {
   // GL_MAX_TEXTURE_IMAGE_UNITS of the context: the samplers' units follow from it
   // (ShaderConstants.h).
   int textureUnits = 0;
-
-  static std::array<int, kMaxLights> noRays() {
-    std::array<int, kMaxLights> none{};
-    none.fill(-1);
-    return none;
-  }
 
   // Sets the uniforms on `program` (a variant of ShadingProgram that Coin made current); a
   // variant without some of them ignores those.

@@ -19,25 +19,12 @@ uniform int uFogType;  // SoEnvironmentElement::FogType
 uniform sampler2DArray uMapDepth[kMaxLights];
 uniform sampler2DArray uMapVisibility[kMaxLights];
 uniform int uMapCount;
-uniform vec3 uMapLight[kMaxLights];     // light position in the group's coordinates
-uniform vec3 uMapLightEye[kMaxLights];  // ... and in eye coordinates
-// resolution, 1 for a directional light (uMapLight*: the direction towards it), bias (texels),
-// filter width (texels; 0: the nearest texel)
-uniform vec4 uMapParams[kMaxLights];
-// How each map sees its casters (IVSHADOW_MAP_*, callbacks/MapFrame.h); for a one-face map the
-// group's coordinates to (x w, y w, depth, w); a texel's size at depth d, times the
-// resolution: uMapTexelScale.x * d + uMapTexelScale.y.
-uniform int uMapProjection[kMaxLights];
-uniform mat4 uMapLookup[kMaxLights];
-uniform vec2 uMapTexelScale[kMaxLights];
-uniform int uMapColoured[kMaxLights];
-uniform int uMapFaceFirst[kMaxLights * 6];   // array layer of each face's first layer
-uniform int uMapFaceLayers[kMaxLights * 6];  // layers stored for each face
-// An opacity map's sliced distances (near, far) and slices per face; z = 0: a deep shadow map.
-uniform vec3 uMapSlices[kMaxLights];
-// Lights with method RAYS keep no map: their visibility was traced on the CPU per pixel and
-// per captured surface layer (callbacks/RayShadowPass.h).
-uniform int uMapRay[kMaxLights];  // index among the traced lights, -1 for a map
+// Per light slot: uMapLight, uMapLightEye, uMapParams, uMapColoured, uMapProjection,
+// uMapLookup, uMapTexelScale, uMapFaceFirst, uMapFaceLayers, uMapSlices, uMapRay, declared
+// from the table in callbacks/LightSlotFields.h, which says what each holds. Lights with
+// method RAYS keep no map: their visibility was traced on the CPU per pixel and per captured
+// surface layer (callbacks/RayShadowPass.h).
+IVSHADOW_LIGHT_SLOT_UNIFORMS
 uniform sampler2DArray uRayDepth;       // window depth of each captured layer (1: none)
 uniform sampler2DArray uRayVisibility;  // layer ray * uRayLayers + captured layer
 uniform int uRayLayers;  // the ray textures are indexed by window coordinates
