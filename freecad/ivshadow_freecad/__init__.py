@@ -201,25 +201,30 @@ class _Shadows:
         self.model.setName(_NAMES["model"])
         self.group.addChild(self.model)
 
-        # Copies of FreeCAD's headlight and backlight for FreeCAD's own nodes after the group:
-        # the lights themselves sit before the camera (in eye coordinates), so each copy is
-        # turned by the camera's orientation; a transform separator keeps that rotation from
-        # what follows while the light stays in force for it.
+        # Copies of FreeCAD's headlight and backlight for FreeCAD's own nodes after the group.
+        # The lights themselves sit before the camera, in eye coordinates; each copy's
+        # direction is the light's turned by the camera's orientation, worked out by engines
+        # (SoComposeMatrix, SoTransformVec3f) rather than by a rotation node in the graph:
+        # FreeCAD's selection actions (SoSelectionElementAction, SoHighlightElementAction)
+        # traverse every group without the model matrix element, and a transform separator
+        # there crashes FreeCAD when a selection is cleared. The connections keep the engines.
         self.host_lights = coin.SoGroup()
         self.host_lights.setName(_NAMES["host_lights"])
-        self.host_light_rotation = coin.SoRotation()
-        holder = coin.SoTransformSeparator()
-        holder.addChild(self.host_light_rotation)
-        self.host_lights.addChild(holder)
+        self.camera_matrix = coin.SoComposeMatrix()
+        self.host_light_engines = []
         self.turned_off = []  # FreeCAD's lights this object turned off
         for index in range(self.top.getNumChildren()):
             node = self.top.getChild(index)
             if node.isOfType(coin.SoDirectionalLight.getClassTypeId()) and node.on.getValue():
+                turn = coin.SoTransformVec3f()
+                turn.matrix.connectFrom(self.camera_matrix.matrix)
+                turn.vector.connectFrom(node.direction)
                 copy = coin.SoDirectionalLight()
-                copy.direction.connectFrom(node.direction)
+                copy.direction.connectFrom(turn.direction)
                 copy.color.connectFrom(node.color)
                 copy.intensity.connectFrom(node.intensity)
-                holder.addChild(copy)
+                self.host_lights.addChild(copy)
+                self.host_light_engines.append(turn)
                 self.turned_off.append(node)
         self.camera = None
 
@@ -288,7 +293,7 @@ class _Shadows:
             light.on = True
         self.turned_off = []
         if self.camera is not None:
-            self.host_light_rotation.rotation.disconnect()
+            self.camera_matrix.rotation.disconnect()
             self.camera = None
 
     # -- settings -------------------------------------------------------------------------------
@@ -361,7 +366,7 @@ class _Shadows:
         if camera is None:
             return
         if self.camera is None or _address(camera) != _address(self.camera):
-            self.host_light_rotation.rotation.connectFrom(camera.orientation)
+            self.camera_matrix.rotation.connectFrom(camera.orientation)
             self.camera = camera
         self._show_ground()
 

@@ -6,7 +6,8 @@
 Installs the build into WORK_DIR/prefix (cmake --install), gives FreeCAD a fresh home whose
 user Mod directory holds the pointer that IVSHADOW_FREECAD_MOD_DIR installs (a Mod folder whose
 Init.py puts the prefix's Python directory PYTHON_DIR on FreeCAD's sys.path), starts the GUI
-with MACRO (shadows_macro.py) and reports its checks. Nothing else tells FreeCAD where the
+with MACRO (shadows_macro.py or interaction_macro.py, which share macro_common.py) and reports
+its checks. Nothing else tells FreeCAD where the
 add-on or the plugin are: no PYTHONPATH, no LD_LIBRARY_PATH.
 Exit 77 (skipped) when FreeCAD is not installed.
 """
@@ -43,7 +44,10 @@ def main():
                    if key not in ("LD_LIBRARY_PATH", "PYTHONPATH")}
     environment.update(HOME=home, DISPLAY=display + ".0", QTWEBENGINE_DISABLE_SANDBOX="1",
                        IVSHADOW_FREECAD_RESULT=result, IVSHADOW_FREECAD_WORK=work,
-                       IVSHADOW_FREECAD_PREFIX=prefix)
+                       IVSHADOW_FREECAD_PREFIX=prefix,
+                       # FreeCAD imports the macro and macro_common.py as modules: no
+                       # __pycache__ in the source tree.
+                       PYTHONDONTWRITEBYTECODE="1")
     for variable in ("XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"):
         environment.pop(variable, None)
     log = os.path.join(work, "freecad.log")

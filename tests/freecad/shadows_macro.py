@@ -12,69 +12,29 @@ here from the geometry (a point of the plane is in shadow when the ray from it t
 light, along -L, meets the part), and its pixel from FreeCAD's camera (its view volume
 projects the point), never from the picture itself.
 """
-import json
-import math
 import os
-import sys
 import traceback
 
 import FreeCAD as App
 import FreeCADGui as Gui
 
-RESULT = os.environ["IVSHADOW_FREECAD_RESULT"]
-WORK = os.environ["IVSHADOW_FREECAD_WORK"]
-PREFIX = os.environ["IVSHADOW_FREECAD_PREFIX"]
+from macro_common import (LIGHT, PREFIX, array, check, finish, grey, make_scene, rgb, save as save_as,
+                          pixel_of as pixel_in)
+
 WIDTH, HEIGHT = 640, 480
-LIGHT = (0.4, -0.3, -1.0)
-
-checks = []
-
-
-def check(name, passed, **measured):
-    checks.append({"name": name, "passed": bool(passed), "measured": measured})
-    # Written after every check: a hang or crash later still leaves what was measured.
-    with open(RESULT, "w") as f:
-        json.dump(checks, f, indent=1)
 
 
 def pixel_of(view, point):
-    """The pixel (column, row from the top) of a document point in a WIDTH x HEIGHT saveImage:
-    saveImage renders with the view's camera and the image's aspect ratio."""
-    from pivy import coin
-    camera = view.getCameraNode()
-    volume = camera.getViewVolume(WIDTH / HEIGHT)
-    screen = volume.projectToScreen(coin.SbVec3f(*point)).getValue()
-    return int(screen[0] * WIDTH), int((1.0 - screen[1]) * HEIGHT)
+    return pixel_in(view, point, (WIDTH, HEIGHT))
 
 
 def save(view, name):
-    from PySide2 import QtGui
-    path = os.path.join(WORK, name + ".png")
-    Gui.updateGui()  # sensors (the add-on's among them) run before the picture
-    view.saveImage(path, WIDTH, HEIGHT, "Current")
-    image = QtGui.QImage(path).convertToFormat(QtGui.QImage.Format_RGB32)
-    return image
-
-
-def rgb(image, pixel):
-    from PySide2 import QtGui
-    colour = QtGui.QColor(image.pixel(pixel[0], pixel[1]))
-    return colour.red(), colour.green(), colour.blue()
-
-
-def grey(colour):
-    return sum(colour) / 3.0
+    return save_as(view, name, (WIDTH, HEIGHT))
 
 
 def largest_difference(a, b):
-    # Every channel of every pixel; a few hundred thousand values, fast enough in Python.
-    worst = 0
-    for row in range(a.height()):
-        for column in range(a.width()):
-            pa, pb = a.pixel(column, row), b.pixel(column, row)
-            for shift in (0, 8, 16):
-                worst = max(worst, abs(((pa >> shift) & 0xFF) - ((pb >> shift) & 0xFF)))
-    return worst
+    """The largest difference of any channel of any pixel."""
+    return int(abs(array(a) - array(b)).max())
 
 
 def run():
@@ -89,23 +49,7 @@ def run():
           os.path.exists(ivshadow.library()) and "LD_LIBRARY_PATH" not in os.environ,
           library=ivshadow.library())
 
-    document = App.newDocument("Shadows")
-    plane = document.addObject("Part::Box", "Plane")
-    plane.Length, plane.Width, plane.Height = 200, 200, 1
-    plane.Placement.Base = App.Vector(-50, -100, -1)
-    box = document.addObject("Part::Box", "Box")
-    box.Length = box.Width = box.Height = 30
-    sphere = document.addObject("Part::Sphere", "Sphere")
-    sphere.Radius = 15
-    sphere.Placement.Base = App.Vector(90, 0, 50)
-    document.recompute()
-    sphere.ViewObject.ShapeColor = (1.0, 0.0, 0.0)
-    sphere.ViewObject.Transparency = 50
-    view = Gui.ActiveDocument.ActiveView
-    view.setAnimationEnabled(False)
-    view.viewIsometric()
-    view.fitAll()
-    Gui.updateGui()
+    document, view = make_scene("Shadows")
 
     before = save(view, "freecad_before")
     check("disabled at first", not shadows.is_enabled(view))
@@ -230,5 +174,4 @@ try:
     run()
 except Exception:
     check("macro ran", False, error=traceback.format_exc())
-check("macro finished", True)
-os._exit(0)
+finish()
