@@ -13,6 +13,7 @@
 #include "scene/SceneTriangles.h"
 #include "scene/ShadowTypes.h"
 #include "scene/ShapeValidation.h"
+#include "scene/Text3Sides.h"
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbViewVolume.h>
@@ -436,6 +437,8 @@ std::unique_ptr<SceneTracer::Data> SceneTracer::extract(
   Extraction& data = result->extraction;
   {
     SoCallbackAction action{SbViewportRegion(short(width), short(height))};
+    Text3Sides text3;
+    text3.addTo(action);
     action.addPreCallback(SoTransparentShadowGroup::getClassTypeId(), groupEnter, &data);
     action.addPostCallback(SoTransparentShadowGroup::getClassTypeId(), groupLeave, &data);
     action.addPreCallback(SoPeelingSeparator::getClassTypeId(), peelingEnter, &data);

@@ -1,6 +1,7 @@
 #include "scene/SceneTriangles.h"
 
 #include "scene/ShapeValidation.h"
+#include "scene/Text3Sides.h"
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SoPath.h>
@@ -206,6 +207,8 @@ SoCallbackAction::Response startShape(void* data, SoCallbackAction* action, cons
 SceneTriangles extract(const std::function<void(SoCallbackAction&)>& apply) {
   Collector collector;
   SoCallbackAction action;
+  Text3Sides text3;
+  text3.addTo(action);
   action.addPreCallback(SoShape::getClassTypeId(), startShape, &collector);
   // Called only when the action is applied to a path: at the group, its tail.
   action.addPreTailCallback(enterGroup, &collector);
