@@ -76,8 +76,10 @@ int writeOutputs(const RenderOptions& options, const ImageSize& size, OffscreenR
   }
   std::cout << "wrote " << options.output << " (" << size.toString() << ", " << options.frames
             << (options.frames == 1 ? " frame, " : " frames, median ")
-            << FrameStatistics::median(wallMs) << " ms on " << renderer.capabilities().renderer
-            << ")\n";
+            << FrameStatistics::median(wallMs) << " ms on "
+            << renderer.capabilities().renderer
+            // Which EGL platform: on a GPU machine, whether the GPU's device was the one used.
+            << " through EGL " << renderer.platform() << ")\n";
   return 0;
 }
 

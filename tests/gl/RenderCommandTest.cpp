@@ -61,6 +61,13 @@ TEST(RenderCommand, StatsJsonHasTheDocumentedKeys) {
   ASSERT_EQ(result.exitCode, 0) << result.err;
   std::ifstream in(dir + "/stats.json");
   const nlohmann::json stats = nlohmann::json::parse(in);
+  // The one-line summary names the GL renderer and the EGL platform that --stats records, so
+  // that a GPU machine's log says whether its GPU drew.
+  EXPECT_NE(result.out.find(" ms on " + stats.at("gl_renderer").get<std::string>() +
+                            " through EGL " + stats.at("egl_platform").get<std::string>() + ")\n"),
+            std::string::npos)
+      << result.out;
+  EXPECT_FALSE(stats.at("egl_platform").get<std::string>().empty());
   EXPECT_EQ(stats.at("frames"), 3);
   EXPECT_EQ(stats.at("width"), 160);
   EXPECT_EQ(stats.at("height"), 120);
