@@ -5,6 +5,8 @@ from PySide2 import QtGui, QtWidgets
 
 _PRESETS = [("OverTheShoulder", "Over the shoulder"), ("Top", "Top"),
             ("FrontLeft", "Front left")]
+_TRANSPARENCIES = [("Exact", "Exact (in depth order per pixel)"),
+                   ("FreeCAD", "FreeCAD's own look (Coin's blending)")]
 _RENDERERS = [("AUTO", "Automatic (CPU tracer without a GPU, GL on a GPU)"),
               ("RASTER", "GL (fast on a GPU)"), ("TRACER", "CPU tracer (exact)")]
 
@@ -54,6 +56,8 @@ class PreferencesPage:
         self.intensity.setRange(0.0, 4.0)
         self.intensity.setSingleStep(0.1)
         form.addRow("Intensity", self.intensity)
+        self.dragger = QtWidgets.QCheckBox("A dragger in the view that turns the light")
+        form.addRow(self.dragger)
         layout.addWidget(light)
 
         ground = QtWidgets.QGroupBox("Ground")
@@ -77,6 +81,8 @@ class PreferencesPage:
         form = QtWidgets.QFormLayout(quality)
         self.renderer = _choices(_RENDERERS)
         form.addRow("Renderer", self.renderer)
+        self.transparency = _choices(_TRANSPARENCIES)
+        form.addRow("Transparency", self.transparency)
         layout.addWidget(quality)
         layout.addStretch()
 
@@ -91,6 +97,9 @@ class PreferencesPage:
         self.ground_color.set_colour(settings["ground_color"])
         self.ground_transparency.setValue(settings["ground_transparency"])
         self.renderer.setCurrentIndex(max(0, self.renderer.findData(settings["renderer"])))
+        self.transparency.setCurrentIndex(
+            max(0, self.transparency.findData(settings["transparency"])))
+        self.dragger.setChecked(settings["dragger"])
 
     def saveSettings(self):
         import ivshadow.freecad as shadows
@@ -103,6 +112,8 @@ class PreferencesPage:
             "ground_color": self.ground_color.colour,
             "ground_transparency": self.ground_transparency.value(),
             "renderer": self.renderer.currentData(),
+            "transparency": self.transparency.currentData(),
+            "dragger": self.dragger.isChecked(),
         }
         shadows.save_preferences(settings)
         # Views with shadows take the new settings at once.

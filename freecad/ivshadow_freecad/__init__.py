@@ -64,9 +64,17 @@ DEFAULTS = {
     # SoTransparentShadowGroup.renderer: AUTO traces on the CPU where GL is a software
     # rasteriser (Mesa's llvmpipe) and rasterises on a GPU.
     "renderer": "AUTO",
+    # FreeCAD's transparent parts: "Exact" composites them in depth order per pixel (the
+    # group's transparency PEELED); "FreeCAD" leaves them to Coin's blending, as FreeCAD draws
+    # them without shadows (COIN_BLENDING).
+    "transparency": "Exact",
+    # A dragger on the light in the view: turning it turns the light.
+    "dragger": False,
 }
 
-_NAMES = {"group": "IvShadowGroup", "light": "IvShadowLight", "ground": "IvShadowGround",
+_TRANSPARENCY = {"Exact": "PEELED", "FreeCAD": "COIN_BLENDING"}
+
+_NAMES = {"dragger": "IvShadowLightDragger", "group": "IvShadowGroup", "light": "IvShadowLight", "ground": "IvShadowGround",
           "model": "IvShadowModel", "host_lights": "IvShadowHostLights"}
 
 
@@ -110,6 +118,10 @@ def settings_from_preferences():
     settings["ground_transparency"] = group.GetInt("GroundTransparency",
                                                    DEFAULTS["ground_transparency"])
     settings["renderer"] = group.GetString("Renderer", DEFAULTS["renderer"])
+    settings["transparency"] = group.GetString("Transparency", DEFAULTS["transparency"])
+    if settings["transparency"] not in _TRANSPARENCY:
+        settings["transparency"] = DEFAULTS["transparency"]
+    settings["dragger"] = group.GetBool("LightDragger", DEFAULTS["dragger"])
     return settings
 
 
@@ -124,6 +136,8 @@ def save_preferences(settings):
     group.SetUnsigned("GroundColor", _colour_to_parameter(settings["ground_color"]))
     group.SetInt("GroundTransparency", int(settings["ground_transparency"]))
     group.SetString("Renderer", settings["renderer"])
+    group.SetString("Transparency", settings["transparency"])
+    group.SetBool("LightDragger", bool(settings["dragger"]))
 
 
 def _active_view(view):
@@ -241,6 +255,20 @@ class _Shadows:
         self.model_sensor = coin.SoNodeSensor(self._model_changed, None)
         self.top_sensor = coin.SoNodeSensor(self._top_changed, None)
 
+        # The light's dragger (Coin's SoDirectionalLightDragger: its arrow is the light's
+        # direction), after the group so that it casts no shadow and is drawn by GL, lit by the
+        # headlight's copies; placed above the model's centre and sized after it. Its rotation
+        # is the light's direction turned from (0, 0, -1), as SoDirectionalLightManip has it.
+        self.dragger_root = coin.SoSeparator()
+        self.dragger_root.setName(_NAMES["dragger"])
+        self.dragger_place = coin.SoTransform()
+        self.dragger = coin.SoDirectionalLightDragger()
+        self.dragger_root.addChild(self.dragger_place)
+        self.dragger_root.addChild(self.dragger)
+        self.turning = False
+        self.dragger_sensor = coin.SoFieldSensor(self._dragger_turned, None)
+        self.dragger_sensor.setPriority(0)
+
     # -- putting the group in and taking it out -------------------------------------------------
 
     def insert(self):
@@ -265,6 +293,7 @@ class _Shadows:
             self.model.addChild(child)
         selection.insertChild(self.group, index)
         selection.insertChild(self.host_lights, index + 1)
+        self._show_dragger()
         for light in self.turned_off:
             light.on = False
         self._follow_camera()
@@ -276,9 +305,13 @@ class _Shadows:
         _observer.watch()
 
     def remove(self):
-        for sensor in (self.selection_sensor, self.model_sensor, self.top_sensor):
+        for sensor in (self.selection_sensor, self.model_sensor, self.top_sensor,
+                       self.dragger_sensor):
             sensor.detach()
         selection = self.selection
+        index = selection.findChild(self.dragger_root)
+        if index >= 0:
+            selection.removeChild(index)
         index = selection.findChild(self.group)
         if index >= 0:
             selection.removeChild(index)
@@ -313,6 +346,14 @@ class _Shadows:
                                  (name, value))
         self.ground_material.diffuseColor.setValue(coin.SbColor(*settings["ground_color"]))
         self.ground_material.transparency = float(settings["ground_transparency"]) / 100.0
+        # The look's name, or the group's own value of the field (PEELED, COIN_BLENDING).
+        transparency = _TRANSPARENCY.get(settings["transparency"], settings["transparency"])
+        if transparency not in _TRANSPARENCY.values():
+            raise ValueError("transparency: Exact or FreeCAD, not %r" % settings["transparency"])
+        self.group.transparency.set(transparency)
+        self._turn_dragger()
+        if self.selection.findChild(self.group) >= 0:  # not yet on the first enable()
+            self._show_dragger()
         self.bounds = None
         self._update_bounds()
 
@@ -401,7 +442,46 @@ class _Shadows:
         self.bounds = bounds
         if bounds is not None:
             self._place_ground(bounds)
+            self._place_dragger(bounds)
         self._show_ground()
+
+    def _show_dragger(self):
+        index = self.selection.findChild(self.dragger_root)
+        if self.settings["dragger"] and index < 0:
+            self.selection.insertChild(self.dragger_root,
+                                       self.selection.findChild(self.host_lights) + 1)
+            self.dragger_sensor.attach(self.dragger.rotation)
+        elif not self.settings["dragger"] and index >= 0:
+            self.dragger_sensor.detach()
+            self.selection.removeChild(index)
+
+    def _turn_dragger(self):
+        """The dragger's rotation from the light's direction (not the other way round)."""
+        self.turning = True
+        try:
+            self.dragger.rotation.setValue(
+                coin.SbRotation(coin.SbVec3f(0, 0, -1), coin.SbVec3f(*self.direction)))
+        finally:
+            self.turning = False
+
+    def _dragger_turned(self, data, sensor):
+        # The user turned the dragger: the light follows, and the ground with its shadow.
+        if self.turning:
+            return
+        turned = self.dragger.rotation.getValue().multVec(coin.SbVec3f(0, 0, -1)).getValue()
+        self.direction = _unit(turned)
+        self.light.direction.setValue(coin.SbVec3f(*self.direction))
+        if self.bounds is not None:
+            self._place_ground(self.bounds)
+
+    def _place_dragger(self, bounds):
+        x0, y0, z0, x1, y1, z1 = bounds
+        extent = max(x1 - x0, y1 - y0, z1 - z0, 1e-6)
+        # Above the model's top, a fifth of its size across (Coin's dragger is about 2 units).
+        self.dragger_place.translation.setValue(
+            coin.SbVec3f((x0 + x1) / 2, (y0 + y1) / 2, z1 + 0.2 * extent))
+        scale = 0.1 * extent
+        self.dragger_place.scaleFactor.setValue(coin.SbVec3f(scale, scale, scale))
 
     def _place_ground(self, bounds):
         x0, y0, z0, x1, y1, z1 = bounds
@@ -474,7 +554,8 @@ class _DocumentObserver:
             if state.document == name:
                 # The view goes with the document; only the sensors must stop (they would
                 # otherwise wake on nodes FreeCAD is about to destroy).
-                for sensor in (state.selection_sensor, state.model_sensor, state.top_sensor):
+                for sensor in (state.selection_sensor, state.model_sensor, state.top_sensor,
+                               state.dragger_sensor):
                     sensor.detach()
                 del _states[key]
 

@@ -193,6 +193,48 @@ def run():
           grey(rgb(restored, shadow_point)) < 0.25 * grey(rgb(restored, lit_point)),
           shadow=rgb(restored, shadow_point), lit=rgb(restored, lit_point))
 
+    # -- the light's dragger ----------------------------------------------------------------
+    from pivy import coin
+    shadows.enable(view, light_direction=LIGHT, dragger=True)
+    search = coin.SoSearchAction()
+    search.setName(coin.SbName("IvShadowLightDragger"))
+    search.apply(view.getSceneGraph())
+    path = search.getPath()
+    dragger = path.getTail().getChild(1) if path is not None else None
+    length = sum(c * c for c in LIGHT) ** 0.5
+    arrow = dragger.rotation.getValue().multVec(coin.SbVec3f(0, 0, -1)).getValue() \
+        if dragger is not None else None
+    # The arrow is the light's direction, to float precision.
+    check("dragger shows the light's direction",
+          arrow is not None and all(abs(a - c / length) < 1e-4 for a, c in zip(arrow, LIGHT)),
+          arrow=list(arrow) if arrow else None)
+    # Turned straight down, as a drag writes its rotation: the light follows, so the box's
+    # shadow leaves (36, 5, 0) (beside the box, lit from above) and the sphere's falls right
+    # under it at (90, 0, 0), red.
+    dragger.rotation.setValue(coin.SbRotation())
+    turned = save(view, "saved_dragger_turned", size)
+    beside_box = rgb(turned, shadow_point)
+    under_sphere = rgb(turned, pixel_of(view, (90, 0, 0), size))
+    check("turning the dragger turns the light",
+          grey(beside_box) > 0.8 * grey(rgb(turned, lit_point)) and
+          under_sphere[0] > 1.5 * max(under_sphere[1:]),
+          beside_box=beside_box, under_sphere=under_sphere)
+    shadows.enable(view, dragger=False)
+    search.apply(view.getSceneGraph())
+    check("dragger removed when turned off", search.getPath() is None)
+
+    # -- transparency: exact or FreeCAD's own look, from the preferences -------------------
+    saved = shadows.settings_from_preferences()
+    shadows.save_preferences(dict(saved, transparency="FreeCAD"))
+    shadows.refresh()
+    freecad_look = str(shadows.group(view).transparency.get())
+    shadows.save_preferences(saved)
+    shadows.refresh()
+    exact_look = str(shadows.group(view).transparency.get())
+    check("transparency preference: FreeCAD's look is Coin's blending, exact is peeling",
+          freecad_look == "COIN_BLENDING" and exact_look == "PEELED",
+          freecad_look=freecad_look, exact_look=exact_look)
+
     shadows.disable(view)
     App.closeDocument("Interaction")
 
