@@ -41,27 +41,39 @@ constexpr unsigned int kEverything = GlStateScope::kFramebuffers | GlStateScope:
                                      GlStateScope::kDepth | GlStateScope::kColourMask |
                                      GlStateScope::kClipControl | GlStateScope::kFragmentTests;
 
-TEST_F(GlStateScopeGLTest, PutsBackEveryNamedGroupAsItFoundIt) {
-  // A state far from GL's defaults in every group, so that a value the scope failed to put
-  // back cannot pass by equalling a default.
-  const GlFramebuffer draw = createFramebuffer(), read = createFramebuffer();
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw.get());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, read.get());
-  glViewport(3, 5, 17, 19);
+// A state far from GL's defaults in every group, so that a value the scope failed to put back
+// cannot pass by equalling a default.
+struct FarState {
+  GlFramebuffer draw, read;
+  GlProgram program;
+  GlVertexArray vertexArray;
+  GlBuffer first, second, generic;
+  GlTexture flat, layered;
+};
+
+FarState setFarState() {
+  FarState state;
   std::string error;
-  const GlProgram program =
+  state.draw = createFramebuffer();
+  state.read = createFramebuffer();
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, state.draw.get());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, state.read.get());
+  glViewport(3, 5, 17, 19);
+  state.program =
       GlProgram::link(composeShader("void main() { gl_Position = vec4(0.0); }"),
                       composeShader("out vec4 o; void main() { o = vec4(1.0); }"), error);
-  ASSERT_TRUE(program) << error;
-  glUseProgram(program.name());
-  const GlVertexArray vertexArray = createVertexArray();
-  glBindVertexArray(vertexArray.get());
-  const GlBuffer first = createBuffer(), second = createBuffer(), generic = createBuffer();
-  glNamedBufferData(first.get(), 4, nullptr, GL_STATIC_DRAW);
-  glNamedBufferData(second.get(), 4, nullptr, GL_STATIC_DRAW);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, first.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, second.get());
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, generic.get());
+  EXPECT_TRUE(state.program) << error;
+  glUseProgram(state.program.name());
+  state.vertexArray = createVertexArray();
+  glBindVertexArray(state.vertexArray.get());
+  state.first = createBuffer();
+  state.second = createBuffer();
+  state.generic = createBuffer();
+  glNamedBufferData(state.first.get(), 4, nullptr, GL_STATIC_DRAW);
+  glNamedBufferData(state.second.get(), 4, nullptr, GL_STATIC_DRAW);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, state.first.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, state.second.get());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, state.generic.get());
   glBlendFuncSeparate(GL_SRC_COLOR, GL_DST_ALPHA, GL_ONE, GL_ZERO);
   glBlendEquationSeparate(GL_MIN, GL_MAX);
   glDepthFunc(GL_GEQUAL);
@@ -74,44 +86,46 @@ TEST_F(GlStateScopeGLTest, PutsBackEveryNamedGroupAsItFoundIt) {
   glEnable(GL_CLIP_DISTANCE2);
   glPolygonMode(GL_FRONT, GL_LINE);
   glPolygonMode(GL_BACK, GL_POINT);
-  const GlTexture flat = createTexture(GL_TEXTURE_2D);
-  const GlTexture layered = createTexture(GL_TEXTURE_2D_ARRAY);
-  glBindTextureUnit(5, flat.get());
-  glBindTextureUnit(5, layered.get());
+  state.flat = createTexture(GL_TEXTURE_2D);
+  state.layered = createTexture(GL_TEXTURE_2D_ARRAY);
+  glBindTextureUnit(5, state.flat.get());
+  glBindTextureUnit(5, state.layered.get());
   glActiveTexture(GL_TEXTURE3);
+  return state;
+}
 
-  {
-    GlStateScope scope(kEverything, {{5}, {GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY}});
-    // What a pass does in between: every group changed, unit 5 emptied.
-    scope.disableFragmentTests();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, 1, 1);
-    glUseProgram(0);
-    glBindVertexArray(0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
-    glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    glBlendEquation(GL_FUNC_ADD);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-    glBindTextureUnit(5, 0);
-    glActiveTexture(GL_TEXTURE7);
-    EXPECT_FALSE(glIsEnabled(GL_BLEND));
-    EXPECT_FALSE(glIsEnabled(GL_CLIP_DISTANCE2));
-  }
+// What a pass does in between: every group changed, unit 5 emptied.
+void changeEveryGroup(GlStateScope& scope) {
+  scope.disableFragmentTests();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, 1, 1);
+  glUseProgram(0);
+  glBindVertexArray(0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  glBlendEquation(GL_FUNC_ADD);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+  glBindTextureUnit(5, 0);
+  glActiveTexture(GL_TEXTURE7);
+  EXPECT_FALSE(glIsEnabled(GL_BLEND));
+  EXPECT_FALSE(glIsEnabled(GL_CLIP_DISTANCE2));
+}
 
-  EXPECT_EQ(integer(GL_DRAW_FRAMEBUFFER_BINDING), int(draw.get()));
-  EXPECT_EQ(integer(GL_READ_FRAMEBUFFER_BINDING), int(read.get()));
+void expectFarState(const FarState& state) {
+  EXPECT_EQ(integer(GL_DRAW_FRAMEBUFFER_BINDING), int(state.draw.get()));
+  EXPECT_EQ(integer(GL_READ_FRAMEBUFFER_BINDING), int(state.read.get()));
   std::array<GLint, 4> viewport{};
   glGetIntegerv(GL_VIEWPORT, viewport.data());
   EXPECT_EQ(viewport, (std::array<GLint, 4>{3, 5, 17, 19}));
-  EXPECT_EQ(integer(GL_CURRENT_PROGRAM), int(program.name()));
-  EXPECT_EQ(integer(GL_VERTEX_ARRAY_BINDING), int(vertexArray.get()));
-  EXPECT_EQ(integerAt(GL_SHADER_STORAGE_BUFFER_BINDING, 0), int(first.get()));
-  EXPECT_EQ(integerAt(GL_SHADER_STORAGE_BUFFER_BINDING, 1), int(second.get()));
-  EXPECT_EQ(integer(GL_SHADER_STORAGE_BUFFER_BINDING), int(generic.get()));
+  EXPECT_EQ(integer(GL_CURRENT_PROGRAM), int(state.program.name()));
+  EXPECT_EQ(integer(GL_VERTEX_ARRAY_BINDING), int(state.vertexArray.get()));
+  EXPECT_EQ(integerAt(GL_SHADER_STORAGE_BUFFER_BINDING, 0), int(state.first.get()));
+  EXPECT_EQ(integerAt(GL_SHADER_STORAGE_BUFFER_BINDING, 1), int(state.second.get()));
+  EXPECT_EQ(integer(GL_SHADER_STORAGE_BUFFER_BINDING), int(state.generic.get()));
   EXPECT_EQ(integer(GL_BLEND_SRC_RGB), GL_SRC_COLOR);
   EXPECT_EQ(integer(GL_BLEND_DST_RGB), GL_DST_ALPHA);
   EXPECT_EQ(integer(GL_BLEND_SRC_ALPHA), GL_ONE);
@@ -136,9 +150,19 @@ TEST_F(GlStateScopeGLTest, PutsBackEveryNamedGroupAsItFoundIt) {
   std::array<GLint, 2> polygonMode{};
   glGetIntegerv(GL_POLYGON_MODE, polygonMode.data());
   EXPECT_EQ(polygonMode, (std::array<GLint, 2>{GL_LINE, GL_POINT}));
-  EXPECT_EQ(boundOn(5, GL_TEXTURE_BINDING_2D), int(flat.get()));
-  EXPECT_EQ(boundOn(5, GL_TEXTURE_BINDING_2D_ARRAY), int(layered.get()));
+  EXPECT_EQ(boundOn(5, GL_TEXTURE_BINDING_2D), int(state.flat.get()));
+  EXPECT_EQ(boundOn(5, GL_TEXTURE_BINDING_2D_ARRAY), int(state.layered.get()));
   EXPECT_EQ(integer(GL_ACTIVE_TEXTURE), GL_TEXTURE3);
+}
+
+TEST_F(GlStateScopeGLTest, PutsBackEveryNamedGroupAsItFoundIt) {
+  const FarState state = setFarState();
+  ASSERT_TRUE(state.program);
+  {
+    GlStateScope scope(kEverything, {{5}, {GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY}});
+    changeEveryGroup(scope);
+  }
+  expectFarState(state);
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glUseProgram(0);

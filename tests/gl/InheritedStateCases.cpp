@@ -79,22 +79,23 @@ double floorY(int py) {
   return 1.2 - (py + 0.5) * kPixel;
 }
 
-std::vector<InheritedCase> inheritedStateCases() {
-  std::vector<InheritedCase> cases;
-  const std::string noAmbient = "ambientColor 0 0 0 specularColor 0 0 0 ";
+// Ambient and specular off, so that a material's diffuse colour alone lights the picture.
+const std::string kNoAmbient = "ambientColor 0 0 0 specularColor 0 0 0 ";
 
+// Materials and textures above the group.
+void addMaterialCases(std::vector<InheritedCase>& cases) {
   {  // The glass has no material of its own: the red, half transparent one above applies.
     ShadowScene scene = redGlass();
     scene.filters[0].ownMaterial = false;
     scene.aboveGroup =
-        "DEF Above Material { " + noAmbient + "diffuseColor 1 0 0 transparency 0.5 }";
+        "DEF Above Material { " + kNoAmbient + "diffuseColor 1 0 0 transparency 0.5 }";
     cases.push_back({"MaterialAbove", scene, pictureOf(redGlass())});
   }
   {  // A BaseColor above replaces only the diffuse colour of the material above it.
     ShadowScene scene = redGlass();
     scene.filters[0].ownMaterial = false;
-    scene.aboveGroup =
-        "Material { " + noAmbient + "diffuseColor 0 0 1 transparency 0.5 } BaseColor { rgb 1 0 0 }";
+    scene.aboveGroup = "Material { " + kNoAmbient +
+                       "diffuseColor 0 0 1 transparency 0.5 } BaseColor { rgb 1 0 0 }";
     cases.push_back({"BaseColorAbove", scene, pictureOf(redGlass())});
   }
   {  // The checkerboard texture (and its nearest sampling) above; the floor turns it off.
@@ -114,6 +115,10 @@ std::vector<InheritedCase> inheritedStateCases() {
         checkerboardFilter().nodes + " TextureCoordinate2 { point [ 1 0, 0 0, 0 1, 1 1 ] }";
     cases.push_back({"TextureCoordinatesAbove", scene, checkerboardShadow(true)});
   }
+}
+
+// What shapes above the group become: complexity, units and transforms.
+void addGeometryCases(std::vector<InheritedCase>& cases) {
   {  // Complexity 0.1 above: Coin's sphere with int(30 * 0.1) = 3 slices and stacks, raised
      // to its minimum of 4 slices and 3 stacks (SoSphere, sogen_generate_sphere), is an
      // octahedron: vertices at the poles and at 4 points of the equator, here (+-r, 0, h),
@@ -124,7 +129,7 @@ std::vector<InheritedCase> inheritedStateCases() {
      // The camera sees the octahedron as |x| + |y| < 0.2.
     ShadowScene scene;
     scene.aboveGroup = "Complexity { value 0.1 }";
-    scene.groupNodes = "Separator { Material { " + noAmbient +
+    scene.groupNodes = "Separator { Material { " + kNoAmbient +
                        "diffuseColor 1 1 1 } Translation { translation 0 0 0.5 } "
                        "Sphere { radius 0.2 } }";
     cases.push_back({"ComplexityAbove", scene, [](int px, int py) {
@@ -147,6 +152,22 @@ std::vector<InheritedCase> inheritedStateCases() {
     scene.filters[0].nodes = "Units { units CENTIMETERS }";
     cases.push_back({"UnitsAbove", scene, pictureOf(redGlass())});
   }
+  {  // A transform above moves and shrinks lights and casters together: the picture is the
+     // red glass's, at half size and moved. The cosine of Lambert's law is scale free, and
+     // the light has no attenuation.
+    ShadowScene scene = redGlass();
+    scene.aboveGroup = "DEF Move Transform { translation 0.3 -0.2 0 scaleFactor 0.5 0.5 0.5 }";
+    const ShadowScene expected = redGlass();
+    cases.push_back({"TransformAbove", scene, [expected](int px, int py) {
+                       const ShadowPicture picture{&expected, ColourModel::Saturate};
+                       return picture.at((floorX(px) - 0.3) / 0.5, (floorY(py) + 0.2) / 0.5,
+                                         kPixel / 0.5);
+                     }});
+  }
+}
+
+// Styles above the group: shadow style, draw style, light model and shape hints.
+void addStyleCases(std::vector<InheritedCase>& cases) {
   {  // Shapes that only receive cast nothing.
     ShadowScene scene = redGlass();
     scene.aboveGroup = "ShadowStyle { style SHADOWED }";
@@ -200,18 +221,13 @@ std::vector<InheritedCase> inheritedStateCases() {
     scene.floorNodes = "Normal { vector 0 0 -1 } NormalBinding { value OVERALL }";
     cases.push_back({"ShapeHintsAbove", scene, pictureOf(redGlass())});
   }
-  {  // A transform above moves and shrinks lights and casters together: the picture is the
-     // red glass's, at half size and moved. The cosine of Lambert's law is scale free, and
-     // the light has no attenuation.
-    ShadowScene scene = redGlass();
-    scene.aboveGroup = "DEF Move Transform { translation 0.3 -0.2 0 scaleFactor 0.5 0.5 0.5 }";
-    const ShadowScene expected = redGlass();
-    cases.push_back({"TransformAbove", scene, [expected](int px, int py) {
-                       const ShadowPicture picture{&expected, ColourModel::Saturate};
-                       return picture.at((floorX(px) - 0.3) / 0.5, (floorY(py) + 0.2) / 0.5,
-                                         kPixel / 0.5);
-                     }});
-  }
+}
+
+std::vector<InheritedCase> inheritedStateCases() {
+  std::vector<InheritedCase> cases;
+  addMaterialCases(cases);
+  addGeometryCases(cases);
+  addStyleCases(cases);
   return cases;
 }
 

@@ -115,6 +115,69 @@ float leastGroupingError(const Panes& panes, int layers) {
   return best[std::size_t(layers)][std::size_t(n)];
 }
 
+// The panes of a stack nearest the light first: their distances (differences of heights in
+// eighths: exact) and the light after each, multiplied here nearest first (SATURATE, seeds/000
+// eq. 5.3, or 1 - a).
+Panes panesOf(const Stack& stack) {
+  std::vector<Square> sorted = stack.glass;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const Square& a, const Square& b) { return a.z > b.z; });
+  Panes panes;
+  Rgb light = {1.0f, 1.0f, 1.0f};
+  for (const Square& s : sorted) {
+    for (int c = 0; c < 3; ++c)
+      light[std::size_t(c)] *=
+          stack.coloured ? saturate(s.colour[c], s.colour[3]) : 1.0f - s.colour[3];
+    panes.distance.push_back(4.0f - s.z);
+    panes.after.push_back(light);
+  }
+  return panes;
+}
+
+// Every texel of the merged map against the panes: the stored layers are some of the panes,
+// the light behind them all is exact, and the largest error over the panes is the one reported.
+void expectTexelsWithinTheError(const Stack& stack, const Panes& panes,
+                                const std::vector<MapLayerReadback>& layers, float mergeError,
+                                float tolerance) {
+  const std::size_t channels = stack.coloured ? 3 : 1;
+  const std::set<float> paneDistances(panes.distance.begin(), panes.distance.end());
+  for (std::size_t texel = 0; texel < 64; ++texel) {
+    SCOPED_TRACE("texel " + std::to_string(texel));
+    const auto stored = [&](std::size_t k) {
+      const std::vector<float>& v = layers[k].visibility;
+      return channels == 3 ? Rgb{v[texel * 3], v[texel * 3 + 1], v[texel * 3 + 2]}
+                           : Rgb{v[texel], v[texel], v[texel]};
+    };
+    // Lokovic and Veach's property: the stored distances are some of the panes', nearest
+    // first, beginning with the nearest pane.
+    EXPECT_EQ(layers[0].depth[texel], panes.distance.front());
+    for (std::size_t k = 0; k < std::size_t(stack.layers); ++k) {
+      EXPECT_EQ(paneDistances.count(layers[k].depth[texel]), 1u) << "layer " << k;
+      if (k > 0) EXPECT_GE(layers[k].depth[texel], layers[k - 1].depth[texel]);
+    }
+    // Behind all the panes the light is exact: every pane is in some group.
+    EXPECT_LT(largestDifference(stored(std::size_t(stack.layers) - 1), panes.after.back()),
+              tolerance);
+    if (stack.floor) {
+      // The floor closes the texel; the panes below it are no pane of any group.
+      EXPECT_EQ(layers[std::size_t(stack.layers)].depth[texel], 4.0f - 0.25f);
+      EXPECT_EQ(stored(std::size_t(stack.layers)), (Rgb{0.0f, 0.0f, 0.0f}));
+    }
+    // The map's visibility just behind each pane (lighting.glsl: the last layer nearer
+    // than the point), against the light left there.
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < panes.distance.size(); ++i) {
+      const float at = panes.distance[i] + 0.0625f;  // distinct heights lie an eighth apart
+      Rgb looked = {1.0f, 1.0f, 1.0f};
+      for (std::size_t k = 0; k < std::size_t(stack.layers); ++k)
+        if (layers[k].depth[texel] < at) looked = stored(k);
+      largest = std::max(largest, largestDifference(looked, panes.behind(i)));
+    }
+    // The reported error is the map's largest one.
+    EXPECT_NEAR(mergeError, largest, tolerance);
+  }
+}
+
 TEST_F(MapLayerMergeGLTest, AStackDeeperThanItsLayersKeepsEveryPaneWithinTheReportedError) {
   auto pass = makeMapPass();
   ASSERT_TRUE(pass);
@@ -141,23 +204,9 @@ TEST_F(MapLayerMergeGLTest, AStackDeeperThanItsLayersKeepsEveryPaneWithinTheRepo
     const int kept = stack.layers + (stack.floor ? 1 : 0);
     ASSERT_EQ(built.layersUsed[0], kept);
 
-    // Distances are differences of heights in eighths: exact. The light after each pane is
-    // multiplied here nearest first (SATURATE, seeds/000 eq. 5.3, or 1 - a).
-    std::vector<Square> sorted = stack.glass;
-    std::stable_sort(sorted.begin(), sorted.end(),
-                     [](const Square& a, const Square& b) { return a.z > b.z; });
-    Panes panes;
-    Rgb light = {1.0f, 1.0f, 1.0f};
-    for (const Square& s : sorted) {
-      for (int c = 0; c < 3; ++c)
-        light[std::size_t(c)] *=
-            stack.coloured ? saturate(s.colour[c], s.colour[3]) : 1.0f - s.colour[3];
-      panes.distance.push_back(4.0f - s.z);
-      panes.after.push_back(light);
-    }
+    const Panes panes = panesOf(stack);
     for (std::size_t i = 1; i < panes.distance.size(); ++i)
       twins += panes.distance[i] == panes.distance[i - 1] ? 1 : 0;
-    const std::set<float> paneDistances(panes.distance.begin(), panes.distance.end());
     // A group's products are taken in the lists' order, not this one: a few float roundings
     // of numbers below 1, far under 1e-5. HALF rounds the stored light to 11 bits: 5e-4 of it.
     const float tolerance = stack.coloured ? 1e-5f : 1e-3f;
@@ -168,49 +217,14 @@ TEST_F(MapLayerMergeGLTest, AStackDeeperThanItsLayersKeepsEveryPaneWithinTheRepo
     // nearest 4 x maxLayers, and past them groups the rest as one); with one layer there is
     // only one grouping.
     const float least = leastGroupingError(panes, stack.layers);
-    if (stack.layers == 1 || int(sorted.size()) <= 4 * stack.layers)
+    if (stack.layers == 1 || int(panes.distance.size()) <= 4 * stack.layers)
       EXPECT_NEAR(built.mergeError, least, 1e-5f);
     EXPECT_GE(built.mergeError, least - 1e-5f);
     EXPECT_LE(built.mergeError, truncationError + 1e-5f);
 
     std::vector<MapLayerReadback> layers(static_cast<std::size_t>(kept));
     for (int k = 0; k < kept; ++k) ASSERT_TRUE(pass->readMapLayer(0, k, layers[std::size_t(k)]));
-    const std::size_t channels = stack.coloured ? 3 : 1;
-    for (std::size_t texel = 0; texel < 64; ++texel) {
-      SCOPED_TRACE("texel " + std::to_string(texel));
-      const auto stored = [&](std::size_t k) {
-        const std::vector<float>& v = layers[k].visibility;
-        return channels == 3 ? Rgb{v[texel * 3], v[texel * 3 + 1], v[texel * 3 + 2]}
-                             : Rgb{v[texel], v[texel], v[texel]};
-      };
-      // Lokovic and Veach's property: the stored distances are some of the panes', nearest
-      // first, beginning with the nearest pane.
-      EXPECT_EQ(layers[0].depth[texel], panes.distance.front());
-      for (std::size_t k = 0; k < std::size_t(stack.layers); ++k) {
-        EXPECT_EQ(paneDistances.count(layers[k].depth[texel]), 1u) << "layer " << k;
-        if (k > 0) EXPECT_GE(layers[k].depth[texel], layers[k - 1].depth[texel]);
-      }
-      // Behind all the panes the light is exact: every pane is in some group.
-      EXPECT_LT(largestDifference(stored(std::size_t(stack.layers) - 1), panes.after.back()),
-                tolerance);
-      if (stack.floor) {
-        // The floor closes the texel; the panes below it are no pane of any group.
-        EXPECT_EQ(layers[std::size_t(stack.layers)].depth[texel], 4.0f - 0.25f);
-        EXPECT_EQ(stored(std::size_t(stack.layers)), (Rgb{0.0f, 0.0f, 0.0f}));
-      }
-      // The map's visibility just behind each pane (lighting.glsl: the last layer nearer
-      // than the point), against the light left there.
-      float largest = 0.0f;
-      for (std::size_t i = 0; i < panes.distance.size(); ++i) {
-        const float at = panes.distance[i] + 0.0625f;  // distinct heights lie an eighth apart
-        Rgb looked = {1.0f, 1.0f, 1.0f};
-        for (std::size_t k = 0; k < std::size_t(stack.layers); ++k)
-          if (layers[k].depth[texel] < at) looked = stored(k);
-        largest = std::max(largest, largestDifference(looked, panes.behind(i)));
-      }
-      // The reported error is the map's largest one.
-      EXPECT_NEAR(built.mergeError, largest, tolerance);
-    }
+    expectTexelsWithinTheError(stack, panes, layers, built.mergeError, tolerance);
 
     // Built again, as a light touched without moving: the last build's layout holds, so the
     // one sort stores and the merge writes there; the same map.
