@@ -46,7 +46,8 @@ GLuint compile(GLenum stage, const std::string& source, std::string& error) {
 
 std::string composeShader(const std::string& body, const std::string& defines) {
   return "#version 450 compatibility\n" + shaderConstantDefines() + defines +
-         glsl::kDeepShadowCommonGlsl + glsl::kSurfaceOpticsGlsl + body;
+         glsl::kDeepShadowCommonGlsl + glsl::kSurfaceOpticsGlsl +
+         glsl::kLightEquationGlsl + body;
 }
 
 GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fragmentSource,

@@ -8,6 +8,7 @@
 #include "nodes/SceneExtraction.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
+#include "raytrace/LightEquation.h"
 #include "raytrace/ParallelRows.h"
 #include "raytrace/RayRange.h"
 #include "raytrace/SurfaceOptics.h"
@@ -352,25 +353,17 @@ class Tracer {
     return lit;
   }
 
-  // Where a light is seen from `position`: the unit direction towards it and GL's distance
-  // and spot attenuation of its light there.
-  struct Incidence {
-    glm::vec3 toLight;
-    float attenuation;
-  };
-  static Incidence incidence(const Light& light, const glm::vec3& position) {
-    if (light.type == LightType::Directional) return {glm::normalize(light.towardsLight), 1.0f};
-    const glm::vec3 v = light.position - position;
-    const float distance = glm::length(v);
-    Incidence in{distance > 0.0f ? v / distance : glm::vec3(0.0f, 0.0f, 1.0f), 1.0f};
-    in.attenuation = 1.0f / (light.attenuation.x + light.attenuation.y * distance +
-                             light.attenuation.z * distance * distance);
-    if (light.type == LightType::Spot) {
-      const float spotCos = glm::dot(-in.toLight, glm::normalize(light.spotDirection));
-      in.attenuation *=
-          spotCos < light.spotCosCutoff ? 0.0f : std::pow(spotCos, light.spotExponent);
-    }
-    return in;
+  // Where a light is seen from `position` (raytrace/LightEquation.h), in world space.
+  static LightIncidence incidence(const Light& light, const glm::vec3& position) {
+    LightPlacement placement;
+    placement.position = light.type == LightType::Directional ? glm::vec4(light.towardsLight, 0.0f)
+                                                              : glm::vec4(light.position, 1.0f);
+    placement.falloff = light.attenuation;
+    placement.spot = light.type == LightType::Spot;
+    placement.spotDirection = light.spotDirection;
+    placement.spotCosCutoff = light.spotCosCutoff;
+    placement.spotExponent = light.spotExponent;
+    return lightIncidence(placement, position);
   }
 
   // The colour model `group`'s casters shadow `light` in, or kNotCasting.
@@ -395,14 +388,12 @@ class Tracer {
                          const glm::vec3& normal, const glm::vec3& position,
                          const glm::vec3& diffuse, const Material& material, RayCounts& rays,
                          RowShading& row) const {
-    const Incidence in = incidence(light, position);
-    const float nDotL = glm::dot(normal, in.toLight);
-    if (!(nDotL > 0.0f)) return glm::vec3(0.0f);
-    const glm::vec3 halfVector = glm::normalize(in.toLight + viewDirection_);
-    const float nDotH = std::max(glm::dot(normal, halfVector), 0.0f);
-    glm::vec3 direct = nDotL * light.colour * diffuse;
-    if (nDotH > 0.0f)
-      direct += std::pow(nDotH, material.shininess) * light.colour * material.specular;
+    const LightIncidence in = incidence(light, position);
+    const glm::vec3 direct = directLight(
+        normal, in.toLight, viewDirection_,
+        Reflectance{diffuse, material.specular, material.shininess}, light.colour, light.colour);
+    // Only light that reaches the surface asks for its shadow.
+    if (direct == glm::vec3(0.0f)) return direct;
     if (group != nullptr && tri.shadowed && castingModel(*group, light) != kNotCasting) {
       ++rays.shadow;
       const bool directional = light.type == LightType::Directional;
@@ -476,7 +467,7 @@ class Tracer {
         const glm::vec3 ny = glm::dot(facing, direction) < 0.0f ? facing : -facing;
         for (int index : group.casting) {
           const Light& light = data_.lights[std::size_t(index)];
-          const Incidence in = incidence(light, y);
+          const LightIncidence in = incidence(light, y);
           const float nDotL = glm::dot(ny, in.toLight);
           if (!(nDotL > 0.0f) || !(in.attenuation > 0.0f)) continue;
           const ShadowColourModel model = modelOf(group, light);

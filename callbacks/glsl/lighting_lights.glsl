@@ -28,42 +28,24 @@ vec3 shadowVisibility(int slot, vec3 localPosition) {
 }
 #endif
 
+// Coin's light equation (scene/light_equation.glsl, which the CPU scene tracer compiles too) in
+// eye space, with the light's shadow.
 vec3 lightContribution(int i, vec3 normal, vec3 localPosition, vec3 diffuseColour) {
   gl_LightSourceParameters light = gl_LightSource[i];
-  vec3 toLight;
-  float attenuation = 1.0;
-  if (light.position.w == 0.0) {
-    toLight = normalize(light.position.xyz);
-  } else {
-    vec3 v = light.position.xyz / light.position.w - vEyePosition;
-    float distance = length(v);
-    // Past float's range (a light about 2e19 away) the distance is infinite and the light
-    // reaches nothing, as in Coin's fixed-function GL and the tracer; 0 x inf in the
-    // attenuation would make the whole pixel NaN (black).
-    if (isinf(distance)) return vec3(0.0);
-    toLight = v / distance;
-    attenuation = 1.0 / (light.constantAttenuation + light.linearAttenuation * distance +
-                         light.quadraticAttenuation * distance * distance);
-    if (light.spotCutoff <= 90.0) {
-      float spotCos = dot(-toLight, normalize(light.spotDirection));
-      attenuation *= spotCos < light.spotCosCutoff ? 0.0 : pow(spotCos, light.spotExponent);
-    }
-  }
-  float nDotL = dot(normal, toLight);
-  vec3 colour = light.ambient.rgb * gl_FrontMaterial.ambient.rgb;
-  if (nDotL > 0.0) {
-    // Coin leaves GL's non-local viewer: the eye direction is +z in eye space.
-    vec3 halfVector = normalize(toLight + vec3(0.0, 0.0, 1.0));
-    float nDotH = max(dot(normal, halfVector), 0.0);
-    vec3 direct = nDotL * light.diffuse.rgb * diffuseColour;
-    if (nDotH > 0.0)
-      direct += pow(nDotH, gl_FrontMaterial.shininess) * light.specular.rgb *
-                gl_FrontMaterial.specular.rgb;
+  vec4 incidence = lightIncidence(
+      light.position, vEyePosition,
+      vec3(light.constantAttenuation, light.linearAttenuation, light.quadraticAttenuation),
+      light.spotCutoff <= 90.0, light.spotDirection, light.spotCosCutoff, light.spotExponent);
+  // Coin leaves GL's non-local viewer: the eye direction is +z in eye space.
+  vec3 direct = directLight(normal, incidence.xyz, vec3(0.0, 0.0, 1.0), diffuseColour,
+                            light.diffuse.rgb, gl_FrontMaterial.specular.rgb, light.specular.rgb,
+                            gl_FrontMaterial.shininess);
 #if defined(IVSHADOW_WITH_MAPS) || defined(IVSHADOW_WITH_RAYS)
+  // Only light that reaches the surface asks for its shadow.
+  if (direct != vec3(0.0)) {
     int slot = mapOfLight(light);
     if (slot >= 0) direct *= shadowVisibility(slot, localPosition);
-#endif
-    colour += direct;
   }
-  return attenuation * colour;
+#endif
+  return incidence.w * (light.ambient.rgb * gl_FrontMaterial.ambient.rgb + direct);
 }

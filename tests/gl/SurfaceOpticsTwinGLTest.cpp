@@ -1,15 +1,14 @@
 // The GLSL shading and its CPU twins give the same numbers: a compute program, composed as
-// every program of the plugin is (composeShader), evaluates transmittance(),
-// applyTextureModel() and isOpaque() on a grid of inputs, and raytrace/SurfaceOptics
-// evaluates them in C++. Both compile scene/surface_optics.glsl, so what this holds apart is
-// each side's setting: the colour models' and texture models' ids, the opacity threshold, the
-// C++ wrappers, the order the shaders are put together in, and the two compilers' arithmetic.
-#include "callbacks/GlHandles.h"
-#include "callbacks/GlProgram.h"
+// every program of the plugin is (composeShader, tests/gl/ComputeTwin.h), evaluates
+// transmittance(), applyTextureModel() and isOpaque() on a grid of inputs, and
+// raytrace/SurfaceOptics evaluates them in C++. Both compile scene/surface_optics.glsl, so what
+// this holds apart is each side's setting: the colour models' and texture models' ids, the opacity
+// threshold, the C++ wrappers, the order the shaders are put together in, and the two compilers'
+// arithmetic.
 #include "raytrace/SurfaceOptics.h"
+#include "tests/gl/ComputeTwin.h"
 #include "tests/gl/GlContextTest.h"
 
-#include <epoxy/gl.h>
 #include <glm/common.hpp>
 #include <glm/vec4.hpp>
 
@@ -35,20 +34,12 @@ struct Case {
 static_assert(sizeof(Case) == 64, "Case must match the program's std430 layout");
 
 constexpr const char* kProgram = R"glsl(
-layout(local_size_x = 64) in;
 struct Case { vec4 a; vec4 b; vec4 c; ivec4 select; };
-layout(std430, binding = 0) readonly buffer Cases { Case cases[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
-uniform int uCount;
-void main() {
-  int i = int(gl_GlobalInvocationID.x);
-  if (i >= uCount) return;
-  Case c = cases[i];
-  vec4 result = vec4(0.0);
-  if (c.select.x == 0) result = vec4(transmittance(c.a, c.select.y), 0.0);
-  else if (c.select.x == 1) result = applyTextureModel(c.a, c.b, c.select.y, c.c.rgb);
-  else result = vec4(isOpaque(c.a.x) ? 1.0 : 0.0);
-  results[i] = result;
+struct Result { vec4 value; };
+Result evaluate(Case c) {
+  if (c.select.x == 0) return Result(vec4(transmittance(c.a, c.select.y), 0.0));
+  if (c.select.x == 1) return Result(applyTextureModel(c.a, c.b, c.select.y, c.c.rgb));
+  return Result(vec4(isOpaque(c.a.x) ? 1.0 : 0.0));
 }
 )glsl";
 
@@ -92,29 +83,6 @@ glm::vec4 onCpu(const Case& c) {
   }
 }
 
-std::vector<glm::vec4> onGpu(const std::vector<Case>& cases, std::string& error) {
-  const GlProgram program = GlProgram::linkCompute(composeShader(kProgram), error);
-  if (!program) return {};
-  const GlBuffer input = createBuffer(), output = createBuffer();
-  glNamedBufferData(input.get(), GLsizeiptr(cases.size() * sizeof(Case)), cases.data(),
-                    GL_STATIC_DRAW);
-  glNamedBufferData(output.get(), GLsizeiptr(cases.size() * sizeof(glm::vec4)), nullptr,
-                    GL_STATIC_READ);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.get());
-  glUseProgram(program.name());
-  program.setInt("uCount", int(cases.size()));
-  glDispatchCompute(GLuint((cases.size() + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<glm::vec4> results(cases.size());
-  glGetNamedBufferSubData(output.get(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)),
-                          results.data());
-  glUseProgram(0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
-  return results;
-}
-
 // Every result lies in [0, 1]. GLSL lets pow() be exp2(y log2 x), each within a few ulp
 // (log2 within 2^-21 absolute near 1), which for exponents up to 2 is about 1e-6 off; mix()
 // may be x (1 - a) + y a or x + a (y - x), fused or not, a few ulp (2.4e-7 near 1) apart;
@@ -127,7 +95,7 @@ constexpr float kTolerance = 1e-5f;
 TEST_F(SurfaceOpticsTwinGLTest, GlslAndCppAgreeOnAGridOfInputs) {
   const std::vector<Case> cases = gridCases();
   std::string error;
-  const std::vector<glm::vec4> gpu = onGpu(cases, error);
+  const std::vector<glm::vec4> gpu = computeCases<glm::vec4>(kProgram, cases, error);
   ASSERT_EQ(gpu.size(), cases.size()) << error;
   int failures = 0;
   for (std::size_t i = 0; i < cases.size() && failures < 10; ++i) {
