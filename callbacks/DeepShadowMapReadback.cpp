@@ -1,18 +1,16 @@
 #include "callbacks/DeepShadowMapReadback.h"
 
+#include "callbacks/GlLimits.h"
 #include "callbacks/PixelStoreScope.h"
+#include "callbacks/ShaderConstants.h"
 
 #include <epoxy/gl.h>
 
 namespace ivshadow {
 namespace {
 
-// The texture bound as a 2D array on the unit the program's sampler `name` reads.
-GLuint arrayOfSampler(GLint program, const std::string& name) {
-  const GLint location = glGetUniformLocation(GLuint(program), name.c_str());
-  if (location < 0) return 0;
-  GLint unit = 0;
-  glGetUniformiv(GLuint(program), location, &unit);
+// The texture bound as a 2D array on texture unit `unit`.
+GLuint arrayOnUnit(int unit) {
   GLint active = 0;
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
   glActiveTexture(GLenum(GL_TEXTURE0 + unit));
@@ -37,9 +35,12 @@ bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out, std::string& 
     whyNot = "no deep shadow group is drawing (is it active?)";
     return false;
   }
-  const std::string index = "[" + std::to_string(slot) + "]";
-  const GLuint depth = arrayOfSampler(program, "uMapDepth" + index);
-  const GLuint visibility = arrayOfSampler(program, "uMapVisibility" + index);
+  // The units ShadingUniforms gives the slot's samplers, from the context's unit count: no
+  // uniform of the program is looked up.
+  const int units = glInteger(GL_MAX_TEXTURE_IMAGE_UNITS);
+  const bool inRange = slot >= 0 && slot < kMaxGlLights;
+  const GLuint depth = inRange ? arrayOnUnit(mapDepthUnit(units, slot)) : 0;
+  const GLuint visibility = inRange ? arrayOnUnit(mapVisibilityUnit(units, slot)) : 0;
   if (depth == 0 || visibility == 0) {
     whyNot = "no map is bound for light " + std::to_string(slot);
     return false;

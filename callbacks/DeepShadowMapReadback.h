@@ -17,10 +17,10 @@ struct MapLayerReadback {
 
 // Reads array layer `layer` of the map that the SoTransparentShadowGroup now rendering its
 // children has bound for light slot `slot`. Only valid during that render (an SoCallback
-// among the group's children calls it): the texture units are taken from the group's
-// shading program, the current program then (its uMapDepth and uMapVisibility samplers).
-// Stalls the GL until the map is read; restores the active texture unit, the pack buffer
-// and the pixel-store state. Returns false with the reason in `whyNot`.
+// among the group's children calls it): the textures on the units its shading program reads
+// for the slot (mapDepthUnit and mapVisibilityUnit, ShaderConstants.h, as ShadingUniforms
+// sets them). Stalls the GL until the map is read; restores the active texture unit, the pack
+// buffer and the pixel-store state. Returns false with the reason in `whyNot`.
 IVSHADOW_INTERNAL bool readBoundMapLayer(int slot, int layer, MapLayerReadback& out,
                                          std::string& whyNot);
 // The same from the map's two array textures (GL names): its distances and visibilities.

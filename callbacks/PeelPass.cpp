@@ -5,7 +5,7 @@
 #include "callbacks/GlAllocationCheck.h"
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
-#include "callbacks/UniformLocations.h"
+#include "callbacks/ShadingLocations.h"
 
 #include <epoxy/gl.h>
 
@@ -267,9 +267,9 @@ FragmentListPass* PeelPass::fragmentLists(std::string& whyNot) {
   return lists_.get();
 }
 
-void PeelPass::setPeelUniforms(const UniformLocations& program) const {
-  glProgramUniform1i(program.program(), program["uPeelDepth"], firstUnit_ + kDepthRangeOffset);
-  glProgramUniform1i(program.program(), program["uPeelFront"], firstUnit_ + kFrontOffset);
+void PeelPass::setPeelUniforms(const ShadingLocations& program) const {
+  glProgramUniform1i(program.program, program.uPeelDepth, firstUnit_ + kDepthRangeOffset);
+  glProgramUniform1i(program.program, program.uPeelFront, firstUnit_ + kFrontOffset);
 }
 
 }  // namespace ivshadow

@@ -12,7 +12,7 @@ namespace ivshadow {
 
 class FragmentListPass;
 class GlStateScope;
-class UniformLocations;
+struct ShadingLocations;
 
 // The GL side of depth peeling (SoPeelingSeparator, a peeling SoTransparentShadowGroup) in
 // one context: the peel targets (depth range, front accumulation, back layer, back
@@ -59,7 +59,7 @@ class PeelPass {
   double gpuMs() const { return timer_.elapsedMs(); }
 
   // Sets the texture units of a peel variant of the shading program (peel.frag).
-  void setPeelUniforms(const UniformLocations& program) const;
+  void setPeelUniforms(const ShadingLocations& program) const;
 
   // This context's fragment lists, made at the first call; null when they cannot be made
   // (`whyNot` says why, at that first call only).

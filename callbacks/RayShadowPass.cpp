@@ -4,7 +4,7 @@
 #include "callbacks/GlLimits.h"
 #include "callbacks/GlStateScope.h"
 #include "callbacks/PixelStoreScope.h"
-#include "callbacks/UniformLocations.h"
+#include "callbacks/ShadingLocations.h"
 
 #include <epoxy/gl.h>
 
@@ -93,7 +93,7 @@ std::string RayShadowPass::beginCapture(int x, int y, int width, int height) {
   return {};
 }
 
-void RayShadowPass::startLayer(int layer, const UniformLocations& program) {
+void RayShadowPass::startLayer(int layer, const ShadingLocations& program) {
   // A group still open is popped before the new one is pushed: nested, not crossed.
   layerGroup_.reset();
   layerGroup_ = std::make_unique<GlDebugGroup>("ray capture layer " + std::to_string(layer));
@@ -118,7 +118,7 @@ void RayShadowPass::startLayer(int layer, const UniformLocations& program) {
   glBindTextureUnit(GLuint(unit(kOpaqueUnit)), layer == 0 ? 0u : positions_[0].get());
   glBindTextureUnit(GLuint(unit(kPreviousUnit)),
                     layer >= 2 ? positions_[targetOf(layer - 1)].get() : 0u);
-  glProgramUniform1i(program.program(), program["uRayFirstTransparent"], layer <= 1 ? 1 : 0);
+  glProgramUniform1i(program.program, program.uRayFirstTransparent, layer <= 1 ? 1 : 0);
 }
 
 bool RayShadowPass::finishLayer(int layer, SurfaceLayer& out) {

@@ -12,7 +12,7 @@
 namespace ivshadow {
 
 class GlStateScope;
-class UniformLocations;
+struct ShadingLocations;
 
 // The GL side of SoDeepShadowLight's RAYS method in one context. Before the group's children
 // are shaded, Coin draws them into capture targets: first the nearest opaque surface of each
@@ -35,7 +35,7 @@ class RayShadowPass {
   std::string beginCapture(int x, int y, int width, int height);
   // Binds layer k's target (0: opaque), clears it and sets the capture uniforms of
   // `program`, the capture variant of the shading program bound for this layer.
-  void startLayer(int layer, const UniformLocations& program);
+  void startLayer(int layer, const ShadingLocations& program);
   // Reads layer k back; returns false when it caught no traced surface (deeper layers would
   // catch nothing either).
   bool finishLayer(int layer, SurfaceLayer& out);

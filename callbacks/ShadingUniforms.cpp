@@ -1,6 +1,6 @@
 #include "callbacks/ShadingUniforms.h"
 
-#include "callbacks/UniformLocations.h"
+#include "callbacks/ShadingLocations.h"
 
 #include <epoxy/gl.h>
 
@@ -28,40 +28,39 @@ void setArray_mat4(GLuint program, int location, int count, const float* values)
 
 }  // namespace
 
-void ShadingUniforms::apply(const UniformLocations& locations) const {
-  const GLuint program = locations.program();
-  auto at = [&locations](const char* name) { return locations[name]; };
+void ShadingUniforms::apply(const ShadingLocations& at) const {
+  const GLuint program = at.program;
   std::array<int, kMaxLights> depthUnits{}, visibilityUnits{};
   for (int slot = 0; slot < kMaxLights; ++slot) {
     depthUnits[std::size_t(slot)] = mapDepthUnit(textureUnits, slot);
     visibilityUnits[std::size_t(slot)] = mapVisibilityUnit(textureUnits, slot);
   }
-  glProgramUniform1i(program, at("textureMap0"), 0);
-  glProgramUniform1i(program, at("uLightCount"), lightCount);
-  glProgramUniform1i(program, at("uMapCount"), mapCount);
-  glProgramUniformMatrix4fv(program, at("uEyeToLocal"), 1, GL_FALSE, eyeToLocal);
-  glProgramUniform1i(program, at("uFogType"), fogType);
+  glProgramUniform1i(program, at.textureMap0, 0);
+  glProgramUniform1i(program, at.uLightCount, lightCount);
+  glProgramUniform1i(program, at.uMapCount, mapCount);
+  glProgramUniformMatrix4fv(program, at.uEyeToLocal, 1, GL_FALSE, eyeToLocal);
+  glProgramUniform1i(program, at.uFogType, fogType);
   // Every sampler of the arrays gets its own unit even when its slot is unused: two
   // samplers of different types on one unit make the draw call invalid.
-  glProgramUniform1iv(program, at("uMapDepth"), kMaxLights, depthUnits.data());
-  glProgramUniform1iv(program, at("uMapVisibility"), kMaxLights, visibilityUnits.data());
+  glProgramUniform1iv(program, at.uMapDepth, kMaxLights, depthUnits.data());
+  glProgramUniform1iv(program, at.uMapVisibility, kMaxLights, visibilityUnits.data());
 #define IVSHADOW_SET_LIGHT_SLOT_FIELD(glslType, perSlot, Element, member, uniform, initial) \
-  setArray_##glslType(program, at(#uniform), kMaxLights*(perSlot), member.data());
+  setArray_##glslType(program, at.uniform, kMaxLights*(perSlot), member.data());
   IVSHADOW_LIGHT_SLOT_FIELDS(IVSHADOW_SET_LIGHT_SLOT_FIELD)
 #undef IVSHADOW_SET_LIGHT_SLOT_FIELD
-  glProgramUniform1i(program, at("uRayLayers"), rayLayers);
+  glProgramUniform1i(program, at.uRayLayers, rayLayers);
   // The ray samplers always get their own units, used or not (see the map samplers above).
-  glProgramUniform1i(program, at("uRayOpaque"), firstRayUnit(textureUnits) + 0);
-  glProgramUniform1i(program, at("uRayPrevious"), firstRayUnit(textureUnits) + 1);
-  glProgramUniform1i(program, at("uRayDepth"), firstRayUnit(textureUnits) + 2);
-  glProgramUniform1i(program, at("uRayVisibility"), firstRayUnit(textureUnits) + 3);
-  glProgramUniform1i(program, at("uBounceAtlas"), bounceAtlasUnit(textureUnits));
-  glProgramUniform1i(program, at("uBounceLights"), bounceLightsUnit(textureUnits));
-  glProgramUniform1i(program, at("uBounceCount"), bounceCount);
-  glProgramUniform1i(program, at("uBounceTiles"), bounceTiles);
-  glProgramUniform1i(program, at("uBounceMapSize"), bounceMapSize);
-  glProgramUniform1f(program, at("uBounceLift"), bounceLift);
-  glProgramUniformMatrix3fv(program, at("uEyeToLocalNormal"), 1, GL_FALSE, eyeToLocalNormal);
+  glProgramUniform1i(program, at.uRayOpaque, firstRayUnit(textureUnits) + 0);
+  glProgramUniform1i(program, at.uRayPrevious, firstRayUnit(textureUnits) + 1);
+  glProgramUniform1i(program, at.uRayDepth, firstRayUnit(textureUnits) + 2);
+  glProgramUniform1i(program, at.uRayVisibility, firstRayUnit(textureUnits) + 3);
+  glProgramUniform1i(program, at.uBounceAtlas, bounceAtlasUnit(textureUnits));
+  glProgramUniform1i(program, at.uBounceLights, bounceLightsUnit(textureUnits));
+  glProgramUniform1i(program, at.uBounceCount, bounceCount);
+  glProgramUniform1i(program, at.uBounceTiles, bounceTiles);
+  glProgramUniform1i(program, at.uBounceMapSize, bounceMapSize);
+  glProgramUniform1f(program, at.uBounceLift, bounceLift);
+  glProgramUniformMatrix3fv(program, at.uEyeToLocalNormal, 1, GL_FALSE, eyeToLocalNormal);
 }
 
 void darkenLights(int first, int end) {

@@ -7,7 +7,7 @@
 
 namespace ivshadow {
 
-class UniformLocations;
+struct ShadingLocations;
 
 // The uniforms of the camera-pass program (shading.frag) that Coin does not manage. Coin's
 // SoShaderParameter nodes cannot set them: Coin matches uniform names against
@@ -34,7 +34,7 @@ struct ShadingUniforms : LightSlotArrays {
 
   // Sets the uniforms on `program` (a variant of ShadingProgram that Coin made current); a
   // variant without some of them ignores those.
-  void apply(const UniformLocations& program) const;
+  void apply(const ShadingLocations& program) const;
 };
 
 // Sets GL lights [first, end) (up to ShadingUniforms::kMaxLights) to contribute nothing. The

@@ -1,7 +1,7 @@
 #include "callbacks/TexGenModes.h"
 
 #include "callbacks/GlLimits.h"
-#include "callbacks/UniformLocations.h"
+#include "callbacks/ShadingLocations.h"
 
 #include <epoxy/gl.h>
 
@@ -23,8 +23,8 @@ TexGenModes currentTexGenModes() {
   return modes;
 }
 
-void setTexGenModes(const UniformLocations& program, const TexGenModes& modes) {
-  glProgramUniform4iv(program.program(), program["uTexGen"], 1, modes.data());
+void setTexGenModes(const ShadingLocations& program, const TexGenModes& modes) {
+  glProgramUniform4iv(program.program, program.uTexGen, 1, modes.data());
 }
 
 }  // namespace ivshadow

@@ -4,7 +4,7 @@
 
 namespace ivshadow {
 
-class UniformLocations;
+struct ShadingLocations;
 
 // How GL generates texture unit 0's coordinates s, t, r and q: a GL texgen mode per coordinate
 // (GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP, GL_NORMAL_MAP, GL_REFLECTION_MAP), 0 where
@@ -21,6 +21,6 @@ using TexGenModes = std::array<int, 4>;
 TexGenModes currentTexGenModes();
 
 // Sets `program`'s uTexGen.
-void setTexGenModes(const UniformLocations& program, const TexGenModes& modes);
+void setTexGenModes(const ShadingLocations& program, const TexGenModes& modes);
 
 }  // namespace ivshadow

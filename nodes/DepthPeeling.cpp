@@ -180,7 +180,7 @@ std::string peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading&
     state->push();
     setPeelPassState(state);
     for (;;) {
-      const UniformLocations* peelProgram =
+      const ShadingLocations* peelProgram =
           shading.bind(action, passes == 0    ? ShadingVariant::PeelInit
                                : options.dual ? ShadingVariant::PeelDual
                                               : ShadingVariant::PeelFrontToBack);

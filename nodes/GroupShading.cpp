@@ -50,9 +50,9 @@ void GroupShading::apply() {
   darkenLights(outsideLights_);
 }
 
-const UniformLocations* GroupShading::bind(SoGLRenderAction* action, ShadingVariant variant) {
+const ShadingLocations* GroupShading::bind(SoGLRenderAction* action, ShadingVariant variant) {
   if (camera_ == nullptr) return nullptr;
-  const UniformLocations* program = programs_.bind(action, variant, features_);
+  const ShadingLocations* program = programs_.bind(action, variant, features_);
   if (program != nullptr) uniforms_.apply(*program);
   syncTexGen(action->getState());
   return program;

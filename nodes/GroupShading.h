@@ -38,7 +38,7 @@ class GroupShading {
   void apply();
   // Between begin() and end(): binds `variant`, with the frame's features and uniforms, and
   // returns it; null when it did not build or outside a frame.
-  const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
+  const ShadingLocations* bind(SoGLRenderAction* action, ShadingVariant variant);
   void end() { camera_ = nullptr; }
   // Tells the bound program how Coin's texture coordinate function in force generates
   // texture coordinates (bind() calls it; TexGenWatchElement whenever the function changes,
@@ -58,7 +58,7 @@ class GroupShading {
   const GroupContents& contents_;
   ShadingProgram programs_;
   ShadingUniforms uniforms_;
-  const UniformLocations* camera_ = nullptr;  // the camera pass, bound by begin()
+  const ShadingLocations* camera_ = nullptr;  // the camera pass, bound by begin()
   ShadingFeatures features_;                  // the frame's, set by begin()
   int outsideLights_ = 0;                     // GL lights on before the group
   SbMatrix localToEye_;

@@ -133,7 +133,7 @@ std::string RayMethod::capture(SoGLRenderAction* action, const GroupContents& co
   const int lastLayer =
       contents.casters().hasTransparent ? RayShadowPass::kMaxTransparentLayers : 0;
   for (int layer = 0; failure.empty() && layer <= lastLayer; ++layer) {
-    const UniformLocations* capture = shading.bind(
+    const ShadingLocations* capture = shading.bind(
         action, layer == 0 ? ShadingVariant::CaptureOpaque : ShadingVariant::CaptureTransparent);
     if (capture == nullptr) break;  // Coin has said why it did not build
     rays.startLayer(layer, *capture);

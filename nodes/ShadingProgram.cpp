@@ -3,11 +3,13 @@
 #include "GlslSources.h"
 #include "callbacks/GlProgram.h"
 #include "callbacks/ShadingUniforms.h"
+#include "callbacks/UniformLocations.h"
 #include "nodes/ShadowGroupElement.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
 #include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/errors/SoDebugError.h>
 #include <Inventor/nodes/SoFragmentShader.h>
 #include <Inventor/nodes/SoShaderParameter.h>
 #include <Inventor/nodes/SoShaderProgram.h>
@@ -70,6 +72,19 @@ std::mutex& programFieldsMutex() {
   return mutex;
 }
 
+// Says once in the process which uniforms the plugin sets but no variant declares: a misspelt
+// name would be -1 in every program, its value never set and nothing said.
+void warnUndeclaredUniforms() {
+  static const bool said = [] {
+    for (std::string_view name : ShadingLocations::undeclared(ShadingProgram::declarations()))
+      SoDebugError::postWarning("ShadingProgram",
+                                "no shading program declares the uniform %s: it is never set",
+                                std::string(name).c_str());
+    return true;
+  }();
+  (void)said;
+}
+
 }  // namespace
 
 ShadingProgram::ShadingProgram() = default;
@@ -88,6 +103,13 @@ std::string ShadingFeatures::defines() const {
   if (opacity || (maps && !deep)) text += "#define IVSHADOW_WITH_OPACITY_MAPS\n";
   if (fog) text += "#define IVSHADOW_WITH_FOG\n";
   if (bounce) text += "#define IVSHADOW_WITH_BOUNCE\n";
+  return text;
+}
+
+std::string ShadingProgram::declarations() {
+  std::string text = composeShader(glsl::kShadingVert);
+  for (int variant = 0; variant <= int(ShadingVariant::FragmentList); ++variant)
+    text += composeShader(sourceOf(ShadingVariant(variant)).fragment);
   return text;
 }
 
@@ -118,7 +140,7 @@ SoShaderProgram* ShadingProgram::node(ShadingVariant variant, const ShadingFeatu
   return program.get();
 }
 
-const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVariant variant,
+const ShadingLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVariant variant,
                                              const ShadingFeatures& requested) {
   const ShadingFeatures features = lights(variant) ? requested : ShadingFeatures{};
   {
@@ -138,11 +160,12 @@ const UniformLocations* ShadingProgram::bind(SoGLRenderAction* action, ShadingVa
       ->reset(action->getState(), SoLazyElement::LIGHT_MODEL_MASK | SoLazyElement::TWOSIDE_MASK);
   Linked& context = linked(action->getState());
   const int key = keyOf(variant, features);
-  UniformLocations& locations = context.locations[key];
+  ShadingLocations& locations = context.locations[key];
   // Coin links a variant once per context; a new name means it linked it anew, with every
   // uniform at 0.
-  if (locations.program() != program) {
-    locations = UniformLocations(program);
+  if (locations.program != program) {
+    warnUndeclaredUniforms();
+    locations = ShadingLocations(UniformLocations(program));
     context.texGen[key] = TexGenModes{};
   }
   return &locations;
@@ -153,18 +176,18 @@ ShadingProgram::Linked& ShadingProgram::linked(SoState* state) {
                       [] { return std::make_unique<Linked>(); });
 }
 
-const UniformLocations* ShadingProgram::current(SoState* state) {
+const ShadingLocations* ShadingProgram::current(SoState* state) {
   const unsigned int program = currentProgram();
   if (program == 0) return nullptr;
   for (const auto& [key, locations] : linked(state).locations)
-    if (locations.program() == program) return &locations;
+    if (locations.program == program) return &locations;
   return nullptr;
 }
 
 void ShadingProgram::sendTexGen(SoState* state, const TexGenModes& modes) {
   Linked& context = linked(state);
   for (const auto& [key, locations] : context.locations) {
-    if (locations.program() == 0 || context.texGen[key] == modes) continue;
+    if (locations.program == 0 || context.texGen[key] == modes) continue;
     setTexGenModes(locations, modes);
     context.texGen[key] = modes;
   }

@@ -1,7 +1,8 @@
 #pragma once
 
+#include "callbacks/ShadingLocations.h"
 #include "callbacks/TexGenModes.h"
-#include "callbacks/UniformLocations.h"
+#include "ivshadow/Export.h"
 #include "nodes/PerContext.h"
 #include "scene/CoinRef.h"
 
@@ -24,7 +25,7 @@ enum class ShadingVariant : int {
   PeelDual,            // peel.frag, IVSHADOW_PEEL_DUAL: two layers per pass
   CaptureOpaque,       // capture.frag, IVSHADOW_CAPTURE_OPAQUE: RAYS lights' opaque capture
   CaptureTransparent,  // capture.frag: their transparent captures
-  FragmentList,        // fragment_list.frag: fragment lists' one pass (FragmentListPass)
+  FragmentList,        // fragment_list.frag: fragment lists' one pass (FragmentListPass), the last
 };
 
 // The parts of the lighting code a frame needs, each compiled into the variants only where
@@ -56,7 +57,7 @@ struct ShadingFeatures {
 // used), binds it through SoGLShaderProgramElement (which SoShadowStyle switches off for
 // shapes that are not SHADOWED) and keeps its coin_* uniforms (light model, two-sided
 // lighting, texture model) up to date. The locations of the other uniforms are read once per
-// program and context.
+// program and context (ShadingLocations).
 class ShadingProgram {
  public:
   // Out of line: the nodes' type is complete only in the .cpp.
@@ -68,16 +69,18 @@ class ShadingProgram {
   // Binds `variant`, compiled with `features`, in the action's current state (the caller
   // pushes and pops it) and returns its program and uniform locations, or null when it did not
   // build (Coin has said why). Variants that light nothing ignore `features`.
-  const UniformLocations* bind(SoGLRenderAction* action, ShadingVariant variant,
+  const ShadingLocations* bind(SoGLRenderAction* action, ShadingVariant variant,
                                const ShadingFeatures& features);
   // The variant GL has current in the state's context, or null when the current program is
   // none of them (a SoShadowStyle switched shading off, or a program of someone else's).
-  const UniformLocations* current(SoState* state);
+  const ShadingLocations* current(SoState* state);
   // Sets uTexGen on every variant linked in the state's context (no binding needed), each
   // only when it holds other modes; a variant linked anew starts from 0.
   void sendTexGen(SoState* state, const TexGenModes& modes);
   // Whether a variant in the state's context holds modes other than 0.
   bool anyTexGen(SoState* state);
+  // The text of every variant's shaders, which declares each uniform ShadingLocations names.
+  IVSHADOW_INTERNAL static std::string declarations();
 
  private:
   // A variant with its features, as one number.
@@ -86,7 +89,7 @@ class ShadingProgram {
 
   std::map<int, CoinRef<SoShaderProgram>> nodes_;  // by keyOf, made when first bound
   struct Linked {
-    std::map<int, UniformLocations> locations;  // by keyOf
+    std::map<int, ShadingLocations> locations;  // by keyOf
     std::map<int, TexGenModes> texGen;          // uTexGen as last sent
   };
   Linked& linked(SoState* state);

@@ -1,10 +1,17 @@
 // UniformLocations: the locations GL gives, read once after linking; no look-up afterwards.
 #include "callbacks/GlProgram.h"
+#include "callbacks/ShadingLocations.h"
 #include "callbacks/UniformLocations.h"
+#include "nodes/ShadingProgram.h"
 #include "tests/gl/GlCallCounter.h"
 #include "tests/gl/GlContextTest.h"
 
 #include <epoxy/gl.h>
+
+#include <algorithm>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace ivshadow::test {
 namespace {
@@ -53,6 +60,24 @@ TEST_F(UniformLocationsGLTest, SettingByNameAsksGlNothing) {
   GLfloat value = 0.0f;
   glGetUniformfv(program_.name(), locations["uA"], &value);
   EXPECT_EQ(value, 0.5f);
+}
+
+// A misspelt name in ShadingLocations' table would be -1 in every variant and its uniform
+// never set: each name is declared by some shading program, and a name none declares is
+// found.
+TEST(ShadingLocations, EveryNameIsDeclaredByAShadingProgram) {
+  const std::string text = ShadingProgram::declarations();
+  EXPECT_EQ(ShadingLocations::undeclared(text), std::vector<std::string_view>{});
+  EXPECT_EQ(ShadingLocations::undeclared(text + " uLightCounts").size(), 0u);
+  const std::vector<std::string_view> none = ShadingLocations::undeclared("uLightCounts");
+  EXPECT_NE(std::find(none.begin(), none.end(), "uLightCount"), none.end());
+}
+
+TEST_F(UniformLocationsGLTest, ShadingLocationsAreTheProgramsLocations) {
+  const ShadingLocations locations{UniformLocations(program_.name())};
+  EXPECT_EQ(locations.program, program_.name());
+  EXPECT_EQ(locations.uLightCount, -1);
+  EXPECT_EQ(locations.uMapRay, -1);
 }
 
 }  // namespace
