@@ -5,6 +5,8 @@ from PySide2 import QtGui, QtWidgets
 
 _PRESETS = [("OverTheShoulder", "Over the shoulder"), ("Top", "Top"),
             ("FrontLeft", "Front left")]
+_LIGHT_TYPES = [("Directional", "Directional (the sun: parallel shadows)"),
+                ("Point", "Point (a lamp near the model: shadows spread from it)")]
 _TRANSPARENCIES = [("Exact", "Exact (in depth order per pixel)"),
                    ("FreeCAD", "FreeCAD's own look (Coin's blending)")]
 _RENDERERS = [("AUTO", "Automatic (CPU tracer without a GPU, GL on a GPU)"),
@@ -48,8 +50,18 @@ class PreferencesPage:
 
         light = QtWidgets.QGroupBox("Light")
         form = QtWidgets.QFormLayout(light)
+        self.light_type = _choices(_LIGHT_TYPES)
+        form.addRow("Type", self.light_type)
         self.preset = _choices(_PRESETS)
         form.addRow("Direction", self.preset)
+        self.light_distance = QtWidgets.QDoubleSpinBox()
+        self.light_distance.setRange(0.5, 20.0)
+        self.light_distance.setSingleStep(0.25)
+        self.light_distance.setSuffix(" x the model")
+        self.light_distance.setToolTip("A point light's distance from the model's centre, "
+                                       "towards where the direction comes from")
+        form.addRow("Point light's distance", self.light_distance)
+        self.light_type.currentIndexChanged.connect(self._light_type_changed)
         self.light_color = _ColourButton()
         form.addRow("Colour", self.light_color)
         self.intensity = QtWidgets.QDoubleSpinBox()
@@ -86,9 +98,15 @@ class PreferencesPage:
         layout.addWidget(quality)
         layout.addStretch()
 
+    def _light_type_changed(self, *_):
+        self.light_distance.setEnabled(self.light_type.currentData() == "Point")
+
     def loadSettings(self):
         import ivshadow.freecad as shadows
         settings = shadows.settings_from_preferences()
+        self.light_type.setCurrentIndex(max(0, self.light_type.findData(settings["light_type"])))
+        self.light_distance.setValue(settings["light_distance"])
+        self._light_type_changed()
         self.preset.setCurrentIndex(max(0, self.preset.findData(settings["preset"])))
         self.light_color.set_colour(settings["light_color"])
         self.intensity.setValue(settings["intensity"])
@@ -105,6 +123,8 @@ class PreferencesPage:
         import ivshadow.freecad as shadows
         settings = {
             "preset": self.preset.currentData(),
+            "light_type": self.light_type.currentData(),
+            "light_distance": self.light_distance.value(),
             "light_color": self.light_color.colour,
             "intensity": self.intensity.value(),
             "ground": self.ground.isChecked(),

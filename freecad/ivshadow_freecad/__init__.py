@@ -53,6 +53,12 @@ PRESETS = {
 # The settings and their defaults (also the preferences' defaults). Colours are (r, g, b) in 0..1.
 DEFAULTS = {
     "preset": "OverTheShoulder",
+    # "Directional": a light from far away (the sun), travelling along the preset's direction;
+    # "Point": a lamp at a place, by default on the preset's line through the model's centre,
+    # `light_distance` times the model's size away from it (enable(light_location=...) names
+    # the place in document coordinates instead).
+    "light_type": "Directional",
+    "light_distance": 2.0,
     "light_color": (1.0, 1.0, 1.0),
     "intensity": 1.0,
     "ground": True,
@@ -73,6 +79,7 @@ DEFAULTS = {
 }
 
 _TRANSPARENCY = {"Exact": "PEELED", "FreeCAD": "COIN_BLENDING"}
+_LIGHT_TYPES = {"Directional": "DeepShadowDirectionalLight", "Point": "DeepShadowLight"}
 
 _NAMES = {"dragger": "IvShadowLightDragger", "group": "IvShadowGroup", "light": "IvShadowLight", "ground": "IvShadowGround",
           "model": "IvShadowModel", "host_lights": "IvShadowHostLights"}
@@ -108,6 +115,10 @@ def settings_from_preferences():
     settings["preset"] = group.GetString("LightPreset", DEFAULTS["preset"])
     if settings["preset"] not in PRESETS:
         settings["preset"] = DEFAULTS["preset"]
+    settings["light_type"] = group.GetString("LightType", DEFAULTS["light_type"])
+    if settings["light_type"] not in _LIGHT_TYPES:
+        settings["light_type"] = DEFAULTS["light_type"]
+    settings["light_distance"] = group.GetFloat("LightDistance", DEFAULTS["light_distance"])
     settings["light_color"] = _colour_from_parameter(
         group.GetUnsigned("LightColor", _colour_to_parameter(DEFAULTS["light_color"])))
     settings["intensity"] = group.GetFloat("LightIntensity", DEFAULTS["intensity"])
@@ -129,6 +140,8 @@ def save_preferences(settings):
     """Stores `settings` (keys of DEFAULTS) in FreeCAD's parameters."""
     group = App.ParamGet(PARAMETERS)
     group.SetString("LightPreset", settings["preset"])
+    group.SetString("LightType", settings["light_type"])
+    group.SetFloat("LightDistance", float(settings["light_distance"]))
     group.SetUnsigned("LightColor", _colour_to_parameter(settings["light_color"]))
     group.SetFloat("LightIntensity", float(settings["intensity"]))
     group.SetBool("Ground", bool(settings["ground"]))
@@ -182,9 +195,10 @@ class _Shadows:
 
         self.group = _type("TransparentShadowGroup")
         self.group.setName(_NAMES["group"])
-        self.light = _type("DeepShadowDirectionalLight")
+        self.light = _type(_LIGHT_TYPES[DEFAULTS["light_type"]])
         self.light.setName(_NAMES["light"])
         self.group.addChild(self.light)
+        self.location = None  # a point light's place named by enable(light_location=...)
 
         # The ground: unpickable (a click on it selects nothing, as on the background), under a
         # switch that hides it when the camera looks at it from below.
@@ -331,10 +345,20 @@ class _Shadows:
 
     # -- settings -------------------------------------------------------------------------------
 
-    def apply(self, direction, settings):
+    def apply(self, direction, settings, location=None):
         self.direction = direction
         self.settings = settings
-        self.light.direction.setValue(coin.SbVec3f(*direction))
+        self.location = location
+        wanted = _LIGHT_TYPES[settings["light_type"]]
+        if self.light.getTypeId().getName().getString() != wanted:
+            light = _type(wanted)
+            light.setName(_NAMES["light"])
+            self.group.replaceChild(self.light, light)
+            self.light = light
+        if self._is_point():
+            self._place_light()
+        else:
+            self.light.direction.setValue(coin.SbVec3f(*direction))
         self.light.color.setValue(coin.SbColor(*settings["light_color"]))
         self.light.intensity = float(settings["intensity"])
         if not self.group.renderer.set(str(settings["renderer"])):
@@ -441,17 +465,40 @@ class _Shadows:
             return
         self.bounds = bounds
         if bounds is not None:
+            if self._is_point():
+                self._place_light()
             self._place_ground(bounds)
             self._place_dragger(bounds)
         self._show_ground()
 
+    def _is_point(self):
+        return self.settings["light_type"] == "Point"
+
+    def _light_place(self):
+        """A point light's place: the one named, or on the preset's line through the model's
+        centre, light_distance times the model's size before it (where the light comes from)."""
+        if self.location is not None:
+            return self.location
+        if self.bounds is None:
+            return (0.0, 0.0, 0.0)
+        x0, y0, z0, x1, y1, z1 = self.bounds
+        size = max(x1 - x0, y1 - y0, z1 - z0, 1e-6)
+        distance = float(self.settings["light_distance"]) * size
+        centre = ((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2)
+        return tuple(c - d * distance for c, d in zip(centre, self.direction))
+
+    def _place_light(self):
+        self.light.location.setValue(coin.SbVec3f(*self._light_place()))
+
     def _show_dragger(self):
         index = self.selection.findChild(self.dragger_root)
-        if self.settings["dragger"] and index < 0:
+        # The dragger turns a directional light; a point light is placed by the preferences.
+        shown = self.settings["dragger"] and not self._is_point()
+        if shown and index < 0:
             self.selection.insertChild(self.dragger_root,
                                        self.selection.findChild(self.host_lights) + 1)
             self.dragger_sensor.attach(self.dragger.rotation)
-        elif not self.settings["dragger"] and index >= 0:
+        elif not shown and index >= 0:
             self.dragger_sensor.detach()
             self.selection.removeChild(index)
 
@@ -466,7 +513,7 @@ class _Shadows:
 
     def _dragger_turned(self, data, sensor):
         # The user turned the dragger: the light follows, and the ground with its shadow.
-        if self.turning:
+        if self.turning or self._is_point():
             return
         turned = self.dragger.rotation.getValue().multVec(coin.SbVec3f(0, 0, -1)).getValue()
         self.direction = _unit(turned)
@@ -488,19 +535,40 @@ class _Shadows:
         extent = max(x1 - x0, y1 - y0, z1 - z0)
         if extent <= 0:
             extent = 1.0
-        dx, dy, dz = self.direction
-        # Where the light carries the top of the model down to the ground: the ground is
-        # centred between the model and that shadow, and grows by the shadow's offset.
-        drop = z1 - z0
-        shift = (0.0, 0.0) if dz >= -1e-6 else (dx / -dz * drop, dy / -dz * drop)
-        shift_length = math.hypot(*shift)
-        if shift_length > 10 * extent:  # a light almost level: the shadow runs off anyway
-            shift = (shift[0] / shift_length * 10 * extent, shift[1] / shift_length * 10 * extent)
-            shift_length = 10 * extent
-        cx = (x0 + x1) / 2 + shift[0] / 2
-        cy = (y0 + y1) / 2 + shift[1] / 2
-        half = (float(self.settings["ground_size"]) * max(x1 - x0, y1 - y0, extent * 0.5)
-                + shift_length) / 2
+        footprint = max(x1 - x0, y1 - y0, extent * 0.5)
+        margin = float(self.settings["ground_size"]) * footprint
+        if self._is_point():
+            # Where the lamp carries the corners of the model's top down to the ground: the
+            # ground covers the model's footprint and that shadow, with the margin the size
+            # asks for around the model.
+            lx, ly, lz = self._light_place()
+            xs, ys = [x0, x1], [y0, y1]
+            if lz > z1 + 1e-6 * extent:
+                scale = min((lz - z0) / (lz - z1), 10.0)
+                for x in (x0, x1):
+                    for y in (y0, y1):
+                        xs.append(lx + (x - lx) * scale)
+                        ys.append(ly + (y - ly) * scale)
+            else:  # a lamp level with the top or below it: the shadow runs off anyway
+                xs += [x0 - 5 * extent, x1 + 5 * extent]
+                ys += [y0 - 5 * extent, y1 + 5 * extent]
+            cx = (min(xs) + max(xs)) / 2
+            cy = (min(ys) + max(ys)) / 2
+            half = (max(max(xs) - min(xs), max(ys) - min(ys)) + margin - footprint) / 2
+        else:
+            dx, dy, dz = self.direction
+            # Where the light carries the top of the model down to the ground: the ground is
+            # centred between the model and that shadow, and grows by the shadow's offset.
+            drop = z1 - z0
+            shift = (0.0, 0.0) if dz >= -1e-6 else (dx / -dz * drop, dy / -dz * drop)
+            shift_length = math.hypot(*shift)
+            if shift_length > 10 * extent:  # a light almost level: the shadow runs off anyway
+                shift = (shift[0] / shift_length * 10 * extent,
+                         shift[1] / shift_length * 10 * extent)
+                shift_length = 10 * extent
+            cx = (x0 + x1) / 2 + shift[0] / 2
+            cy = (y0 + y1) / 2 + shift[1] / 2
+            half = (margin + shift_length) / 2
         # Just below the lowest point, so that faces lying on it do not fight with it for
         # depth; a thousandth of the model's size is far below GL's depth resolution at any
         # zoom that shows the model, and no visible gap under it.
@@ -564,7 +632,7 @@ _states = {}
 _observer = _DocumentObserver()
 
 
-def _resolve(light_direction, ground, settings):
+def _resolve(light_direction, ground, settings, light_location=None):
     resolved = settings_from_preferences()
     fields = {}
     for key, value in settings.items():
@@ -580,32 +648,41 @@ def _resolve(light_direction, ground, settings):
         resolved["ground"] = bool(ground)
     if resolved["preset"] not in PRESETS:
         raise ValueError("preset: one of %s" % ", ".join(PRESETS))
+    if light_location is not None:
+        resolved["light_type"] = "Point"
+        light_location = tuple(float(c) for c in light_location)
+        if len(light_location) != 3 or not all(math.isfinite(c) for c in light_location):
+            raise ValueError("light_location: three finite coordinates")
+    if resolved["light_type"] not in _LIGHT_TYPES:
+        raise ValueError("light_type: Directional or Point, not %r" % resolved["light_type"])
     direction = _unit(light_direction if light_direction is not None
                       else PRESETS[resolved["preset"]])
     resolved["fields"] = fields
-    return direction, resolved
+    return direction, resolved, light_location
 
 
-def enable(view=None, *, light_direction=None, ground=None, **settings):
+def enable(view=None, *, light_direction=None, ground=None, light_location=None, **settings):
     """Shadows in `view` (a FreeCAD 3D view; the active one when None).
 
     light_direction: the direction the light travels in document coordinates, as Coin's
-    DirectionalLight.direction (None: the preferences' preset). ground: the automatic ground
-    on or off (None: the preference). settings: any of DEFAULTS' keys (preset, light_color,
-    intensity, ground_size, ground_color, ground_transparency, renderer), or fields of the
+    DirectionalLight.direction (None: the preferences' preset); with a point light, the line
+    from its place through the model's centre. light_location: a point light at this place in
+    document coordinates (None: the preferences' light). ground: the automatic ground on or off
+    (None: the preference). settings: any of DEFAULTS' keys (preset, light_type,
+    light_distance, light_color, intensity, ground_size, ground_color, ground_transparency, renderer), or fields of the
     TransparentShadowGroup by name (movingResolution=0.5, transparency="COIN_BLENDING").
     Called on a view with shadows, changes their settings."""
     view = _active_view(view)
-    direction, resolved = _resolve(light_direction, ground, settings)
+    direction, resolved, location = _resolve(light_direction, ground, settings, light_location)
     key = _address(view.getSceneGraph())
     state = _states.get(key)
     if state is None:
         state = _Shadows(view)
-        state.apply(direction, resolved)
+        state.apply(direction, resolved, location)
         state.insert()
         _states[key] = state
     else:
-        state.apply(direction, resolved)
+        state.apply(direction, resolved, location)
     return state.group
 
 
