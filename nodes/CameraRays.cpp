@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ivshadow {
 namespace {
@@ -168,6 +169,20 @@ float CameraRays::offsetDepth(const CameraRay& ray, float t, const glm::vec3& no
       factor != 0.0f ? depthSlope(ray, ray.origin + t * ray.direction, normal) : 0.0;
   const double offset = double(factor) * slope + double(units) * buffer.resolution(depth);
   return float(std::clamp(double(depth) + offset, 0.0, 1.0));
+}
+
+std::array<glm::vec3, 2> CameraRays::footprint(const CameraRay& ray, const glm::vec3& point,
+                                               const glm::vec3& normal) const {
+  const auto offsetOnPlane = [&](const CameraRay& next) {
+    const float along = glm::dot(next.direction, normal);
+    if (along == 0.0f) return glm::vec3(std::numeric_limits<float>::infinity());
+    const float t = glm::dot(point - next.origin, normal) / along;
+    return next.origin + t * next.direction - point;
+  };
+  // The picture's own pixels: a picture traced smaller while the camera moves is stretched,
+  // and its texels are taken from as far down the chain as its pixels are large.
+  return {offsetOnPlane(rayAt(ray.nx + 2.0f / float(width_), ray.ny)),
+          offsetOnPlane(rayAt(ray.nx, ray.ny + 2.0f / float(height_)))};
 }
 
 }  // namespace ivshadow

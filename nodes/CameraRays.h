@@ -1,10 +1,12 @@
 #pragma once
 
+#include "ivshadow/Export.h"
 #include "scene/ShadowTypes.h"
 
 #include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <vector>
 
 class SbMatrix;
@@ -24,7 +26,7 @@ struct CameraRay {
 // The camera rays of a width x height picture seen through `viewing` and `projection` (Coin's
 // matrices, as GL draws with them), and where along them window depths lie. In doubles: a near
 // plane at 1e-11 or a far one 1e12 times as far lost the rays in a float inverse.
-class CameraRays {
+class IVSHADOW_INTERNAL CameraRays {
  public:
   // `positions`: the scene's triangle corners, which every ray must be able to reach.
   // `viewportWidth` x `viewportHeight`: the pixels GL draws the picture over (a picture traced
@@ -46,6 +48,12 @@ class CameraRays {
   // after the picture stay in front of it (a cube's lower edges vanished under TRACER).
   float offsetDepth(const CameraRay& ray, float t, const glm::vec3& normal, float factor,
                     float units, const DepthBuffer& buffer) const;
+  // Where the next pixel's rays, across and up, meet the plane through `point` with normal
+  // `normal`, less `point`: the pixel's footprint on the surface (ray differentials), from
+  // which GL's texture level of detail follows. Infinite where a neighbour's ray runs along
+  // the plane.
+  std::array<glm::vec3, 2> footprint(const CameraRay& ray, const glm::vec3& point,
+                                     const glm::vec3& normal) const;
 
  private:
   void clip(CameraRay& ray) const;

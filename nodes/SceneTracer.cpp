@@ -6,6 +6,7 @@
 #include "nodes/CastingLight.h"
 #include "nodes/RowShading.h"
 #include "nodes/SceneExtraction.h"
+#include "nodes/TextureFootprint.h"
 #include "raytrace/CasterScene.h"
 #include "raytrace/EmbreeHandles.h"
 #include "raytrace/LightEquation.h"
@@ -136,7 +137,9 @@ class Tracer {
       const Triangle& tri = data_.triangles[hit.primitive];
       if (metBefore(hits, i)) continue;
       const glm::vec3 position = ray.origin + hit.t * ray.direction;
-      const PendingShade& shade = prepare(tri, hit, position, ray.direction, rays, row);
+      const PendingShade& shade =
+          prepare(tri, hit, position, ray.direction,
+                  levelOfDetail(data_, cameraRays_, ray, tri, position), rays, row);
       transmitted *= 1.0f - shade.opacity;
       if (transmitted <= 0.0f) break;
     }
@@ -263,12 +266,13 @@ class Tracer {
   // elsewhere Coin's fixed-function GL lights each vertex and interpolates (Gouraud), and so
   // does this.
   const PendingShade& prepare(const Triangle& tri, const Hit& hit, const glm::vec3& position,
-                              const glm::vec3& rayDirection, RayCounts& rays,
+                              const glm::vec3& rayDirection, float lod, RayCounts& rays,
                               RowShading& row) const {
     // Made in place: the row keeps it (lighting() appends to the row's other vectors only).
     PendingShade& shade = row.shades.emplace_back();
     shade.image = imageOf(data_, tri);
-    const SurfaceSample sample = sampleSurface(tri.colour, tri.texCoord, shade.image, hit.u, hit.v);
+    const SurfaceSample sample =
+        sampleSurface(tri.colour, tri.texCoord, shade.image, hit.u, hit.v, lod);
     shade.rgb = glm::vec3(sample.colour);
     shade.alpha = sample.colour.a;
     shade.texel = sample.texel;

@@ -35,8 +35,20 @@ IVSHADOW_INTERNAL glm::vec3 transmittance(const glm::vec4& c, ShadowColourModel 
 IVSHADOW_INTERNAL glm::vec4 applyTextureModel(const glm::vec4& colour, const glm::vec4& texel,
                                               int model, const glm::vec3& blendColour);
 
-// Samples `image` at (s, t) as GL would: nearest or bilinear, repeat or clamp to edge.
-IVSHADOW_INTERNAL glm::vec4 sampleTexture(const TextureImage& image, float s, float t);
+// Samples `image` at (s, t) as GL would: nearest or bilinear, repeat or clamp to edge, and
+// where the image is mipmapped and `lod` (log2 of the texels one pixel spans) minifies it,
+// from its mipmap chain.
+IVSHADOW_INTERNAL glm::vec4 sampleTexture(const TextureImage& image, float s, float t,
+                                          float lod = 0.0f);
+
+// GL's texture level of detail (the GL 4.5 spec, 8.14.1) where a pixel's footprint on a
+// triangle is `across` and `up` (world offsets to where the next pixels' rays meet its plane,
+// CameraRays::footprint): log2 of the larger length, in texels of `image`, of the texture
+// coordinates' change over them. The triangle's corners and their coordinates give that
+// change; 0 for a triangle without area.
+IVSHADOW_INTERNAL float textureLod(const TextureImage& image, const glm::vec3 corners[3],
+                                   const glm::vec2 texCoords[3], const glm::vec3& across,
+                                   const glm::vec3& up);
 
 // What a triangle shows at barycentrics (u, v) of corners 1 and 2: its corners' colour and
 // opacity interpolated, and with a texture the texel at the interpolated coordinates.
@@ -46,13 +58,13 @@ struct SurfaceSample {
 };
 // Inline, as texturedColour: the tracer asks for each surface a camera ray meets.
 inline SurfaceSample sampleSurface(const glm::vec4 colours[3], const glm::vec2 texCoords[3],
-                                   const TextureImage* image, float u, float v) {
+                                   const TextureImage* image, float u, float v, float lod = 0.0f) {
   const float w = 1.0f - u - v;
   SurfaceSample sample;
   sample.colour = w * colours[0] + u * colours[1] + v * colours[2];
   if (image != nullptr) {
     const glm::vec2 st = w * texCoords[0] + u * texCoords[1] + v * texCoords[2];
-    sample.texel = sampleTexture(*image, st.x, st.y);
+    sample.texel = sampleTexture(*image, st.x, st.y, lod);
   }
   return sample;
 }

@@ -59,7 +59,8 @@ int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures
   if (data == nullptr || size[0] <= 0 || size[1] <= 0 || components < 1 || components > 4)
     return -1;
   const int model = static_cast<int>(action->getTextureModel());
-  const auto key = std::make_tuple(data, int(size[0]), int(size[1]), components, model);
+  const float quality = SoTextureQualityElement::get(action->getState());
+  const auto key = std::make_tuple(data, int(size[0]), int(size[1]), components, model, quality);
   const auto found = cache.index.find(key);
   if (found != cache.index.end()) return found->second;
 
@@ -70,8 +71,6 @@ int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures
   image.blendColour = action->getTextureBlendColor();
   image.repeatS = action->getTextureWrapS() == SoTexture2::REPEAT;
   image.repeatT = action->getTextureWrapT() == SoTexture2::REPEAT;
-  // Coin's own threshold (SoGLImage's COIN_TEX2_LINEAR_LIMIT default) for nearest sampling.
-  image.nearest = SoTextureQualityElement::get(action->getState()) < 0.2f;
   const std::size_t texels = std::size_t(image.width) * std::size_t(image.height);
   image.rgba.resize(texels * 4);
   for (std::size_t i = 0; i < texels; ++i) {
@@ -85,6 +84,7 @@ int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures
     if (out[0] != out[1] || out[1] != out[2]) image.grey = false;
     if (out[3] != 255) image.opaque = false;
   }
+  setTextureFiltering(image, quality);
   const int index = static_cast<int>(textures.size());
   textures.push_back(std::move(image));
   cache.index.emplace(key, index);

@@ -30,7 +30,25 @@ struct TextureImage {
   bool nearest = false;  // sampled without filtering (low SoComplexity::textureQuality)
   bool grey = true;      // every texel has r == g == b
   bool opaque = true;    // every texel has alpha 255
+  // Minified through a mipmap chain, as Coin's SoGLImage does from texture quality 0.5 (its
+  // default) on: the two nearest levels blended, within each the nearest texel
+  // (GL_NEAREST_MIPMAP_LINEAR) or, from quality 0.8, bilinear (GL_LINEAR_MIPMAP_LINEAR).
+  bool mipmapped = false;
+  bool bilinearLevels = false;
+  // Levels 1, 2, ... of the chain (level 0 is `rgba`): each half the one before, rounded down,
+  // to 1 x 1, as GL generates them. Empty unless `mipmapped`.
+  struct Level {
+    int width = 0;
+    int height = 0;
+    std::vector<unsigned char> rgba;
+  };
+  std::vector<Level> levels;
 };
+
+// Coin's texture filtering at a texture quality (SoGLImageP::applyFilter with its default
+// limits: 0.2 for filtering, 0.5 for mipmaps, 0.8 for bilinear levels), and the mipmap chain
+// where it mipmaps.
+IVSHADOW_INTERNAL void setTextureFiltering(TextureImage& image, float quality);
 
 struct TriangleVertex {
   float position[3];  // in the coordinates of the node the triangles were taken from
@@ -98,7 +116,7 @@ IVSHADOW_INTERNAL bool isGrey(float r, float g, float b);
 // The current texture of `action` (index into `textures`, added on first use; -1 for none).
 // `cache` maps Coin's image data to indices so that each image is copied once.
 struct TextureCache {
-  std::map<std::tuple<const unsigned char*, int, int, int, int>, int> index;
+  std::map<std::tuple<const unsigned char*, int, int, int, int, float>, int> index;
 };
 IVSHADOW_INTERNAL int currentTexture(SoCallbackAction* action, std::vector<TextureImage>& textures,
                                      TextureCache& cache);

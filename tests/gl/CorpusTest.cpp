@@ -94,9 +94,6 @@ const std::map<std::string, Expectation>& expectations() {
       // 33.9 dB: one diagonal silhouette edge through pixel centres, owned by different faces
       // (of different colours) in the rasteriser and the ray tracer.
       {"spongetri4.iv", {32.5, "an edge through pixel centres"}},
-      // 34.5 dB: the stripes of its texture, sampled with mipmaps by GL and at the base level
-      // by the reference.
-      {"toys/top.iv", {33.5, "texture filtering"}},
       // 37.4 dB: a flat BASE_COLOR floor plan almost in the plane of the eye: GL rasterises its
       // nearly degenerate triangles into a dark strip that the reference's grazing rays miss.
       {"buildings/Barcelona.iv", {36.0, "a plan seen edge-on"}},
