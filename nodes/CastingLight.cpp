@@ -4,7 +4,6 @@
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoDeepShadowSpotLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "nodes/DeepShadowSettings.h"
 #include "scene/WarnOnce.h"
 
 #include <Inventor/SbMatrix.h>
@@ -96,13 +95,29 @@ bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
   return false;
 }
 
+ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {
+  const bool coloured = shadowColor == SoDeepShadowLight::COLORED ||
+                        (shadowColor == SoDeepShadowLight::AUTO && colouredCasters);
+  if (!coloured) return ShadowColourModel::Monochrome;
+  return colorModel == SoDeepShadowLight::POWER ? ShadowColourModel::Power
+                                                : ShadowColourModel::Saturate;
+}
+
 ShadowColourModel castingColourModel(const SoLight& light, const SoTransparentShadowGroup& group,
                                      bool colouredCasters) {
-  // Only the colour fields are read: no texture size limits them.
-  const DeepShadowSettings settings =
-      castingSettings(const_cast<SoLight&>(light), const_cast<SoTransparentShadowGroup&>(group),
-                      std::numeric_limits<int>::max());
-  return shadowColourModel(settings.shadowColor, settings.colorModel, colouredCasters);
+  // The colour fields of the node whose fields the light casts with (castingSettings' choice,
+  // nodes/DeepShadowSettings.cpp); they are read as set, never clamped.
+  const auto model = [&](const auto& node) {
+    return shadowColourModel(node.shadowColor.getValue(), node.colorModel.getValue(),
+                             colouredCasters);
+  };
+  if (light.isOfType(SoDeepShadowLight::getClassTypeId()))
+    return model(static_cast<const SoDeepShadowLight&>(light));
+  if (light.isOfType(SoDeepShadowSpotLight::getClassTypeId()))
+    return model(static_cast<const SoDeepShadowSpotLight&>(light));
+  if (light.isOfType(SoDeepShadowDirectionalLight::getClassTypeId()))
+    return model(static_cast<const SoDeepShadowDirectionalLight&>(light));
+  return model(group);
 }
 
 }  // namespace ivshadow

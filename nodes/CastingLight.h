@@ -36,8 +36,16 @@ bool isDeepShadowLight(const SoLight& light);
 IVSHADOW_INTERNAL bool castingLight(const SoLight& light, const SoTransparentShadowGroup& group,
                                     const SbMatrix& toGroup, CastingLight& out);
 
-// How the light's shadow filters light: by the shadowColor and colorModel it casts with
-// (castingSettings, nodes/DeepShadowSettings.h).
+// How the shadow of a light with these shadowColor and colorModel fields
+// (SoDeepShadowLight::ShadowColor, ::ColorModel) filters light: COLORED and MONOCHROME as set,
+// AUTO coloured when some transparent caster is coloured; a coloured one by SATURATE or POWER.
+// The GL path and the tracers both ask here, so they cannot resolve it differently.
+IVSHADOW_INTERNAL ShadowColourModel shadowColourModel(int shadowColor, int colorModel,
+                                                      bool colouredCasters);
+
+// How the light's shadow filters light: by the shadowColor and colorModel fields it casts with
+// (a deep shadow light's own, the group's for any other light, as castingSettings chooses in
+// nodes/DeepShadowSettings.h).
 IVSHADOW_INTERNAL ShadowColourModel castingColourModel(const SoLight& light,
                                                        const SoTransparentShadowGroup& group,
                                                        bool colouredCasters);

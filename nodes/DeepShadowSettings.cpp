@@ -185,12 +185,4 @@ BounceSettings resolveBounce(SoTransparentShadowGroup& group) {
   return s;
 }
 
-ShadowColourModel shadowColourModel(int shadowColor, int colorModel, bool colouredCasters) {
-  const bool coloured = shadowColor == SoDeepShadowLight::COLORED ||
-                        (shadowColor == SoDeepShadowLight::AUTO && colouredCasters);
-  if (!coloured) return ShadowColourModel::Monochrome;
-  return colorModel == SoDeepShadowLight::POWER ? ShadowColourModel::Power
-                                                : ShadowColourModel::Saturate;
-}
-
 }  // namespace ivshadow

@@ -72,11 +72,4 @@ IVSHADOW_INTERNAL DeepShadowSettings castingSettings(SoLight& light,
                                                      SoTransparentShadowGroup& group,
                                                      int maxTextureSize);
 
-// How the shadow of a light with these shadowColor and colorModel fields
-// (SoDeepShadowLight::ShadowColor, ::ColorModel) filters light: COLORED and MONOCHROME as set,
-// AUTO coloured when some transparent caster is coloured; a coloured one by SATURATE or POWER.
-// The GL path and the reference both ask here, so they cannot resolve it differently.
-IVSHADOW_INTERNAL ShadowColourModel shadowColourModel(int shadowColor, int colorModel,
-                                                      bool colouredCasters);
-
 }  // namespace ivshadow

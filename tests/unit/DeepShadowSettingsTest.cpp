@@ -3,6 +3,7 @@
 // and minutes on llvmpipe, so the clamping to it is what is tested).
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
+#include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
 #include "scene/CoinMessageCapture.h"
 
