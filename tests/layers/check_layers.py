@@ -1,13 +1,18 @@
 #!/usr/bin/env python3
 """Fails when a file of the project includes a file of a layer it may not depend on.
 
-Usage: check_layers.py ROOT TABLE [--install-list FILE]
+Usage: check_layers.py ROOT TABLE [--install-list FILE] [--docs FILE]
 
-ROOT is the source tree, TABLE the layer table (tests/layers/layers.txt describes the format).
+ROOT is the source tree, TABLE the layer table (tests/layers/layers.txt describes the format):
+one folder per layer, and a table that names a file instead (but an installed header) or two
+folders for a layer is refused.
 Every #include of a .h or .cpp file under ROOT that names a file of the project (looked up
 beside the including file, from ROOT, and from ROOT/include) must stay within what the
 including file's layer may use. With --install-list, the headers under include/ivshadow/ must
 be exactly those the CMake file lists (the public API is the installed set, nothing else).
+With --docs, the markdown table under "## The layers" of FILE (docs/ARCHITECTURE.md) must name
+each layer with its folder, and no other: "| gl | `gl/` | ... |", or several layers in a row
+with their folders in the same order.
 Prints one line per violation and exits 1 if there is any.
 """
 
@@ -18,6 +23,9 @@ import sys
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]')
 SOURCE_SUFFIXES = (".h", ".cpp")
 SKIPPED_FOLDERS = {".git", "build"}
+# The installed headers' paths are the public API, so a header there may be a layer of its own
+# (include/ivshadow/Export.h); anywhere else a layer is a folder.
+INSTALLED = "include/"
 
 
 def read_table(path):
@@ -35,16 +43,29 @@ def read_table(path):
     order, prefixes, deps = [], {}, {}
     for number, line in entries:
         if ":" not in line:
-            raise ValueError(f"{path}:{number}: expected 'layer paths... : deps...'")
+            raise ValueError(f"{path}:{number}: expected 'layer folder : deps...'")
         left, right = line.split(":", 1)
         words = left.split()
-        if len(words) < 2:
-            raise ValueError(f"{path}:{number}: a layer needs a name and a path")
-        layer, paths = words[0], words[1:]
+        if len(words) != 2:
+            raise ValueError(f"{path}:{number}: a layer is a name and one folder, not "
+                             f"{' '.join(words) or 'nothing'}")
+        layer, folder = words
+        if layer in deps:
+            raise ValueError(f"{path}:{number}: layer {layer} is named twice")
+        if not folder.endswith("/") and not folder.startswith(INSTALLED):
+            raise ValueError(f"{path}:{number}: {folder} is not a folder: a layer is a folder "
+                             f"(only an installed header, whose path is the API, stands alone)")
+        if folder in prefixes:
+            raise ValueError(f"{path}:{number}: {folder} is the folder of {prefixes[folder]} too")
         order.append(layer)
-        for prefix in paths:
-            prefixes[prefix] = layer
+        prefixes[folder] = layer
         deps[layer] = set(right.split())
+    folders = [p for p in prefixes if p.endswith("/")]
+    for inner in folders:
+        for outer in folders:
+            if inner != outer and inner.startswith(outer):
+                raise ValueError(f"{path}: {inner} ({prefixes[inner]}) lies inside {outer} "
+                                 f"({prefixes[outer]}): one folder per layer")
     for layer, names in deps.items():
         unknown = names - set(order)
         if unknown:
@@ -68,10 +89,9 @@ def allowed_layers(deps):
 
 def layer_of(relative, prefixes):
     """The layer of the longest table path that `relative` (a path from ROOT) falls under."""
-    stem = os.path.splitext(relative)[0]
     best = None
     for prefix, layer in prefixes.items():
-        matches = relative.startswith(prefix) if prefix.endswith("/") else stem == prefix
+        matches = relative.startswith(prefix) if prefix.endswith("/") else relative == prefix
         if matches and (best is None or len(prefix) > len(best[0])):
             best = (prefix, layer)
     return best[1] if best else None
@@ -140,17 +160,62 @@ def check_install_list(root, cmake_file):
     return problems
 
 
+def check_docs(table, docs):
+    """The layers and folders the docs' table of layers names must be the table's."""
+    _, prefixes, _ = read_table(table)
+    want = {layer: folder for folder, layer in prefixes.items()}
+    said, problems, inside = {}, [], False
+    with open(docs, encoding="utf-8") as text:
+        for number, line in enumerate(text, 1):
+            if line.startswith("## "):
+                inside = line.strip() == "## The layers"
+                continue
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if not inside or not line.startswith("|") or len(cells) < 2:
+                continue
+            names = [n.strip() for n in cells[0].split(",")]
+            folders = re.findall(r"`([^`]+)`", cells[1])
+            if names == ["layer"] or set(cells[0]) <= set("-: "):
+                continue  # the header and its rule
+            if len(names) != len(folders):
+                problems.append(f"{os.path.basename(docs)}:{number}: {len(names)} layers, "
+                                f"{len(folders)} folders")
+                continue
+            said.update(zip(names, folders))
+    for layer in sorted(set(want) | set(said)):
+        if layer not in said:
+            problems.append(f"{os.path.basename(docs)}: layer {layer} ({want[layer]}) is not in "
+                            f"its table of layers")
+        elif layer not in want:
+            problems.append(f"{os.path.basename(docs)}: layer {layer} is in no "
+                            f"{os.path.basename(table)}")
+        elif said[layer] != want[layer]:
+            problems.append(f"{os.path.basename(docs)}: layer {layer} is {said[layer]}, not "
+                            f"{want[layer]} as {os.path.basename(table)} says")
+    return problems
+
+
 def main(argv):
     args = argv[1:]
-    install_list = None
+    install_list = docs = None
     if "--install-list" in args:
         at = args.index("--install-list")
         install_list = args[at + 1]
         del args[at:at + 2]
+    if "--docs" in args:
+        at = args.index("--docs")
+        docs = args[at + 1]
+        del args[at:at + 2]
     if len(args) != 2:
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
         return 2
-    problems = check(args[0], args[1], install_list)
+    try:
+        problems = check(args[0], args[1], install_list)
+        if docs:
+            problems += check_docs(args[1], docs)
+    except ValueError as error:
+        print(error)
+        return 1
     for problem in problems:
         print(problem)
     if problems:

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The layering check itself: it must pass a tree that only includes downwards and fail on
-each kind of violation (upwards, between siblings, from a file-level layer, into a public
-header that is not installed). Each case builds a small tree in a scratch folder."""
+each kind of violation (upwards, between siblings, into a public header that is not installed)
+and refuse a table whose layers are not one folder each. Each case builds a small tree in a
+scratch folder."""
 
 import os
 import subprocess
@@ -16,11 +17,12 @@ TABLE = """\
 low      low/                 :
 left     left/                : low
 right    right/               : low
-api      include/ivshadow/         :
-top      top/ left/Special    : api left right
+macros   include/ivshadow/Macros.h :
+api      include/ivshadow/    : macros
+top      top/                 : api left right
 """
 
-INSTALL = "set(HEADERS include/ivshadow/Api.h)\n"
+INSTALL = "set(HEADERS include/ivshadow/Api.h include/ivshadow/Macros.h)\n"
 
 
 class LayerCheckTest(unittest.TestCase):
@@ -34,7 +36,8 @@ class LayerCheckTest(unittest.TestCase):
             "low/Low.h": "#pragma once\n#include <vector>\n",
             "left/Left.h": '#pragma once\n#include "low/Low.h"\n',
             "right/Right.h": '#pragma once\n#include "low/Low.h"\n',
-            "include/ivshadow/Api.h": "#pragma once\n",
+            "include/ivshadow/Api.h": '#pragma once\n#include "ivshadow/Macros.h"\n',
+            "include/ivshadow/Macros.h": "#pragma once\n",
             "top/Top.cpp": '#include "left/Left.h"\n#include "right/Right.h"\n'
                            '#include <ivshadow/Api.h>\n#include "Generated.h"\n',
         }
@@ -46,10 +49,10 @@ class LayerCheckTest(unittest.TestCase):
                 out.write(text)
         return root
 
-    def run_checker(self, root):
+    def run_checker(self, root, *extra):
         result = subprocess.run(
             [sys.executable, CHECKER, root, os.path.join(root, "layers.txt"),
-             "--install-list", os.path.join(root, "Install.cmake")],
+             "--install-list", os.path.join(root, "Install.cmake"), *extra],
             capture_output=True, text=True)
         return result.returncode, result.stdout
 
@@ -72,11 +75,28 @@ class LayerCheckTest(unittest.TestCase):
         self.assert_fails_with({"right/Right.cpp": '#include "left/Left.h"\n'},
                                "right/Right.cpp:1: right includes left/Left.h (left)")
 
-    def test_a_file_level_layer_is_above_its_folder(self):
-        # left/Special belongs to top, so the rest of left/ may not include it.
-        self.assert_fails_with(
-            {"left/Special.h": "#pragma once\n", "left/Left.cpp": '#include "left/Special.h"\n'},
-            "left/Left.cpp:1: left includes left/Special.h (top)")
+    def test_an_installed_header_of_its_own_layer_is_below_its_folder(self):
+        # include/ivshadow/Macros.h belongs to macros, which may not include the rest of api.
+        self.assert_fails_with({"include/ivshadow/Macros.h": '#include "ivshadow/Api.h"\n'},
+                               "include/ivshadow/Macros.h:1: macros includes "
+                               "include/ivshadow/Api.h (api)")
+
+    def assert_table_refused(self, table, line):
+        status, out = self.run_checker(self.make_tree({"layers.txt": table}))
+        self.assertEqual(status, 1, out)
+        self.assertIn(line, out)
+
+    def test_a_file_as_a_layer_is_refused(self):
+        self.assert_table_refused(TABLE + "special  left/Special   : low\n",
+                                  "left/Special is not a folder")
+
+    def test_two_folders_for_one_layer_are_refused(self):
+        self.assert_table_refused(TABLE.replace("right/ ", "right/ top/"),
+                                  "a layer is a name and one folder")
+
+    def test_a_folder_inside_another_layers_folder_is_refused(self):
+        self.assert_table_refused(TABLE + "inner    left/inner/     : low\n",
+                                  "left/inner/ (inner) lies inside left/ (left)")
 
     def test_a_file_in_no_layer_fails(self):
         self.assert_fails_with({"stray/Stray.cpp": "\n"}, "stray/Stray.cpp: in no layer")
@@ -84,6 +104,24 @@ class LayerCheckTest(unittest.TestCase):
     def test_a_public_header_that_is_not_installed_fails(self):
         self.assert_fails_with({"include/ivshadow/Private.h": "\n"},
                                "include/ivshadow/Private.h: in include/ivshadow/ but not installed")
+
+    DOCS = ("# Architecture\n\n## The layers\n\n| layer | folder | holds |\n|---|---|---|\n"
+            "| low | `low/` | |\n| left, right | `left/`, `right/` | |\n"
+            "| macros | `include/ivshadow/Macros.h` | |\n| api | `include/ivshadow/` | |\n"
+            "| top | `top/` | |\n\n## Next\n\n| not | `a layer` |\n")
+
+    def test_docs_that_name_each_layer_and_its_folder_pass(self):
+        root = self.make_tree({"Docs.md": self.DOCS})
+        status, out = self.run_checker(root, "--docs", os.path.join(root, "Docs.md"))
+        self.assertEqual(status, 0, out)
+
+    def test_docs_that_miss_a_layer_or_name_another_folder_fail(self):
+        docs = self.DOCS.replace("| top | `top/` | |\n", "").replace("`low/`", "`lower/`")
+        root = self.make_tree({"Docs.md": docs})
+        status, out = self.run_checker(root, "--docs", os.path.join(root, "Docs.md"))
+        self.assertEqual(status, 1, out)
+        self.assertIn("Docs.md: layer top (top/) is not in its table of layers", out)
+        self.assertIn("Docs.md: layer low is lower/, not low/", out)
 
 
 if __name__ == "__main__":
