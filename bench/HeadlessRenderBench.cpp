@@ -3,12 +3,12 @@
 // groups at their defaults) against the same scene with its groups inactive, plain Coin
 // (BundledStill). Run: build/bin/ivshadow_bench (--benchmark_format=json for machines). Times
 // are wall clock to glFinish per frame.
-#include "callbacks/GlCapabilities.h"
+#include "gl/GlCapabilities.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
-#include "scene/SceneLoader.h"
-#include "scene/TransparencyType.h"
-#include "scene/ViewSetup.h"
+#include "scene_input/SceneLoader.h"
+#include "scene_input/TransparencyType.h"
+#include "scene_input/ViewSetup.h"
 
 #include "ivshadow/SoTransparentShadowGroup.h"
 

@@ -2,13 +2,13 @@
 // one run: the map from fragment lists (one draw per face, then the sort), the same map
 // peeled (one draw per layer), and a depth-only draw of the casters into each of the six
 // faces, which is what an opaque shadow map costs. The casters are the sphere field of
-// bench/BenchScenes.cpp, the light its lamp, the cube that of the group's map (callbacks/
+// bench/BenchScenes.cpp, the light its lamp, the cube that of the group's map (gl/
 // MapFrame). Run: build/bin/ivshadow_bench --benchmark_filter=MapBuildMethods. Times are wall
 // clock, the GL finished before and after.
 #include "BenchScenes.h"
-#include "callbacks/DeepShadowPass.h"
-#include "callbacks/GlHandles.h"
-#include "callbacks/GlProgram.h"
+#include "gl/DeepShadowPass.h"
+#include "gl/GlHandles.h"
+#include "gl/GlProgram.h"
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"

@@ -8,9 +8,9 @@
 #include "headless/OffscreenRenderer.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
-#include "scene/FieldAssignment.h"
-#include "scene/SceneLoader.h"
-#include "scene/ViewSetup.h"
+#include "scene_input/FieldAssignment.h"
+#include "scene_input/SceneLoader.h"
+#include "scene_input/ViewSetup.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/nodes/SoSeparator.h>

@@ -3,11 +3,11 @@
 #include "cli/ExitStatus.h"
 #include "cli/ImageArguments.h"
 #include "cli/InterruptGuard.h"
-#include "image/AtomicFile.h"
-#include "image/CommandPaths.h"
-#include "image/ImageComparison.h"
-#include "image/ImageFile.h"
-#include "image/OutputFiles.h"
+#include "image_files/AtomicFile.h"
+#include "image_files/CommandPaths.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/ImageFile.h"
+#include "image_files/OutputFiles.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
-#include "scene/TransparencyType.h"
+#include "scene_input/TransparencyType.h"
 
 namespace ivshadow {
 namespace {

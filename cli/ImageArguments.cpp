@@ -1,8 +1,8 @@
 #include "cli/ImageArguments.h"
 
-#include "image/AtomicFile.h"
-#include "image/CommandPaths.h"
-#include "image/ImageFile.h"
+#include "image_files/AtomicFile.h"
+#include "image_files/CommandPaths.h"
+#include "image_files/ImageFile.h"
 #include "scene/InputError.h"
 
 #include <filesystem>
@@ -29,7 +29,7 @@ void checkImageInput(const std::string& argument, const std::string& path) {
   try {
     imageFormatFor(path);
   } catch (const InputError&) {
-    // The types readImage reads are those imageFormatFor knows (image/ImageFile.h).
+    // The types readImage reads are those imageFormatFor knows (image_files/ImageFile.h).
     const std::string extension = std::filesystem::path(path).extension().string();
     throw InputError(path + ": error: cannot read images of type '" +
                      (extension.empty() ? std::string("(no extension)") : extension) + "' (the " +

@@ -2,8 +2,8 @@
 
 #include "cli/RenderCommand.h"
 #include "scene/CoinRef.h"
-#include "scene/FieldAssignment.h"
-#include "scene/SceneLoader.h"
+#include "scene_input/FieldAssignment.h"
+#include "scene_input/SceneLoader.h"
 
 #include <Inventor/SbName.h>
 #include <Inventor/SbString.h>

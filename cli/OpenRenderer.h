@@ -1,7 +1,7 @@
 #pragma once
 
 #include "headless/OffscreenRenderer.h"
-#include "image/ImageSize.h"
+#include "image_files/ImageSize.h"
 #include "scene/InputError.h"
 
 #include <iostream>

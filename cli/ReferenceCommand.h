@@ -1,6 +1,6 @@
 #pragma once
 
-#include "raytrace/ReferenceRenderer.h"
+#include "reference/ReferenceRenderer.h"
 
 #include <string>
 #include <vector>
@@ -20,7 +20,7 @@ struct ReferenceCommandOptions {
   bool bounceGiven = false;
 };
 
-// `ivshadow reference`: the exact CPU picture (raytrace/ReferenceRenderer.h). Exit 0, 2 on
+// `ivshadow reference`: the exact CPU picture (reference/ReferenceRenderer.h). Exit 0, 2 on
 // bad input, 128 + the signal when interrupted (130 for Ctrl-C), 1 otherwise; never leaves a
 // partial file.
 int runReference(const ReferenceCommandOptions& options);

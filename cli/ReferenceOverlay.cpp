@@ -1,10 +1,10 @@
 #include "cli/ReferenceOverlay.h"
 
-#include "callbacks/TracedPicturePass.h"
+#include "gl/TracedPicturePass.h"
 #include "headless/OffscreenRenderer.h"
 #include "nodes/TracerActivity.h"
-#include "raytrace/ReferenceRenderer.h"
-#include "scene/CoinMessageCapture.h"
+#include "reference/ReferenceRenderer.h"
+#include "scene_input/CoinMessageCapture.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGLRenderAction.h>

@@ -1,8 +1,8 @@
 #include "cli/RenderCommand.h"
 
-#include "callbacks/GlCapabilities.h"
 #include "cli/RenderSession.h"
 #include "cli/RenderStatistics.h"
+#include "gl/GlCapabilities.h"
 #include "headless/FrameStatistics.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/PeelStatistics.h"

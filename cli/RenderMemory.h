@@ -1,8 +1,8 @@
 #pragma once
 
-#include "callbacks/ShaderConstants.h"
+#include "gl/ShaderConstants.h"
 
-#include "image/MemoryBudget.h"
+#include "image_files/MemoryBudget.h"
 
 #include <string>
 
@@ -19,7 +19,7 @@ inline constexpr double kFrameFixedBytes = 128.0 * (1 << 20);
 // Each SoPeelingSeparator's or peeling SoTransparentShadowGroup's targets: 2 RG32F + 4 RGBA32F
 // (measured 80 too).
 inline constexpr double kPeelingBytesPerPixel = 80.0;
-// Its fragment lists besides (callbacks/FragmentListPass.h): two R32UI images and a depth copy,
+// Its fragment lists besides (gl/FragmentListPass.h): two R32UI images and a depth copy,
 // a pixel's slots of its own and the first overflow of a quarter fragment a pixel (counted
 // from the layouts, not measured; a view with more transparent layers grows the overflow).
 inline constexpr double kFragmentListBytesPerPixel =
@@ -27,7 +27,7 @@ inline constexpr double kFragmentListBytesPerPixel =
 // Captured surface layers, their read-back and the rays on the CPU: 292 measured with
 // coloured_shadows.iv, 368 with peeled_glasses.iv, which captures more layers; the larger.
 inline constexpr double kRaysBytesPerPixel = 370.0;
-// A VOLUMES light's besides, counted from the layouts (callbacks/ShadowVolumePass.h,
+// A VOLUMES light's besides, counted from the layouts (gl/ShadowVolumePass.h,
 // RayShadowPass.h), not measured: the RGBA32F sums and the captured positions of
 // kMaxScreenLayers layers each, and the positions' upload copy.
 inline constexpr double kVolumesBytesPerPixel = (16.0 + 16.0) * kMaxScreenLayers + 16.0;

@@ -1,6 +1,6 @@
 #include "cli/SlurmScript.h"
 
-#include "image/AtomicFile.h"
+#include "image_files/AtomicFile.h"
 
 #include <sys/stat.h>
 

@@ -1,7 +1,7 @@
 #include "cli/TradePlot.h"
 
 #include "cli/SvgDocument.h"
-#include "image/OutputFiles.h"
+#include "image_files/OutputFiles.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "cli/VariantManifest.h"
 
 #include "cli/JsonFields.h"
-#include "image/AtomicFile.h"
+#include "image_files/AtomicFile.h"
 #include "scene/InputError.h"
 
 #include <filesystem>

@@ -11,14 +11,14 @@
 #include "cli/VariantShard.h"
 #include "cli/VariantsMerge.h"
 #include "cli/VariantsPlan.h"
-#include "image/AtomicFile.h"
-#include "image/CommandPaths.h"
-#include "image/ImageSize.h"
-#include "image/MemoryBudget.h"
+#include "image_files/AtomicFile.h"
+#include "image_files/CommandPaths.h"
+#include "image_files/ImageSize.h"
+#include "image_files/MemoryBudget.h"
 #include "ivshadow/IvShadowInit.h"
 #include "scene/InputError.h"
-#include "scene/SceneLoader.h"
-#include "scene/VariantsFile.h"
+#include "scene_input/SceneLoader.h"
+#include "scene_input/VariantsFile.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "scene/VariantsFile.h"
+#include "scene_input/VariantsFile.h"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "cli/VariantsReport.h"
 
-#include "image/OutputFiles.h"
+#include "image_files/OutputFiles.h"
 
 #include <algorithm>
 #include <cmath>

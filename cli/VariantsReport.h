@@ -1,7 +1,7 @@
 #pragma once
 
 #include "cli/VariantManifest.h"
-#include "scene/VariantsFile.h"
+#include "scene_input/VariantsFile.h"
 
 #include <string>
 #include <vector>

@@ -9,7 +9,7 @@
 #include "cli/CommandLine.h"
 #include "fuzz/FuzzInput.h"
 #include "image/Image.h"
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 
 #include <unistd.h>
 

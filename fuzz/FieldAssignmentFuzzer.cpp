@@ -4,8 +4,8 @@
 #include "fuzz/FuzzInput.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "nodes/DeepShadowSettings.h"
-#include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
+#include "scene_input/FieldAssignment.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>

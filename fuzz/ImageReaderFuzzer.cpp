@@ -1,8 +1,8 @@
 // libFuzzer harness: the PNG and PFM readers that `ivshadow compare` runs on the files it is
 // given; the first byte picks the reader.
 #include "fuzz/FuzzInput.h"
-#include "image/PfmFile.h"
-#include "image/PngFile.h"
+#include "image_files/PfmFile.h"
+#include "image_files/PngFile.h"
 #include "scene/InputError.h"
 
 #include <stdexcept>

@@ -3,8 +3,8 @@
 // then the casters' extraction that the group runs on its children.
 #include "fuzz/FuzzInput.h"
 #include "scene/InputError.h"
-#include "scene/SceneLoader.h"
 #include "scene/SceneTriangles.h"
+#include "scene_input/SceneLoader.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 

@@ -12,13 +12,13 @@
 #include "cli/ReferenceOverlay.h"
 #include "fuzz/FuzzInput.h"
 #include "headless/OffscreenRenderer.h"
-#include "image/ImageComparison.h"
+#include "image_files/ImageComparison.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "raytrace/ReferenceRenderer.h"
-#include "scene/CoinMessageCapture.h"
+#include "reference/ReferenceRenderer.h"
 #include "scene/InputError.h"
-#include "scene/SceneLoader.h"
-#include "scene/ViewSetup.h"
+#include "scene_input/CoinMessageCapture.h"
+#include "scene_input/SceneLoader.h"
+#include "scene_input/ViewSetup.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPath.h>

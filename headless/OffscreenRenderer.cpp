@@ -1,12 +1,12 @@
 #include "headless/OffscreenRenderer.h"
 
-#include "callbacks/GlCapabilities.h"
-#include "callbacks/GlFrame.h"
-#include "callbacks/GlFramebufferTarget.h"
-#include "callbacks/GlTimerQuery.h"
+#include "gl/GlCapabilities.h"
+#include "gl/GlFrame.h"
+#include "gl/GlFramebufferTarget.h"
+#include "gl/GlTimerQuery.h"
 #include "headless/CoinOffscreenContexts.h"
 #include "headless/EglHeadlessContext.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGLRenderAction.h>

@@ -1,6 +1,6 @@
 #include "nodes/AutoTracerChoice.h"
 
-#include "callbacks/TracedPicturePass.h"
+#include "gl/TracedPicturePass.h"
 #include "scene/SceneTriangles.h"
 
 #include <Inventor/elements/SoGLCacheContextElement.h>

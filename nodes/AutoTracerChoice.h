@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/GlCapabilities.h"
+#include "gl/GlCapabilities.h"
 #include "nodes/PerContext.h"
 
 class SoNode;

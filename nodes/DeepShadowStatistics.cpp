@@ -1,6 +1,6 @@
 #include "ivshadow/DeepShadowStatistics.h"
 
-#include "callbacks/GlPassTimer.h"
+#include "gl/GlPassTimer.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 

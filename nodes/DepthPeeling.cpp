@@ -1,8 +1,8 @@
 #include "nodes/DepthPeeling.h"
 
-#include "callbacks/FragmentListPass.h"
-#include "callbacks/PeelPass.h"
-#include "callbacks/ShaderConstants.h"
+#include "gl/FragmentListPass.h"
+#include "gl/PeelPass.h"
+#include "gl/ShaderConstants.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/PeelStatistics.h"
 #include "ivshadow/SoPeelingSeparator.h"

@@ -1,6 +1,6 @@
 #include "nodes/GroupBounce.h"
 
-#include "callbacks/ShaderConstants.h"
+#include "gl/ShaderConstants.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "raytrace/CasterScene.h"
 

@@ -19,7 +19,7 @@ struct DeepShadowStatistics;
 // lights, placed with Embree from the group's casting lights as their slots were built, and
 // the pool of points on the opaque casters that their imperfect shadow maps are drawn from.
 // The same for every GL context; each context draws its own maps from them when version()
-// changes (callbacks/ImperfectShadowMaps.h).
+// changes (gl/ImperfectShadowMaps.h).
 class GroupBounce {
  public:
   // Places the lights again for the casting lights of `contents` at their slots in `maps`,

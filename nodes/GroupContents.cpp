@@ -2,8 +2,8 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "nodes/CastingLight.h"
 #include "nodes/NodesOfType.h"
+#include "raytrace/CastingLight.h"
 #include "scene/ShadowTypes.h"
 #include "scene/WarnOnce.h"
 
@@ -78,7 +78,7 @@ void GroupContents::findLights() {
     if (!castingLight(*light, *static_cast<SoTransparentShadowGroup*>(owner_), SbMatrix::identity(),
                       where))
       return;
-    // Past GL's lights a light lights nothing (nodes/LightLimit.h says so once).
+    // Past GL's lights a light lights nothing (scene/LightLimit.h says so once).
     if (int(lights_.size()) >= kMaxGlLights) return;
     Light entry;
     entry.path = PathBelow(&path);

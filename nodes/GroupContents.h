@@ -19,7 +19,7 @@ class SoPath;
 namespace ivshadow {
 
 // What the subgraph of a shadow group holds that its shadows depend on: the casting lights
-// (one per GL light at most, nodes/CastingLight.h), how many lights are on, the last camera and
+// (one per GL light at most, raytrace/CastingLight.h), how many lights are on, the last camera and
 // environment inside it, and the shadow casters. Searched again only after a notification says they
 // may have changed; the versions tell the per-context passes what to rebuild.
 //

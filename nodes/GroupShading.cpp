@@ -1,9 +1,9 @@
 #include "nodes/GroupShading.h"
 
-#include "callbacks/ShadingUniforms.h"
+#include "gl/ShadingUniforms.h"
 #include "nodes/GroupContents.h"
-#include "nodes/LightLimit.h"
 #include "nodes/TexGenWatchElement.h"
+#include "scene/LightLimit.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/ShadingUniforms.h"
+#include "gl/ShadingUniforms.h"
 #include "nodes/ShadingProgram.h"
 
 #include <Inventor/SbMatrix.h>

@@ -1,7 +1,7 @@
 #include "nodes/GroupTracer.h"
 
-#include "callbacks/NestedRenderScope.h"
-#include "callbacks/TracedPicturePass.h"
+#include "gl/NestedRenderScope.h"
+#include "gl/TracedPicturePass.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DeepShadowSettings.h"

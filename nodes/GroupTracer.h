@@ -1,8 +1,8 @@
 #pragma once
 
-#include "callbacks/KeptFrame.h"
+#include "gl/KeptFrame.h"
 #include "nodes/PerContext.h"
-#include "nodes/SceneTracer.h"
+#include "raytrace/SceneTracer.h"
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbVec2s.h>

@@ -1,8 +1,8 @@
 #include "nodes/IdleFields.h"
 
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "nodes/CastingLight.h"
 #include "nodes/ShadowFieldTable.h"
+#include "raytrace/CastingLight.h"
 #include "scene/SceneTriangles.h"
 #include "scene/WarnOnce.h"
 

@@ -1,6 +1,6 @@
 #include "nodes/LightScopeElement.h"
 
-#include "callbacks/ShadingUniforms.h"
+#include "gl/ShadingUniforms.h"
 
 #include <Inventor/SoType.h>
 #include <Inventor/elements/SoGLLightIdElement.h>

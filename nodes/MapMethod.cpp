@@ -1,8 +1,8 @@
 #include "nodes/MapMethod.h"
 
-#include "callbacks/DeepShadowMap.h"
-#include "callbacks/DeepShadowPass.h"
-#include "callbacks/GlMemoryBudget.h"
+#include "gl/DeepShadowMap.h"
+#include "gl/DeepShadowPass.h"
+#include "gl/GlMemoryBudget.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "nodes/MapState.h"
 #include "scene/WarnOnce.h"

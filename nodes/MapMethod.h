@@ -59,7 +59,7 @@ IVSHADOW_INTERNAL bool mapServesView(const MapState& map, const SbBox3f& casterB
                                      const ViewCorners& view);
 
 // The memory a map build may take in the current context: what GL says it can give
-// (callbacks/GlMemoryBudget.h), capped by IVSHADOW_GL_MEMORY_LIMIT (bytes; a value that is
+// (gl/GlMemoryBudget.h), capped by IVSHADOW_GL_MEMORY_LIMIT (bytes; a value that is
 // not a number above 0 is reported once and ignored); 0 when nothing says.
 std::uint64_t mapMemoryBudget(bool softwareRenderer);
 

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "callbacks/GlLimits.h"
-#include "callbacks/MapFrame.h"
+#include "gl/GlLimits.h"
+#include "gl/MapFrame.h"
 #include "ivshadow/ShadowMethod.h"
-#include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
+#include "raytrace/CastingLight.h"
 
 #include <Inventor/SbVec3f.h>
 

@@ -2,8 +2,8 @@
 
 #include "nodes/TracerActivity.h"
 
-#include "callbacks/PeelPass.h"
-#include "callbacks/ShadingUniforms.h"
+#include "gl/PeelPass.h"
+#include "gl/ShadingUniforms.h"
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DepthPeeling.h"

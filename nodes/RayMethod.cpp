@@ -1,8 +1,8 @@
 #include "nodes/RayMethod.h"
 
-#include "callbacks/GlStateScope.h"
-#include "callbacks/RayShadowPass.h"
-#include "callbacks/ShadowVolumePass.h"
+#include "gl/GlStateScope.h"
+#include "gl/RayShadowPass.h"
+#include "gl/ShadowVolumePass.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "nodes/GroupContents.h"
 #include "nodes/GroupShading.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/GlPassTimer.h"
+#include "gl/GlPassTimer.h"
 #include "scene/ShadowTypes.h"
 
 #include <Inventor/SbBox3f.h>

@@ -1,9 +1,9 @@
 #include "nodes/ShadingProgram.h"
 
 #include "GlslSources.h"
-#include "callbacks/GlProgram.h"
-#include "callbacks/ShadingUniforms.h"
-#include "callbacks/UniformLocations.h"
+#include "gl/GlProgram.h"
+#include "gl/ShadingUniforms.h"
+#include "gl/UniformLocations.h"
 #include "nodes/ShadowGroupElement.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "callbacks/ShadingLocations.h"
-#include "callbacks/TexGenModes.h"
+#include "gl/ShadingLocations.h"
+#include "gl/TexGenModes.h"
 #include "ivshadow/Export.h"
 #include "nodes/PerContext.h"
 #include "scene/CoinRef.h"
@@ -49,7 +49,7 @@ struct ShadingFeatures {
     return int(maps) | int(rays) << 1 | int(nearest) << 2 | int(filtered) << 3 | int(fog) << 4 |
            int(deep) << 5 | int(opacity) << 6 | int(bounce) << 7;
   }
-  // The #defines that compile the parts in (callbacks/glsl/lighting.glsl).
+  // The #defines that compile the parts in (gl/glsl/lighting.glsl).
   std::string defines() const;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/ShaderConstants.h"
+#include "gl/ShaderConstants.h"
 #include "ivshadow/ShadowFieldList.h"
 #include "ivshadow/ShadowMethod.h"
 #include "ivshadow/SoDeepShadowLight.h"

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "callbacks/GlCapabilities.h"
-#include "callbacks/GlPassTimer.h"
-#include "callbacks/ShadingUniforms.h"
+#include "gl/GlCapabilities.h"
+#include "gl/GlPassTimer.h"
+#include "gl/ShadingUniforms.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/Export.h"
 #include "ivshadow/PeelStatistics.h"

@@ -6,14 +6,14 @@
 
 namespace ivshadow {
 
-// Types that the GL passes (callbacks/) and the CPU tracers (raytrace/) both speak. They live
+// Types that the GL passes (gl/) and the CPU tracers (raytrace/) both speak. They live
 // here, with no GL and no Embree, so that neither of those layers has to include the other.
 
 // How a surface filters light in a deep shadow map; the shaders receive the values as
-// IVSHADOW_COLOUR_* (callbacks/ShaderConstants.h, shaderConstantDefines()).
+// IVSHADOW_COLOUR_* (gl/ShaderConstants.h, shaderConstantDefines()).
 enum class ShadowColourModel : int { Monochrome = 0, Saturate = 1, Power = 2 };
 
-// The kinds of light that cast (nodes/CastingLight.h) and bounce (raytrace/BounceLights.h).
+// The kinds of light that cast (raytrace/CastingLight.h) and bounce (raytrace/BounceLights.h).
 enum class LightKind { Point, Spot, Directional };
 
 // GL lights Coin uses (GL_LIGHT0..7; it drops the lights in force past them), and so deep

@@ -1,6 +1,6 @@
 // Coin's light equation (GL's fixed-function lighting, evaluated per point) in the one text
 // that both languages compile, as scene/surface_optics.glsl: the GLSL programs have it embedded
-// after that file (callbacks/GlProgram.cpp's composeShader) and callbacks/glsl/
+// after that file (gl/GlProgram.cpp's composeShader) and gl/glsl/
 // lighting_lights.glsl calls it in eye space; raytrace/LightEquation.cpp includes it with glm
 // and the CPU scene tracer calls it in world space. It keeps to what both read alike (see
 // surface_optics.glsl) and leaves the shadow out: GLSL multiplies it in, the tracer asks a

@@ -1,5 +1,5 @@
 // How a surface colours and filters light, in the one text that both languages compile: the
-// GLSL programs have it embedded after deep_shadow_common.glsl (callbacks/GlProgram.cpp's
+// GLSL programs have it embedded after deep_shadow_common.glsl (gl/GlProgram.cpp's
 // composeShader), and raytrace/SurfaceOptics.cpp includes it with glm's types and functions,
 // which GLSL's mirror. So it keeps to what both read alike: constructors instead of
 // swizzles, float literals with an f, no overloads. kColourMonochrome, kColourSaturate and

@@ -1,6 +1,6 @@
 #include "viewer/MapInspector.h"
 
-#include "callbacks/ShaderConstants.h"
+#include "gl/ShaderConstants.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/ShadowMethod.h"
 #include "ivshadow/SoTransparentShadowGroup.h"

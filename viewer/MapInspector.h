@@ -1,6 +1,6 @@
 #pragma once
 
-#include "callbacks/DeepShadowMapReadback.h"
+#include "gl/DeepShadowMapReadback.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "scene/CoinRef.h"
 

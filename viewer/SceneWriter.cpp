@@ -1,6 +1,6 @@
 #include "viewer/SceneWriter.h"
 
-#include "image/AtomicFile.h"
+#include "image_files/AtomicFile.h"
 #include "scene/InputError.h"
 
 #include <Inventor/SoOutput.h>

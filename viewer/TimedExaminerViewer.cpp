@@ -1,8 +1,8 @@
 #include "viewer/TimedExaminerViewer.h"
 
-#include "callbacks/GlCapabilities.h"
-#include "callbacks/GlFrame.h"
-#include "callbacks/GlTimerQuery.h"
+#include "gl/GlCapabilities.h"
+#include "gl/GlFrame.h"
+#include "gl/GlTimerQuery.h"
 
 #include <Inventor/events/SoLocation2Event.h>
 #include <Inventor/events/SoMouseButtonEvent.h>

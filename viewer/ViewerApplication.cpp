@@ -1,16 +1,16 @@
 #include "viewer/ViewerApplication.h"
 
-#include "callbacks/ShaderConstants.h"
+#include "gl/ShaderConstants.h"
 #include "headless/CoinOffscreenContexts.h"
-#include "image/AtomicFile.h"
-#include "image/CommandPaths.h"
-#include "image/ImageFile.h"
-#include "image/ImageSize.h"
-#include "image/OutputFiles.h"
+#include "image_files/AtomicFile.h"
+#include "image_files/CommandPaths.h"
+#include "image_files/ImageFile.h"
+#include "image_files/ImageSize.h"
+#include "image_files/OutputFiles.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
-#include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
+#include "scene_input/FieldAssignment.h"
 #include "viewer/MapInspector.h"
 #include "viewer/QtImage.h"
 #include "viewer/ScriptedDrag.h"
@@ -299,7 +299,7 @@ void captureScripted(ViewerWindow& window, const ViewerOptions& options, bool in
   QApplication::exec();
 }
 
-// Every output together or none (image/OutputFiles): a figures file that cannot be written
+// Every output together or none (image_files/OutputFiles): a figures file that cannot be written
 // takes the screenshot with it.
 int writeScriptedOutputs(ViewerWindow& window, const ViewerOptions& options, bool inspecting,
                          const ScriptedCapture& capture) {

@@ -2,7 +2,7 @@
 
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "scene/ViewSetup.h"
+#include "scene_input/ViewSetup.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>

@@ -2,11 +2,11 @@
 // bounce_wall.iv's wall, which its light misses, against the analytic form factor
 // (tests/support/BounceWall.h) and against the exact reference; a box's bounce shadow; the
 // same bounce whatever the shadow method; the statistics and the field checks.
-#include "callbacks/ImperfectShadowMaps.h"
+#include "gl/ImperfectShadowMaps.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 #include "tests/support/BounceWall.h"

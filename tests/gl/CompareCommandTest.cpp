@@ -1,6 +1,6 @@
 // ivshadow compare: two renders of one scene measured against each other, the heat map and
 // the JSON written, and inputs it cannot read refused in one line.
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #include "tests/gl/ComputeTwin.h"
 
-#include "callbacks/GlHandles.h"
-#include "callbacks/GlProgram.h"
+#include "gl/GlHandles.h"
+#include "gl/GlProgram.h"
 
 #include <epoxy/gl.h>
 

@@ -3,8 +3,8 @@
 // TransparentShadowGroup the way the viewer's add-shadows does it, renders with `ivshadow
 // render` and agrees with `ivshadow reference`. docs/CORPUS.md has the table of the results and
 // explains the worst ones; bench/corpus_table.sh regenerates it from this test's output.
-#include "image/ImageComparison.h"
-#include "image/PngFile.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"

@@ -3,7 +3,7 @@
 // one step into red; the reference drew the float. Every path draws what plain Coin draws,
 // worked out here by hand from the packing, and says so once.
 #include "ivshadow/IvShadowInit.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <gtest/gtest.h>

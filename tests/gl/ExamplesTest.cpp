@@ -1,5 +1,5 @@
-#include "callbacks/GlCapabilities.h"
-#include "image/PngFile.h"
+#include "gl/GlCapabilities.h"
+#include "image_files/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/support/TestSupport.h"

@@ -5,7 +5,7 @@
 // Coin, TRACER and the reference draw the unlit scene. Every method gives the analytic shadow
 // (or traces it, saying why), and the overflowing light draws what plain Coin draws.
 #include "ivshadow/IvShadowInit.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/ShadowScene.h"
 
 #include <gtest/gtest.h>

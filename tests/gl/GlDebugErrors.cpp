@@ -1,6 +1,6 @@
 #include "tests/gl/GlDebugErrors.h"
 
-#include "callbacks/GlAllocationCheck.h"
+#include "gl/GlAllocationCheck.h"
 
 #include <epoxy/gl.h>
 

@@ -1,11 +1,11 @@
 // GL and Embree failures forced through IVSHADOW_FAIL_GL and IVSHADOW_FAIL_EMBREE
-// (callbacks/GlAllocationCheck.h, nodes/RayCasters.cpp): each run of `ivshadow render` must
+// (gl/GlAllocationCheck.h, nodes/RayCasters.cpp): each run of `ivshadow render` must
 // exit 0 with one warning naming the node, and draw the documented fallback, which the test
 // renders itself without the fault: the same light without a shadow (a plain PointLight of the
 // same place and intensity, which a DEEP_SHADOW_LIGHTS group lights with the same program but
 // never shadows), Coin's blending instead of peeling, the map instead of the rays.
-#include "image/ImageComparison.h"
-#include "image/PngFile.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/PngFile.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // GlStateScope: what it saves comes back exactly, what it was not told about is neither read
 // nor put back, and each group costs the queries it names.
-#include "callbacks/GlHandles.h"
-#include "callbacks/GlProgram.h"
-#include "callbacks/GlStateScope.h"
+#include "gl/GlHandles.h"
+#include "gl/GlProgram.h"
+#include "gl/GlStateScope.h"
 #include "tests/gl/GlCallCounter.h"
 #include "tests/gl/GlContextTest.h"
 

@@ -3,11 +3,11 @@
 // against the traced picture, and what is traced or read again when something moves. Every
 // picture is checked against an expectation computed without the tracer (ShadowScene's
 // analytic picture, or a colour set in the scene).
-#include "callbacks/GlCapabilities.h"
+#include "gl/GlCapabilities.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/CoinClock.h"
 #include "tests/gl/ShadowScene.h"

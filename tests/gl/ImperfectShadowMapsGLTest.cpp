@@ -1,8 +1,8 @@
-// The imperfect shadow maps (callbacks/ImperfectShadowMaps) on their own: one light facing a
+// The imperfect shadow maps (gl/ImperfectShadowMaps) on their own: one light facing a
 // wall of points. Each texel holds the wall's distance in its direction, computed here from
 // the plane; the splats leave holes where the points are sparse, and pull-push fills them.
-#include "callbacks/ImperfectShadowMaps.h"
-#include "callbacks/ShaderConstants.h"
+#include "gl/ImperfectShadowMaps.h"
+#include "gl/ShaderConstants.h"
 #include "tests/gl/GlContextTest.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // State set above a SoTransparentShadowGroup, outside it, reaches its casters in both methods
 // (InheritedStateCases.h), and a change there is seen in the next frame.
-#include "image/ImageComparison.h"
+#include "image_files/ImageComparison.h"
 #include "ivshadow/DeepShadowStatistics.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/InheritedStateCases.h"
 

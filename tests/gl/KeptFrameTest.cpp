@@ -1,4 +1,4 @@
-// A traced group's still frames (callbacks/KeptFrame): while nothing changes, the framebuffer
+// A traced group's still frames (gl/KeptFrame): while nothing changes, the framebuffer
 // the picture left is put back by one blit instead of compositing the picture again, and it is
 // the composite's picture to the bit, colour and depth; a change of what GL drew before the
 // group composites the picture again, without tracing it.

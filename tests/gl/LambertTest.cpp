@@ -1,6 +1,6 @@
 #include "ivshadow/IvShadowInit.h"
-#include "scene/SceneLoader.h"
-#include "scene/ViewSetup.h"
+#include "scene_input/SceneLoader.h"
+#include "scene_input/ViewSetup.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/LitPlane.h"
 

@@ -4,8 +4,8 @@
 // with lights inside the group, outside it, and outside any group; and each says once that
 // lights were dropped (issue 36: the tracer and the reference lit with all of them).
 #include "ivshadow/IvShadowInit.h"
-#include "scene/CoinMessageCapture.h"
 #include "scene/CoinRef.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 

@@ -5,7 +5,7 @@
 // geometry alone.
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 

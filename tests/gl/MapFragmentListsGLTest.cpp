@@ -1,10 +1,10 @@
-// Deep shadow maps built from fragment lists (callbacks/MapFragmentLists) on their own, through
+// Deep shadow maps built from fragment lists (gl/MapFragmentLists) on their own, through
 // DeepShadowPass: a stack of squares across one orthographic face against the layers computed
 // here from their heights and colours (seeds/000 eq. 5.3), and random scenes against the map
 // the peel passes build from the same casters, texel for texel.
-#include "callbacks/DeepShadowMapReadback.h"
-#include "callbacks/DeepShadowPass.h"
-#include "callbacks/MapFrame.h"
+#include "gl/DeepShadowMapReadback.h"
+#include "gl/DeepShadowPass.h"
+#include "gl/MapFrame.h"
 #include "scene/SceneTriangles.h"
 #include "tests/gl/GlContextTest.h"
 #include "tests/gl/MapSquares.h"

@@ -3,9 +3,9 @@
 // MERGE): random stacks of glass across one orthographic face, drawn in random order, against
 // the visibility computed here from their heights and colours (seeds/000 eq. 5.3), and random
 // scenes against the same lists without merging, which store the peel's map.
-#include "callbacks/DeepShadowMapReadback.h"
-#include "callbacks/DeepShadowPass.h"
-#include "callbacks/MapFrame.h"
+#include "gl/DeepShadowMapReadback.h"
+#include "gl/DeepShadowPass.h"
+#include "gl/MapFrame.h"
 #include "tests/gl/GlContextTest.h"
 #include "tests/gl/MapSquares.h"
 

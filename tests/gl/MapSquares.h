@@ -3,8 +3,8 @@
 // the face that looks down on them, and the light a surface passes.
 #pragma once
 
-#include "callbacks/DeepShadowPass.h"
-#include "callbacks/MapFrame.h"
+#include "gl/DeepShadowPass.h"
+#include "gl/MapFrame.h"
 #include "scene/SceneTriangles.h"
 
 #include <gtest/gtest.h>

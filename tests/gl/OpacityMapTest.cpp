@@ -6,7 +6,7 @@
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 

@@ -2,7 +2,7 @@
 // reads the timings, so a map build, which is always timed, does not stall the CPU on its
 // timer otherwise, and its figure still comes, from the latest build GL has finished. Debug
 // groups and labels: each pass's commands grouped and its objects named for a GPU debugger.
-#include "callbacks/GlHandles.h"
+#include "gl/GlHandles.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/SoDeepShadowLight.h"
 #include "tests/gl/GlCallCounter.h"

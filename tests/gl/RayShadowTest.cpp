@@ -1,12 +1,12 @@
 // SoDeepShadowLight's RAYS method (and, where they hold for both, VOLUMES): the deep shadow
 // tests' analytic pictures, now with no layer, resolution or bias error to allow for; AUTO's
 // choice; what is traced again and when.
-#include "image/ImageComparison.h"
-#include "image/PngFile.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/PngFile.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
-#include "scene/CoinMessageCapture.h"
+#include "scene_input/CoinMessageCapture.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"
 

@@ -1,8 +1,8 @@
 // `ivshadow reference` as a user runs it, and its agreement with the GL path where both use
 // the same model and nothing is approximated.
-#include "image/ImageComparison.h"
-#include "image/PfmFile.h"
-#include "image/PngFile.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/PfmFile.h"
+#include "image_files/PngFile.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>

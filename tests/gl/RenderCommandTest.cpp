@@ -1,7 +1,7 @@
-#include "image/ImageComparison.h"
-#include "image/ImageFile.h"
-#include "image/MemoryBudget.h"
-#include "image/PngFile.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/ImageFile.h"
+#include "image_files/MemoryBudget.h"
+#include "image_files/PngFile.h"
 #include "tests/gl/LitPlane.h"
 #include "tests/support/TestSupport.h"
 
@@ -526,7 +526,7 @@ std::string bytesOf(const std::string& path) {
 }
 
 // Every command's outputs are checked against its inputs and against each other in one place
-// (image/CommandPaths): `compare A B --diff B` replaced the candidate with its own heat map,
+// (image_files/CommandPaths): `compare A B --diff B` replaced the candidate with its own heat map,
 // `render -o X.png --stats X.png` left only the statistics, both with exit 0, and the viewer
 // wrote a screenshot over its scene, through a link too.
 TEST(Ivshadow, NoCommandWritesOverAnInputOrTwoOutputsToOneFile) {

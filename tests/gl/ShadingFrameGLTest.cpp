@@ -2,11 +2,11 @@
 // locations read once per program and context, never looked up by name, and GL is asked for
 // its state only where a pass must put back what it changes: as many queries as the
 // transparency mode's passes save state for, counted here from the passes themselves.
-#include "callbacks/GlStateScope.h"
+#include "gl/GlStateScope.h"
 #include "ivshadow/PeelStatistics.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
-#include "scene/SceneLoader.h"
-#include "scene/ViewSetup.h"
+#include "scene_input/SceneLoader.h"
+#include "scene_input/ViewSetup.h"
 #include "tests/gl/GlCallCounter.h"
 #include "tests/gl/GlContextTest.h"
 #include "tests/support/TestSupport.h"
@@ -48,7 +48,7 @@ int shadingQueries() {
   return 1 + scopeQueries(0u, 2);
 }
 
-// A peeling (nodes/DepthPeeling.cpp, callbacks/PeelPass.cpp, callbacks/FragmentListPass.cpp)
+// A peeling (nodes/DepthPeeling.cpp, gl/PeelPass.cpp, gl/FragmentListPass.cpp)
 // as its statistics say it went: the opaque pass binds its variant and saves the storage
 // binding; the transparent surfaces then go into fragment lists (a variant bound and the
 // bindings saved a list pass, the fragments stored counted from a read-back under a

@@ -2,7 +2,7 @@
 // ShadingFeatures, says why). A probe inside the group reads, while the group's program is
 // bound, which parts' uniforms that program has: a uniform GL reports active is one the
 // compiled code reads.
-#include "image/ImageComparison.h"
+#include "image_files/ImageComparison.h"
 #include "tests/gl/GlContextTest.h"
 #include "tests/gl/ShadowScene.h"
 
@@ -19,7 +19,7 @@
 namespace ivshadow::test {
 namespace {
 
-// The parts each marker uniform belongs to (callbacks/glsl/lighting.glsl).
+// The parts each marker uniform belongs to (gl/glsl/lighting.glsl).
 struct Parts {
   bool maps = false;  // uMapDepth: deep shadow map lookups
   bool rays = false;  // uRayDepth: traced visibility

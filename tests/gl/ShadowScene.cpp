@@ -1,8 +1,8 @@
 #include "tests/gl/ShadowScene.h"
 
 #include "ivshadow/IvShadowInit.h"
-#include "raytrace/ReferenceRenderer.h"
-#include "scene/ViewSetup.h"
+#include "reference/ReferenceRenderer.h"
+#include "scene_input/ViewSetup.h"
 
 #include <Inventor/SbViewportRegion.h>
 

@@ -4,7 +4,7 @@
 // which compute the coordinates themselves (nodes/TexGenWatchElement.h). The answers here
 // are plain Coin's fixed-function pictures of the same shapes without a group (Coin's and
 // Mesa's code, none of the plugin's), and for the plane an analytic one.
-#include "image/ImageComparison.h"
+#include "image_files/ImageComparison.h"
 #include "ivshadow/IvShadowInit.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"

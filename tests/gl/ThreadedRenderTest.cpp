@@ -4,8 +4,8 @@
 // threads but not COIN_THREADSAFE: Coin_HAVE_SAFETHREAD 0) locks its GL glue and cache-context
 // tables, but not its name dictionaries or notification counter; so the graphs are read and
 // their fields set on the main thread before the threads start, and the threads only render.
-#include "image/ImageComparison.h"
-#include "image/PngFile.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/PngFile.h"
 #include "ivshadow/IvShadowInit.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/ShadowScene.h"

@@ -1,4 +1,4 @@
-#include "image/MemoryBudget.h"
+#include "image_files/MemoryBudget.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // UniformLocations: the locations GL gives, read once after linking; no look-up afterwards.
-#include "callbacks/GlProgram.h"
-#include "callbacks/ShadingLocations.h"
-#include "callbacks/UniformLocations.h"
+#include "gl/GlProgram.h"
+#include "gl/ShadingLocations.h"
+#include "gl/UniformLocations.h"
 #include "nodes/ShadingProgram.h"
 #include "tests/gl/GlCallCounter.h"
 #include "tests/gl/GlContextTest.h"

@@ -2,8 +2,8 @@
 // VRML97 nodes that Coin reads (VRMLBox, VRMLIndexedFaceSet), and shapes that have no
 // triangles (MarkerSet, Text2, Image). Inside a group each either casts as the reference
 // draws it, or is named in one warning; none may crash.
-#include "image/ImageComparison.h"
-#include "image/PngFile.h"
+#include "image_files/ImageComparison.h"
+#include "image_files/PngFile.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // the drag are reduced, the group asks SoQt for the refined frame itself once the drag
 // stops, and that frame is the full picture `ivshadow render` traces for the light's last
 // place.
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 #include "tests/gl/ViewerTestSupport.h"
 #include "tests/support/TestSupport.h"
 

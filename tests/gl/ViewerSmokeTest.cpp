@@ -1,5 +1,5 @@
-#include "image/ImageFile.h"
-#include "image/PngFile.h"
+#include "image_files/ImageFile.h"
+#include "image_files/PngFile.h"
 #include "tests/gl/ViewerTestSupport.h"
 #include "tests/support/TestSupport.h"
 

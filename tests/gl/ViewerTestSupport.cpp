@@ -1,6 +1,6 @@
 #include "tests/gl/ViewerTestSupport.h"
 
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 
 #include <iostream>
 

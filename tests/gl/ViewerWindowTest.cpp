@@ -1,4 +1,4 @@
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 #include "tests/gl/InteractiveViewer.h"
 #include "tests/gl/ScreenGrab.h"
 #include "tests/gl/ViewerTestSupport.h"

@@ -1,6 +1,6 @@
 #include "tests/support/TestSupport.h"
 
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/InputError.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "image/Image.h"
-#include "image/ImageComparison.h"
+#include "image_files/ImageComparison.h"
 #include "tests/support/ShadowMethodNames.h"
 
 #include <array>

@@ -1,5 +1,5 @@
-#include "image/AtomicFile.h"
-#include "image/CommandPaths.h"
+#include "image_files/AtomicFile.h"
+#include "image_files/CommandPaths.h"
 #include "scene/InputError.h"
 #include "tests/support/TestSupport.h"
 

@@ -3,9 +3,9 @@
 // and minutes on llvmpipe, so the clamping to it is what is tested).
 #include "ivshadow/IvShadowInit.h"
 #include "ivshadow/SoDeepShadowLight.h"
-#include "nodes/CastingLight.h"
 #include "nodes/DeepShadowSettings.h"
-#include "scene/CoinMessageCapture.h"
+#include "raytrace/CastingLight.h"
+#include "scene_input/CoinMessageCapture.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "ivshadow/IvShadowInit.h"
-#include "scene/FieldAssignment.h"
 #include "scene/InputError.h"
+#include "scene_input/FieldAssignment.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>

@@ -1,4 +1,4 @@
-#include "callbacks/GlCapabilities.h"
+#include "gl/GlCapabilities.h"
 
 #include <gtest/gtest.h>
 

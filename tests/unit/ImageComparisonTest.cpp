@@ -1,4 +1,4 @@
-#include "image/ImageComparison.h"
+#include "image_files/ImageComparison.h"
 #include "scene/InputError.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "image/ImageFile.h"
-#include "image/JpegFile.h"
+#include "image_files/ImageFile.h"
+#include "image_files/JpegFile.h"
 #include "scene/InputError.h"
 #include "tests/support/TestSupport.h"
 

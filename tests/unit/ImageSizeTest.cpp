@@ -1,4 +1,4 @@
-#include "image/ImageSize.h"
+#include "image_files/ImageSize.h"
 #include "scene/InputError.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // --save-scene, --figures) and is signalled while it writes its outputs must not leave a
 // temporary or a partial output behind (issue 35): commitWhole() holds the signal until every
 // output is in place, then the process ends as the signal says.
-#include "image/OutputFiles.h"
+#include "image_files/OutputFiles.h"
 #include "tests/support/TestSupport.h"
 
 #include <sys/wait.h>

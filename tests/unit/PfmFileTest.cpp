@@ -1,4 +1,4 @@
-#include "image/PfmFile.h"
+#include "image_files/PfmFile.h"
 #include "scene/InputError.h"
 #include "tests/support/TestSupport.h"
 

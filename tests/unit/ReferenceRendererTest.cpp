@@ -1,7 +1,7 @@
 // The exact CPU renderer against the analytic pictures the GL tests use: the reference must
 // be right on its own before it can judge the GL path.
-#include "raytrace/ReferenceRenderer.h"
-#include "scene/ViewSetup.h"
+#include "reference/ReferenceRenderer.h"
+#include "scene_input/ViewSetup.h"
 #include "tests/gl/ShadowScene.h"
 #include "tests/support/BounceWall.h"
 

@@ -1,7 +1,7 @@
 #include "ivshadow/IvShadowInit.h"
 #include "scene/InputError.h"
-#include "scene/SceneFileCheck.h"
-#include "scene/SceneLoader.h"
+#include "scene_input/SceneFileCheck.h"
+#include "scene_input/SceneLoader.h"
 #include "tests/support/TestSupport.h"
 
 #include <Inventor/nodes/SoSeparator.h>

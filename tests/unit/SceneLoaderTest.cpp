@@ -1,6 +1,6 @@
 #include "ivshadow/IvShadowInit.h"
 #include "scene/InputError.h"
-#include "scene/SceneLoader.h"
+#include "scene_input/SceneLoader.h"
 #include "tests/support/TestSupport.h"
 
 #include <Inventor/SbString.h>

@@ -8,8 +8,8 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/DeepShadowSettings.h"
 #include "nodes/ShadowFieldTable.h"
-#include "scene/CoinMessageCapture.h"
 #include "scene/CoinRef.h"
+#include "scene_input/CoinMessageCapture.h"
 
 #include <Inventor/SbName.h>
 #include <Inventor/SbString.h>

@@ -1,6 +1,6 @@
 #include "ivshadow/IvShadowInit.h"
-#include "scene/SceneLoader.h"
 #include "scene/SceneTriangles.h"
+#include "scene_input/SceneLoader.h"
 #include "tests/support/TestSupport.h"
 
 #include <Inventor/SoDB.h>

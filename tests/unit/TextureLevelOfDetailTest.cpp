@@ -1,7 +1,7 @@
 // The traced path's texture filtering against GL's rules (the GL 4.5 spec, 8.14) and Coin's
 // choice of them (SoGLImage): the mipmap chain, the level of detail a pixel's footprint gives,
 // and the sample taken from the two levels around it.
-#include "nodes/CameraRays.h"
+#include "raytrace/CameraRays.h"
 #include "raytrace/SurfaceOptics.h"
 #include "scene/SceneTriangles.h"
 

@@ -1,5 +1,5 @@
 #include "scene/InputError.h"
-#include "scene/TransparencyType.h"
+#include "scene_input/TransparencyType.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #include "scene/InputError.h"
-#include "scene/VariantsFile.h"
+#include "scene_input/VariantsFile.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // renders variant after variant in one GL context. These tests hold the workers to what one
 // `ivshadow render` process per variant gave: the same pixels, messages, reports and exit
 // statuses, warnings said per variant, and a crash kept to its variant.
-#include "image/PngFile.h"
+#include "image_files/PngFile.h"
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>
