@@ -27,6 +27,7 @@ the roots' paths wherever they are, since FreeCAD finds the view provider of a p
 the nodes along it.
 """
 
+import json
 import math
 
 import FreeCAD as App
@@ -35,7 +36,7 @@ import ivshadow  # noqa: F401  (loads the plugin and registers the nodes with Co
 from pivy import coin
 
 __all__ = ["enable", "disable", "is_enabled", "group", "refresh", "settings_from_preferences",
-           "save_preferences", "PRESETS", "PARAMETERS", "DEFAULTS"]
+           "save_preferences", "stored_settings", "PRESETS", "PARAMETERS", "DEFAULTS", "META_KEY"]
 
 # Where the add-on's preferences live in FreeCAD's parameters (Tools > Edit parameters).
 PARAMETERS = "User parameter:BaseApp/Preferences/Mod/IvShadow"
@@ -520,6 +521,7 @@ class _Shadows:
         self.light.direction.setValue(coin.SbVec3f(*self.direction))
         if self.bounds is not None:
             self._place_ground(self.bounds)
+        _store(self.document, self.direction, self.settings, self.location)
 
     def _place_dragger(self, bounds):
         x0, y0, z0, x1, y1, z1 = bounds
@@ -632,8 +634,46 @@ _states = {}
 _observer = _DocumentObserver()
 
 
-def _resolve(light_direction, ground, settings, light_location=None):
+# The key of a document's Meta map that holds its shadows' settings (JSON), saved with it.
+META_KEY = "IvShadow"
+
+
+def stored_settings(document):
+    """The shadow settings saved with an App document (its Meta map, key META_KEY), or {}."""
+    try:
+        return json.loads(document.Meta.get(META_KEY, "{}"))
+    except (ValueError, AttributeError):
+        return {}
+
+
+def _store(document_name, direction, settings, location):
+    document = App.getDocument(document_name)
+    stored = {key: (list(value) if isinstance(value, tuple) else value)
+              for key, value in settings.items() if key in DEFAULTS}
+    stored["light_direction"] = list(direction)
+    stored["light_location"] = list(location) if location is not None else None
+    text = json.dumps(stored, sort_keys=True)
+    meta = document.Meta
+    if meta.get(META_KEY) != text:
+        meta[META_KEY] = text
+        document.Meta = meta
+
+
+def _resolve(light_direction, ground, settings, light_location=None, stored=None):
     resolved = settings_from_preferences()
+    from_stored = False
+    if stored:
+        # The document's own settings over the preferences (docs/FREECAD.md, "Per document").
+        for key in DEFAULTS:
+            if key in stored:
+                value = stored[key]
+                resolved[key] = tuple(value) if isinstance(value, list) else value
+        if light_direction is None and light_location is None:
+            if stored.get("light_location") is not None and resolved["light_type"] == "Point":
+                light_location = stored["light_location"]
+            elif stored.get("light_direction") is not None:
+                light_direction = stored["light_direction"]
+            from_stored = True
     fields = {}
     for key, value in settings.items():
         if key in DEFAULTS:
@@ -648,6 +688,9 @@ def _resolve(light_direction, ground, settings, light_location=None):
         resolved["ground"] = bool(ground)
     if resolved["preset"] not in PRESETS:
         raise ValueError("preset: one of %s" % ", ".join(PRESETS))
+    if light_direction is not None and light_location is None and \
+            "light_type" not in settings and not from_stored:
+        resolved["light_type"] = "Directional"  # a direction named: a light from far away
     if light_location is not None:
         resolved["light_type"] = "Point"
         light_location = tuple(float(c) for c in light_location)
@@ -673,7 +716,9 @@ def enable(view=None, *, light_direction=None, ground=None, light_location=None,
     TransparentShadowGroup by name (movingResolution=0.5, transparency="COIN_BLENDING").
     Called on a view with shadows, changes their settings."""
     view = _active_view(view)
-    direction, resolved, location = _resolve(light_direction, ground, settings, light_location)
+    document = _document_of(view)
+    direction, resolved, location = _resolve(light_direction, ground, settings, light_location,
+                                             stored_settings(App.getDocument(document)))
     key = _address(view.getSceneGraph())
     state = _states.get(key)
     if state is None:
@@ -683,6 +728,7 @@ def enable(view=None, *, light_direction=None, ground=None, light_location=None,
         _states[key] = state
     else:
         state.apply(direction, resolved, location)
+    _store(document, direction, resolved, location)
     return state.group
 
 
@@ -705,7 +751,9 @@ def refresh():
     """Every view with shadows takes the preferences' settings again (the preferences page
     calls this when it saves)."""
     for state in _states.values():
-        state.apply(*_resolve(None, None, {}))
+        direction, resolved, location = _resolve(None, None, {})
+        state.apply(direction, resolved, location)
+        _store(state.document, direction, resolved, location)
 
 
 def group(view=None):

@@ -79,6 +79,11 @@ def point_light(document, view, shadows):
     # the preset Top (straight down) and distance 2 the lamp is 400 above the centre.
     saved = shadows.settings_from_preferences()
     shadows.save_preferences(dict(saved, light_type="Point", preset="Top", light_distance=2.0))
+    # The document keeps the settings it was last shown with (its Meta map): taken out here, as
+    # in a new document, so that the preferences apply.
+    meta = document.Meta
+    meta.pop(shadows.META_KEY, None)
+    document.Meta = meta
     shadows.enable(view)  # the preferences' light: no light_location
     light = shadows.group(view).getChild(0)
     location = list(light.location.getValue().getValue()) \
@@ -185,6 +190,42 @@ def transform_dragger(document, view, shadows):
           shadow=rgb(after, box_shadow), lit=rgb(after, lit))
 
 
+def per_document(shadows):
+    # The settings go with the document (its Meta map, saved in the file): a document shown
+    # with the lamp and saved, closed and opened again, gets the lamp from enable() with no
+    # argument, although the preferences say a directional light; a new document gets the
+    # preferences' light.
+    import os
+    from macro_common import WORK
+    document, view = make_scene("PerDocument")
+    shadows.enable(view, light_location=LAMP)
+    stored = shadows.stored_settings(document)
+    path = os.path.join(WORK, "per_document.FCStd")
+    document.saveAs(path)
+    shadows.disable(view)
+    App.closeDocument(document.Name)
+    preferences = shadows.settings_from_preferences()
+    document = App.openDocument(path)
+    view = Gui.getDocument(document.Name).ActiveView
+    shadows.enable(view)
+    light = shadows.group(view).getChild(0)
+    location = list(light.location.getValue().getValue()) \
+        if light.getTypeId().getName().getString() == "DeepShadowLight" else None
+    check("per document: a saved document's lamp comes back, over the preferences",
+          preferences["light_type"] == "Directional" and stored.get("light_type") == "Point" and
+          location is not None and all(abs(a - b) < 1e-4 for a, b in zip(location, LAMP)),
+          preferences=preferences["light_type"], stored=stored, location=location)
+    shadows.disable(view)
+    App.closeDocument(document.Name)
+    document, view = make_scene("Fresh")
+    shadows.enable(view)
+    kind = shadows.group(view).getChild(0).getTypeId().getName().getString()
+    check("per document: a new document takes the preferences' light",
+          kind == "DeepShadowDirectionalLight", type=kind)
+    shadows.disable(view)
+    App.closeDocument(document.Name)
+
+
 def run():
     import ivshadow.freecad as shadows
     document, view = make_scene("Editing")
@@ -198,6 +239,7 @@ def run():
             check("%s ran" % step.__name__, False, error=traceback.format_exc())
     shadows.disable(view)
     App.closeDocument("Editing")
+    per_document(shadows)
 
 
 try:
