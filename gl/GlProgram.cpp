@@ -46,8 +46,7 @@ GLuint compile(GLenum stage, const std::string& source, std::string& error) {
 
 std::string composeShader(const std::string& body, const std::string& defines) {
   return "#version 450 compatibility\n" + shaderConstantDefines() + defines +
-         glsl::kDeepShadowCommonGlsl + glsl::kSurfaceOpticsGlsl +
-         glsl::kLightEquationGlsl + body;
+         glsl::kDeepShadowCommonGlsl + glsl::kSurfaceOpticsGlsl + glsl::kLightEquationGlsl + body;
 }
 
 GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fragmentSource,
@@ -59,33 +58,23 @@ GlProgram GlProgram::link(const std::string& vertexSource, const std::string& fr
     glDeleteShader(vertex);
     return {};
   }
-  GlProgram result;
-  result.program_ = GlProgramObject(glCreateProgram());
-  const GLuint program = result.program_.get();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
-  glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    error = "program does not link: " + infoLog(program, true);
-    return {};
-  }
-  result.uniforms_ = UniformLocations(program);
-  return result;
+  return linkShaders({vertex, fragment}, error);
 }
 
 GlProgram GlProgram::linkCompute(const std::string& computeSource, std::string& error) {
   const GLuint compute = compile(GL_COMPUTE_SHADER, computeSource, error);
   if (compute == 0) return {};
+  return linkShaders({compute}, error);
+}
+
+GlProgram GlProgram::linkShaders(std::initializer_list<unsigned int> shaders, std::string& error) {
   GlProgram result;
   result.program_ = GlProgramObject(glCreateProgram());
   const GLuint program = result.program_.get();
-  glAttachShader(program, compute);
+  for (const GLuint shader : shaders) glAttachShader(program, shader);
   glLinkProgram(program);
-  glDeleteShader(compute);
+  // Attached, the shaders live as long as the program needs them.
+  for (const GLuint shader : shaders) glDeleteShader(shader);
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {

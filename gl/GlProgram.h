@@ -5,6 +5,7 @@
 #include "gl/GlHandles.h"
 #include "gl/UniformLocations.h"
 
+#include <initializer_list>
 #include <string>
 
 namespace ivshadow {
@@ -31,6 +32,9 @@ class IVSHADOW_INTERNAL GlProgram {
   void setMat4(const char* uniform, const float* columnMajor) const;
 
  private:
+  // Links the compiled `shaders` into a program and deletes them; none, with `error`, when it
+  // does not link.
+  static GlProgram linkShaders(std::initializer_list<unsigned int> shaders, std::string& error);
   GlProgramObject program_;
   UniformLocations uniforms_;
 };
@@ -38,6 +42,7 @@ class IVSHADOW_INTERNAL GlProgram {
 // "#version 450 compatibility", the shared constants (shaderConstantDefines()), `defines`, the
 // shared declarations, then `body`: how every program of the plugin is assembled from the
 // embedded .glsl files.
-IVSHADOW_INTERNAL std::string composeShader(const std::string& body, const std::string& defines = {});
+IVSHADOW_INTERNAL std::string composeShader(const std::string& body,
+                                            const std::string& defines = {});
 
 }  // namespace ivshadow

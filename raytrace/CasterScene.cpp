@@ -326,17 +326,7 @@ CasterScene::SurfaceHit CasterScene::firstSurface(const glm::vec3& origin,
   context.scene = this;
   context.lanes = &lane;
   context.collected = &collected;
-  RTCRayHit rayHit{};
-  rayHit.ray.org_x = origin.x;
-  rayHit.ray.org_y = origin.y;
-  rayHit.ray.org_z = origin.z;
-  rayHit.ray.dir_x = direction.x;
-  rayHit.ray.dir_y = direction.y;
-  rayHit.ray.dir_z = direction.z;
-  rayHit.ray.tnear = 0.0f;
-  rayHit.ray.tfar = tfar;
-  rayHit.ray.mask = 0xFFFFFFFFu;
-  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rayHit = singleRay(origin, direction, 0.0f, tfar);
   rtcIntersect1(scene_.get(), &context, &rayHit);
   result.hit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
   if (result.hit) {

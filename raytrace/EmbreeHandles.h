@@ -3,6 +3,7 @@
 #include "ivshadow/Export.h"
 
 #include <embree3/rtcore.h>
+#include <glm/vec3.hpp>
 
 #include <atomic>
 #include <cstddef>
@@ -43,6 +44,24 @@ IVSHADOW_INTERNAL EmbreeScene buildTriangleScene(
 // The widest ray packet `device` traces natively (16, 8 or 4 rays), or 1 when it traces none:
 // a packet of that width walks the tree once for all its rays.
 IVSHADOW_INTERNAL int nativePacketWidth(RTCDevice device);
+
+// One ray for rtcIntersect1 (id 0) from `origin` along `direction` over [tnear, tfar], meeting
+// every geometry, with no hit yet.
+inline RTCRayHit singleRay(const glm::vec3& origin, const glm::vec3& direction, float tnear,
+                           float tfar) {
+  RTCRayHit rayHit{};
+  rayHit.ray.org_x = origin.x;
+  rayHit.ray.org_y = origin.y;
+  rayHit.ray.org_z = origin.z;
+  rayHit.ray.dir_x = direction.x;
+  rayHit.ray.dir_y = direction.y;
+  rayHit.ray.dir_z = direction.z;
+  rayHit.ray.tnear = tnear;
+  rayHit.ray.tfar = tfar;
+  rayHit.ray.mask = 0xFFFFFFFFu;
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  return rayHit;
+}
 
 // A device using every core; null with Embree's reason in `error` when it cannot be made.
 // `memory`, when given, must outlive the device.

@@ -230,17 +230,7 @@ class Tracer {
     rtcInitIntersectContext(&context);
     context.data = &data_;
     context.hits = &hits;
-    RTCRayHit rayHit{};  // id 0: hits[0]
-    rayHit.ray.org_x = origin.x;
-    rayHit.ray.org_y = origin.y;
-    rayHit.ray.org_z = origin.z;
-    rayHit.ray.dir_x = direction.x;
-    rayHit.ray.dir_y = direction.y;
-    rayHit.ray.dir_z = direction.z;
-    rayHit.ray.tnear = tnear;
-    rayHit.ray.tfar = tfar;
-    rayHit.ray.mask = 0xFFFFFFFFu;
-    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rayHit = singleRay(origin, direction, tnear, tfar);  // id 0: hits[0]
     if (embreeTakesRay(origin, direction) && tnear <= tfar)
       rtcIntersect1(scene_, &context, &rayHit);
     const bool opaque = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
