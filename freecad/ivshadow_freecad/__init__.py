@@ -428,7 +428,10 @@ class _Shadows:
         self._follow_camera()
 
     def _follow_camera(self):
-        camera = self.view.getCameraNode()
+        # The render manager's camera, None until the view has one: the view's getCameraNode()
+        # dereferences it without a check, and crashed FreeCAD where a document just opened had
+        # none yet.
+        camera = self.view.getViewer().getSoRenderManager().getCamera()
         if camera is None:
             return
         if self.camera is None or _address(camera) != _address(self.camera):
