@@ -36,7 +36,8 @@ import ivshadow  # noqa: F401  (loads the plugin and registers the nodes with Co
 from pivy import coin
 
 __all__ = ["enable", "disable", "is_enabled", "group", "refresh", "settings_from_preferences",
-           "save_preferences", "stored_settings", "PRESETS", "PARAMETERS", "DEFAULTS", "META_KEY"]
+           "save_preferences", "stored_settings", "highlight_colours", "PRESETS", "PARAMETERS",
+           "DEFAULTS", "META_KEY"]
 
 # Where the add-on's preferences live in FreeCAD's parameters (Tools > Edit parameters).
 PARAMETERS = "User parameter:BaseApp/Preferences/Mod/IvShadow"
@@ -83,7 +84,8 @@ _TRANSPARENCY = {"Exact": "PEELED", "FreeCAD": "COIN_BLENDING"}
 _LIGHT_TYPES = {"Directional": "DeepShadowDirectionalLight", "Point": "DeepShadowLight"}
 
 _NAMES = {"dragger": "IvShadowLightDragger", "group": "IvShadowGroup", "light": "IvShadowLight", "ground": "IvShadowGround",
-          "model": "IvShadowModel", "host_lights": "IvShadowHostLights"}
+          "model": "IvShadowModel", "host_lights": "IvShadowHostLights",
+          "highlight": "IvShadowHighlight"}
 
 
 def _type(name):
@@ -230,6 +232,10 @@ class _Shadows:
         self.model.setName(_NAMES["model"])
         self.group.addChild(self.model)
 
+        # FreeCAD's highlight of faces, drawn again for the tracer (_Highlight, below).
+        self.highlight = _Highlight(self)
+        self.group.addChild(self.highlight.root)
+
         # Copies of FreeCAD's headlight and backlight for FreeCAD's own nodes after the group.
         # The lights themselves sit before the camera, in eye coordinates; each copy's
         # direction is the light's turned by the camera's orientation, worked out by engines
@@ -318,11 +324,13 @@ class _Shadows:
         self.model_sensor.attach(self.model)
         self.top_sensor.attach(self.top)
         _observer.watch()
+        self.highlight.update()
 
     def remove(self):
         for sensor in (self.selection_sensor, self.model_sensor, self.top_sensor,
                        self.dragger_sensor):
             sensor.detach()
+        self.highlight.stop()
         selection = self.selection
         index = selection.findChild(self.dragger_root)
         if index >= 0:
@@ -381,6 +389,8 @@ class _Shadows:
             self._show_dragger()
         self.bounds = None
         self._update_bounds()
+        if self.selection.findChild(self.group) >= 0:
+            self.highlight.update()  # the renderer may have changed
 
     # -- keeping up with FreeCAD ----------------------------------------------------------------
 
@@ -423,6 +433,8 @@ class _Shadows:
 
     def _model_changed(self, data, sensor):
         self._update_bounds()
+        # A recompute gives a highlighted face new triangles (FreeCAD keeps it selected).
+        self.highlight.schedule()
 
     def _top_changed(self, data, sensor):
         self._follow_camera()
@@ -602,6 +614,417 @@ def _view_provider_roots(document_name):
     return roots
 
 
+# -- FreeCAD's highlight of faces, for the tracer -------------------------------------------------
+#
+# FreeCAD draws the highlight of a face (selection green, pre-selection yellow) inside
+# SoBrepFaceSet::GLRender: the face's triangles again, with the highlight colour as the emissive
+# colour over the face's own lit material. A group that traces (renderer TRACER, or AUTO where GL
+# is a software rasteriser) reads its triangles through Coin's SoCallbackAction and never runs
+# that GLRender, so it showed no face highlight (edges and points, drawn by GL after the traced
+# picture, kept theirs). The overlay below draws the highlighted faces into the group as shapes
+# of their own, traced and shadowed like the faces: FreeCAD's own triangles of each face (the
+# coordinates, normals and per-face triangle counts of the view provider's SoBrepFaceSet, so
+# that the overlay covers the face exactly as drawn), the view provider's material with the
+# highlight colour as emissive, a hair in front of the face along its normals (the tracer takes
+# the nearest opaque surface, and coincident ones tie at random).
+
+# FreeCAD's colours of pre-selection and selection, and its switches: parameters of the 3D view
+# (User parameter:BaseApp/Preferences/View), whose defaults are those of FreeCAD's ViewParams
+# (Gui/ViewParams.h: HighlightColor 0xe1e114ff, SelectionColor 0x1cad1cff), as 0xRRGGBBAA.
+VIEW_PARAMETERS = "User parameter:BaseApp/Preferences/View"
+_VIEW_DEFAULTS = {"HighlightColor": 0xE1E114FF, "SelectionColor": 0x1CAD1CFF}
+
+
+def highlight_colours():
+    """FreeCAD's (pre-selection, selection) colours, (r, g, b) in 0..1, from its parameters."""
+    group = App.ParamGet(VIEW_PARAMETERS)
+    return tuple(_colour_from_parameter(group.GetUnsigned(name, _VIEW_DEFAULTS[name]))
+                 for name in ("HighlightColor", "SelectionColor"))
+
+
+# The overlay's distance in front of the face, as a fraction of the model's size: far above the
+# tracer's precision (its ray parameter runs from the near to the far plane in a float), far
+# below a pixel at any zoom that shows the model.
+_HIGHLIGHT_OFFSET = 1e-4
+
+# The meshes of view providers, by (document, object): what the overlay takes of FreeCAD's
+# triangles, read once per object and kept while its coordinates node is unchanged (a recompute
+# or a change of the shape sets new coordinates, and a node's id changes with every change of
+# its fields), so that moving the mouse over faces (pre-selection) reads nothing again.
+_meshes = {}
+
+
+def _drop_meshes(document, name=None):
+    for key in [key for key in _meshes
+                if key[0] == document and (name is None or key[1] == name)]:
+        del _meshes[key]
+
+
+class _Mesh:
+    """FreeCAD's triangles of one view provider: its SoBrepFaceSet, the SoCoordinate3 and
+    SoNormal it is drawn with, in the view provider's root's coordinates (`matrix`)."""
+
+    def __init__(self, token, points, normals, coord_index, starts, counts, matrix, hints):
+        self.token = token
+        self.points = points
+        self.normals = normals
+        self.coord_index = coord_index
+        self.starts = starts
+        self.counts = counts
+        self.matrix = matrix
+        self.hints = hints
+        self.faces = {}  # face index (or None: all) -> (points, normals) of its triangles
+
+    def triangles(self, face):
+        """The points and normals (n x 3 arrays, three rows a triangle) of face `face` (0-based;
+        None: every face)."""
+        import numpy
+        if face not in self.faces:
+            if face is None:
+                indices = self.coord_index
+            elif 0 <= face < len(self.counts):
+                indices = self.coord_index[self.starts[face]:self.starts[face] + 4 * self.counts[face]]
+            else:
+                indices = numpy.zeros(0, dtype=int)
+            indices = indices[: len(indices) // 4 * 4].reshape(-1, 4)[:, :3].reshape(-1)
+            indices = indices[(indices >= 0) & (indices < len(self.points))]
+            indices = indices[: len(indices) // 3 * 3]
+            points = self.points[indices]
+            if self.normals is not None:
+                normals = self.normals[indices]
+            else:  # the triangles' own normals, as Coin would make them
+                corners = points.reshape(-1, 3, 3)
+                cross = numpy.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+                normals = numpy.repeat(cross, 3, axis=0)
+            length = numpy.linalg.norm(normals, axis=1)
+            normals = normals / numpy.where(length > 0, length, 1.0)[:, None]
+            self.faces[face] = (points, normals)
+        return self.faces[face]
+
+
+def _mesh_of(document_name, object_name):
+    """The _Mesh of an object's view provider (cached), or None where it draws no faces (a
+    display mode without them, an object that is not a shape)."""
+    import FreeCADGui as Gui
+    import numpy
+    view_object = Gui.getDocument(document_name).getObject(object_name)
+    root = getattr(view_object, "RootNode", None) if view_object else None
+    if root is None:
+        return None
+    search = coin.SoSearchAction()  # the display mode shown (a switch's chosen child)
+    search.setType(coin.SoType.fromName(coin.SbName("SoBrepFaceSet")))
+    search.setInterest(coin.SoSearchAction.FIRST)
+    search.apply(root)
+    path = search.getPath()
+    if path is None:
+        return None
+    face_set = path.getTail()
+    # The coordinates it is drawn with: the last SoCoordinate3 traversed before it, a child of
+    # one of the nodes along its path.
+    along = {_address(path.getNode(i)): i for i in range(path.getLength())}
+    coordinates = None
+    search = coin.SoSearchAction()
+    search.setType(coin.SoCoordinate3.getClassTypeId())
+    search.setInterest(coin.SoSearchAction.ALL)
+    search.apply(root)
+    found = search.getPaths()
+    for i in range(found.getLength()):
+        candidate = found[i]
+        if candidate.getLength() >= 2 and _address(candidate.getNodeFromTail(1)) in along:
+            coordinates = candidate.getTail()
+    if coordinates is None:
+        return None
+    parent = path.getNodeFromTail(1)
+    normal = hints = None
+    for i in range(parent.getNumChildren()):
+        child = parent.getChild(i)
+        if child.isOfType(coin.SoNormal.getClassTypeId()):
+            normal = child
+        elif child.isOfType(coin.SoShapeHints.getClassTypeId()):
+            hints = child
+    token = (_address(face_set), face_set.getNodeId(), _address(coordinates),
+             coordinates.getNodeId(), _address(normal) if normal else 0,
+             normal.getNodeId() if normal else 0)
+    key = (document_name, object_name)
+    mesh = _meshes.get(key)
+    matrix_action = coin.SoGetMatrixAction(coin.SbViewportRegion())
+    matrix_action.apply(path)
+    matrix = numpy.array([list(row) for row in matrix_action.getMatrix().getValue()])
+    if mesh is not None and mesh.token[2:] == token[2:] and \
+            mesh.coord_index.shape[0] == face_set.coordIndex.getNum():
+        mesh.matrix = matrix  # the placement may have moved; the triangles are the same
+        return mesh
+    points = numpy.array([p.getValue() for p in coordinates.point.getValues(0)], dtype=float)
+    normals = None
+    if normal is not None and normal.vector.getNum() == len(points):
+        normals = numpy.array([n.getValue() for n in normal.vector.getValues(0)], dtype=float)
+    coord_index = numpy.array(face_set.coordIndex.getValues(0), dtype=int)
+    part_index = face_set.getField("partIndex")
+    counts = [int(c) for c in part_index.getValues(0)] if part_index is not None else []
+    starts, start = [], 0
+    for count in counts:
+        starts.append(start)
+        start += 4 * count
+    hints_values = None
+    if hints is not None:
+        hints_values = (hints.vertexOrdering.getValue(), hints.shapeType.getValue(),
+                        hints.faceType.getValue(), hints.creaseAngle.getValue())
+    mesh = _Mesh(token, points, normals, coord_index, starts, counts, matrix, hints_values)
+    _meshes[key] = mesh
+    return mesh
+
+
+def _material_of(view_object, faces):
+    """The view provider's material as FreeCAD draws the face (`faces`: its index, or None for
+    all): (ambient, diffuse list, specular, shininess, transparency)."""
+    def rgb(colour):
+        return tuple(float(c) for c in tuple(colour)[:3])
+    ambient, specular, shininess = (0.2, 0.2, 0.2), (0.0, 0.0, 0.0), 0.2
+    diffuse = [(0.8, 0.8, 0.8)]
+    transparency = 0.0
+    try:
+        material = view_object.ShapeMaterial
+        ambient, specular = rgb(material.AmbientColor), rgb(material.SpecularColor)
+        shininess = float(material.Shininess)
+        diffuse = [rgb(view_object.ShapeColor)]
+        transparency = float(view_object.Transparency) / 100.0
+        per_face = [rgb(colour) for colour in view_object.DiffuseColor]
+        if len(per_face) > 1:
+            if faces is None:
+                diffuse = per_face
+            elif faces < len(per_face):
+                diffuse = [per_face[faces]]
+    except Exception:  # noqa: BLE001  (a view provider without a shape's material)
+        pass
+    return ambient, diffuse, specular, shininess, transparency
+
+
+class _SelectionObserver:
+    """FreeCAD's selection and pre-selection (Gui.Selection.addObserver): each change updates
+    the overlay of the views with shadows of its document."""
+
+    def __init__(self):
+        self.preselection = None  # (document, object, subname) while FreeCAD pre-selects
+
+    def _changed(self, document):
+        # At once, so that a script's next saveImage shows the change: FreeCAD calls its
+        # observers after its own picking and selection actions, outside any traversal of the
+        # overlay's nodes, and the overlay's changes stay below the group.
+        for state in list(_states.values()):
+            if not document or state.document == document:
+                state.highlight.update()
+
+    def addSelection(self, document, obj, sub, point):  # noqa: N802  (FreeCAD's names)
+        self._changed(document)
+
+    def removeSelection(self, document, obj, sub):  # noqa: N802
+        self._changed(document)
+
+    def setSelection(self, document):  # noqa: N802
+        self._changed(document)
+
+    def clearSelection(self, document):  # noqa: N802
+        self._changed(document)
+
+    def setPreselection(self, document, obj, sub):  # noqa: N802
+        self.preselection = (document, obj, sub)
+        self._changed(document)
+
+    def removePreselection(self, document, obj, sub):  # noqa: N802
+        self.preselection = None
+        self._changed(document)
+
+
+_selection_observer = _SelectionObserver()
+
+
+class _Highlight:
+    """The overlay of one view with shadows: a separator in its group that holds, while the
+    group traces, a shape for each highlighted face (or object), unpickable so that FreeCAD's
+    picking still finds the face under it. Updated as FreeCAD's selection changes, and from a
+    delay-queue sensor after an object is deleted (once FreeCAD has finished with it)."""
+
+    def __init__(self, state):
+        self.state = state
+        self.root = coin.SoSeparator()
+        self.root.setName(_NAMES["highlight"])
+        pick = coin.SoPickStyle()
+        pick.style = coin.SoPickStyle.UNPICKABLE
+        self.root.addChild(pick)
+        # Shadowed like the face, casting nothing: the face itself casts the same shadow (a
+        # transparent face's shadow would otherwise darken while it is highlighted).
+        style = coin.SoType.fromName(coin.SbName("ShadowStyle")).createInstance()
+        if style is not None and style.getField("style") is not None:
+            style.getField("style").set("SHADOWED")
+            self.root.addChild(style)
+        self.pieces = coin.SoGroup()
+        self.root.addChild(self.pieces)
+        self.cache = {}  # key -> (token, node) of the pieces built
+        self.sensor = coin.SoOneShotSensor(self._update_now, None)
+        self.warned = False
+
+    def schedule(self):
+        if not self.sensor.isScheduled():
+            self.sensor.schedule()
+
+    def stop(self):
+        self.sensor.unschedule()
+        self.pieces.removeAllChildren()
+        self.cache = {}
+
+    def _update_now(self, data, sensor):
+        self.update()
+
+    def traces(self):
+        """Whether the group may trace: the renderer is AUTO or TRACER. (With AUTO on a GPU the
+        group draws with GL, FreeCAD's highlight with it; the overlay then draws the same colour
+        over it.)"""
+        return str(self.state.settings.get("renderer", "AUTO")).upper() != "RASTER"
+
+    def wanted(self):
+        """The highlights to draw: (object, subname, colour, order), selection first."""
+        import FreeCADGui as Gui
+        if not self.traces():
+            return []
+        document = self.state.document
+        view = App.ParamGet(VIEW_PARAMETERS)
+        preselection_colour, selection_colour = highlight_colours()
+        wanted = []
+        if view.GetBool("EnableSelection", True):
+            for entry in Gui.Selection.getSelectionEx(document, 0):
+                names = entry.SubElementNames or ("",)
+                for sub in names:
+                    wanted.append((entry.ObjectName, sub, selection_colour, 1))
+        presel = _selection_observer.preselection
+        if presel is not None and presel[0] == document and \
+                view.GetBool("EnablePreselection", True):
+            wanted.append((presel[1], presel[2], preselection_colour, 2))
+        return wanted
+
+    def update(self):
+        try:
+            self._update()
+        except Exception:  # noqa: BLE001  (never an error inside FreeCAD's event handling)
+            import traceback
+            if not self.warned:
+                self.warned = True
+                App.Console.PrintWarning("ivshadow.freecad: the highlight overlay failed:\n%s"
+                                         % traceback.format_exc())
+
+    def _update(self):
+        if self.state.document not in App.listDocuments():
+            self.pieces.removeAllChildren()  # the document is closing
+            return
+        document = App.getDocument(self.state.document)
+        bounds = self.state.bounds
+        size = 1.0
+        if bounds is not None:
+            size = max(math.sqrt(sum((bounds[i + 3] - bounds[i]) ** 2 for i in range(3))), 1e-6)
+        shown, nodes = [], []  # the pieces' keys and nodes, in drawing order
+        for object_name, sub, colour, order in self.wanted():
+            built = self._piece(document, object_name, sub, colour, order * _HIGHLIGHT_OFFSET * size)
+            if built is not None:
+                key, node = built
+                shown.append(key)
+                nodes.append(node)
+        self.cache = {key: self.cache[key] for key in shown if key in self.cache}
+        addresses = [_address(node) for node in nodes]
+        if addresses == _children(self.pieces):
+            return  # nothing changed: the group reads nothing again
+        self.pieces.removeAllChildren()
+        for node in nodes:
+            self.pieces.addChild(node)
+
+    def _piece(self, document, object_name, sub, colour, offset):
+        import FreeCADGui as Gui
+        import numpy
+        top = document.getObject(object_name)
+        if top is None:
+            return None
+        path, _, element = sub.rpartition(".")
+        path = path + "." if path else ""
+        if element and not (element.startswith("Face") and element[4:].isdigit()):
+            return None  # an edge or a point: GL draws their highlight after the picture
+        face = int(element[4:]) - 1 if element else None
+        target, accumulated = top, App.Matrix()
+        if path:
+            resolved = top.getSubObject(path, retType=1, matrix=App.Matrix())
+            if not resolved or resolved[0] is None:
+                return None
+            target, accumulated = resolved
+        else:
+            accumulated = top.Placement.toMatrix() if hasattr(top, "Placement") else App.Matrix()
+        gui_document = Gui.getDocument(target.Document.Name)
+        view_object = gui_document.getObject(target.Name)
+        if view_object is None or not view_object.Visibility:
+            return None
+        mesh = _mesh_of(target.Document.Name, target.Name)
+        if mesh is None:
+            return None
+        # The view provider's root is drawn in its parent's coordinates: the accumulated
+        # placement less the object's own (which the root's transform holds, in mesh.matrix).
+        own = target.Placement.toMatrix() if hasattr(target, "Placement") else App.Matrix()
+        parent = accumulated.multiply(own.inverse())
+        parent = numpy.array(parent.A, dtype=float).reshape(4, 4).T  # as Coin's row vectors
+        matrix = mesh.matrix.dot(parent)
+        material = _material_of(view_object, face)
+        token = (mesh.token[2:], tuple(matrix.flatten()), colour, material, offset)
+        key = (target.Document.Name, target.Name, face, colour)
+        cached = self.cache.get(key)
+        if cached is not None and cached[0] == token:
+            return key, cached[1]
+        points, normals = mesh.triangles(face)
+        if len(points) == 0:
+            return None
+        # In the mesh's own coordinates; the offset assumes no scale in the placement.
+        moved = points + normals * offset
+        node = coin.SoSeparator()
+        transform = coin.SoMatrixTransform()
+        transform.matrix.setValue(coin.SbMatrix(*[float(v) for v in matrix.flatten()]))
+        node.addChild(transform)
+        if mesh.hints is not None:
+            hints = coin.SoShapeHints()
+            hints.vertexOrdering, hints.shapeType, hints.faceType, hints.creaseAngle = mesh.hints
+            node.addChild(hints)
+        ambient, diffuse, specular, shininess, transparency = material
+        look = coin.SoMaterial()
+        look.ambientColor.setValue(coin.SbColor(*ambient))
+        look.diffuseColor.setValues(0, len(diffuse), [list(c) for c in diffuse])
+        look.specularColor.setValue(coin.SbColor(*specular))
+        look.emissiveColor.setValue(coin.SbColor(*colour))
+        look.shininess = shininess
+        look.transparency = transparency
+        node.addChild(look)
+        binding = coin.SoMaterialBinding()
+        triangles = len(points) // 3
+        if len(diffuse) > 1 and face is None and len(diffuse) == len(mesh.counts):
+            # One colour per face of the object (DiffuseColor): a colour per triangle.
+            per_triangle = []
+            for index, count in enumerate(mesh.counts):
+                per_triangle.extend([list(diffuse[index])] * count)
+            per_triangle = per_triangle[:triangles]
+            look.diffuseColor.setValues(0, len(per_triangle), per_triangle)
+            binding.value = coin.SoMaterialBinding.PER_FACE
+        else:
+            look.diffuseColor.setNum(1)
+            binding.value = coin.SoMaterialBinding.OVERALL
+        node.addChild(binding)
+        coordinates = coin.SoCoordinate3()
+        coordinates.point.setValues(0, len(moved), moved.tolist())
+        node.addChild(coordinates)
+        normal = coin.SoNormal()
+        normal.vector.setValues(0, len(normals), normals.tolist())
+        node.addChild(normal)
+        normal_binding = coin.SoNormalBinding()
+        normal_binding.value = coin.SoNormalBinding.PER_VERTEX
+        node.addChild(normal_binding)
+        faces = coin.SoFaceSet()
+        faces.numVertices.setValues(0, triangles, [3] * triangles)
+        node.addChild(faces)
+        self.cache[key] = (token, node)
+        return key, node
+
+
 class _DocumentObserver:
     """Keeps the groups consistent as FreeCAD deletes objects and closes documents."""
 
@@ -612,14 +1035,27 @@ class _DocumentObserver:
         if not self.watching:
             import FreeCADGui as Gui
             Gui.addDocumentObserver(self)
+            Gui.Selection.addObserver(_selection_observer)
             self.watching = True
 
     def slotDeletedObject(self, view_provider):
+        try:
+            name = view_provider.Object.Name
+            document = view_provider.Object.Document.Name
+        except Exception:  # noqa: BLE001  (a view provider without an object)
+            name = document = None
+        if document is not None:
+            _drop_meshes(document, name)
+            presel = _selection_observer.preselection
+            if presel is not None and presel[0] == document and presel[1] == name:
+                _selection_observer.preselection = None
         root = getattr(view_provider, "RootNode", None)
         if root is None:
             return
         for state in _states.values():
             state.forget(root)
+            if state.document == document:
+                state.highlight.schedule()
 
     def slotDeletedDocument(self, gui_document):
         name = gui_document.Document.Name
@@ -630,7 +1066,11 @@ class _DocumentObserver:
                 for sensor in (state.selection_sensor, state.model_sensor, state.top_sensor,
                                state.dragger_sensor):
                     sensor.detach()
+                state.highlight.stop()
                 del _states[key]
+        _drop_meshes(name)
+        if _selection_observer.preselection and _selection_observer.preselection[0] == name:
+            _selection_observer.preselection = None
 
 
 _states = {}

@@ -174,14 +174,95 @@ def run():
     mouse(widget, "move", (2, 2))
     shadows.enable(view, light_direction=LIGHT, renderer="AUTO")
 
+    # With AUTO, traced here, FreeCAD's highlight of faces (drawn in SoBrepFaceSet::GLRender,
+    # which the tracer does not run) comes from the add-on's overlay: the selected face green,
+    # the pre-selected one yellow, at every one of five points inside the top face (Face6), in
+    # the live view and in saveImage; clearing gives the picture back.
+    face_points = [pixel_of(view, point, size) for point in
+                   ((15, 15, 30), (6, 6, 30), (24, 6, 30), (6, 24, 30), (24, 24, 30))]
+    Gui.Selection.clearSelection()
+    Gui.Selection.clearPreselection()
+    plain_live = live("live_unhighlighted_traced")
+    plain_saved = save(view, "saved_unhighlighted_traced", size)
+    colours = [rgb(plain_live, point) for point in face_points]
+    check("traced face not highlighted before selection",
+          not any(greenish(c) or yellowish(c) for c in colours), face=colours)
+    Gui.Selection.addSelection(document.Box, "Face6")
+    traced_selected = live("live_selected_traced")
+    saved_selected = save(view, "saved_selected_traced", size)
+    colours = [rgb(traced_selected, point) for point in face_points]
+    saved_colours = [rgb(saved_selected, point) for point in face_points]
+    check("selection highlight drawn (face, traced)",
+          all(greenish(c) for c in colours + saved_colours), live=colours, saved=saved_colours,
+          raster=rgb(raster_selected, top))
+    # The other faces keep their colour (the front side x = 30 at its middle).
+    side = pixel_of(view, (30, 15, 15), size)
+    check("selection highlight only on the selected face (traced)",
+          not greenish(rgb(traced_selected, side)), side=rgb(traced_selected, side))
+    # Pre-selection over the selected face: the overlay is unpickable, so the mouse still finds
+    # the face, and FreeCAD's pre-selection colour wins, as FreeCAD draws it last.
+    mouse(widget, "move", logical(widget, top))
+    preselection = Gui.Selection.getPreselection()
+    traced_preselected = live("live_preselected_traced")
+    colours = [rgb(traced_preselected, point) for point in face_points]
+    check("pre-selection highlight drawn (face, traced)",
+          preselection.ObjectName == "Box" and preselection.SubElementNames == ("Face6",) and
+          all(yellowish(c) for c in colours), live=colours,
+          raster=rgb(raster_preselected, top), elements=list(preselection.SubElementNames))
+    mouse(widget, "move", (2, 2))
+    back_to_selection = live("live_preselection_gone_traced")
+    colours = [rgb(back_to_selection, point) for point in face_points]
+    check("pre-selection highlight goes with the mouse (traced)",
+          all(greenish(c) for c in colours), live=colours)
+    # The selected face follows a recompute: the box 40 high, its top face is green at z = 40.
+    document.Box.Height = 40
+    document.recompute()
+    taller = live("live_selected_taller_traced")
+    taller_points = [pixel_of(view, (x, y, 40), size) for x, y, _ in
+                     ((15, 15, 30), (6, 6, 30), (24, 24, 30))]
+    colours = [rgb(taller, point) for point in taller_points]
+    check("selection highlight follows a recompute (traced)", all(greenish(c) for c in colours),
+          live=colours)
+    document.Box.Height = 30
+    document.recompute()
+    # The whole box selected: every visible face green, the side too.
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(document.Box)
+    whole = live("live_whole_selected_traced")
+    check("whole object selected: all its faces highlighted (traced)",
+          greenish(rgb(whole, side)) and greenish(rgb(whole, top)),
+          side=rgb(whole, side), top=rgb(whole, top))
+    # Cleared: the picture is the unhighlighted one again. saveImage is traced at full size
+    # both times: at most 3 levels anywhere; the live view may still refine (movingResolution),
+    # so it is held to 3 levels on 99.9 % of the pixels.
+    Gui.Selection.clearSelection()
+    Gui.Selection.clearPreselection()
+    cleared_saved = save(view, "saved_cleared_traced", size)
+    cleared_live = live("live_cleared_traced")
+    saved_difference = int(abs(array(cleared_saved) - array(plain_saved)).max())
+    live_changed = int((abs(array(cleared_live) - array(plain_live)).max(axis=2) > 3).sum())
+    check("clearing the selection restores the traced picture",
+          saved_difference <= 3 and live_changed <= 0.001 * size[0] * size[1],
+          saveimage_largest_difference=saved_difference, live_pixels_over_3=live_changed)
+
     # -- deleting an object and undoing it ------------------------------------------------------
     # The box's shadow on the plane at (36, 5, 0) (shadows_macro.py works the point out).
     shadow_point = pixel_of(view, (36, 5, 0), size)
     lit_point = pixel_of(view, (36, -40, 0), size)
+    # Deleted while selected and pre-selected: its highlight goes with it (no green or yellow
+    # pixel left), and FreeCAD does not crash.
+    Gui.Selection.addSelection(document.Box, "Face6")
+    mouse(widget, "move", logical(widget, top))
     document.openTransaction("Delete the box")
     document.removeObject("Box")
     document.commitTransaction()
     deleted = save(view, "saved_deleted", size)
+    pixels = array(deleted)
+    red, green, blue = pixels[:, :, 0], pixels[:, :, 1], pixels[:, :, 2]
+    highlighted = int(((green > red + 25) & (green > blue + 25)).sum() +
+                      ((numpy.minimum(red, green) > blue + 40)).sum())
+    check("a deleted selected box leaves no highlight", highlighted == 0, pixels=highlighted)
+    mouse(widget, "move", (2, 2))
     check("deleted box casts no shadow",
           grey(rgb(deleted, shadow_point)) > 0.8 * grey(rgb(deleted, lit_point)),
           shadow=rgb(deleted, shadow_point), lit=rgb(deleted, lit_point))
