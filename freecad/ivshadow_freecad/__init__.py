@@ -711,11 +711,13 @@ def _mesh_of(document_name, object_name):
     root = getattr(view_object, "RootNode", None) if view_object else None
     if root is None:
         return None
-    search = coin.SoSearchAction()  # the display mode shown (a switch's chosen child)
-    search.setType(coin.SoType.fromName(coin.SbName("SoBrepFaceSet")))
-    search.setInterest(coin.SoSearchAction.FIRST)
-    search.apply(root)
-    path = search.getPath()
+    # Each action lives as long as the paths it found are used: a path belongs to its action,
+    # which frees it when it goes (pivy does not hold it), and a dangling path crashed FreeCAD.
+    face_search = coin.SoSearchAction()  # the display mode shown (a switch's chosen child)
+    face_search.setType(coin.SoType.fromName(coin.SbName("SoBrepFaceSet")))
+    face_search.setInterest(coin.SoSearchAction.FIRST)
+    face_search.apply(root)
+    path = face_search.getPath()
     if path is None:
         return None
     face_set = path.getTail()
@@ -723,11 +725,11 @@ def _mesh_of(document_name, object_name):
     # one of the nodes along its path.
     along = {_address(path.getNode(i)): i for i in range(path.getLength())}
     coordinates = None
-    search = coin.SoSearchAction()
-    search.setType(coin.SoCoordinate3.getClassTypeId())
-    search.setInterest(coin.SoSearchAction.ALL)
-    search.apply(root)
-    found = search.getPaths()
+    coordinate_search = coin.SoSearchAction()
+    coordinate_search.setType(coin.SoCoordinate3.getClassTypeId())
+    coordinate_search.setInterest(coin.SoSearchAction.ALL)
+    coordinate_search.apply(root)
+    found = coordinate_search.getPaths()
     for i in range(found.getLength()):
         candidate = found[i]
         if candidate.getLength() >= 2 and _address(candidate.getNodeFromTail(1)) in along:
