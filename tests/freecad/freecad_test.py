@@ -42,7 +42,10 @@ def main():
     result = os.path.join(work, "result.json")
     environment = {key: value for key, value in os.environ.items()
                    if key not in ("LD_LIBRARY_PATH", "PYTHONPATH")}
-    environment.update(HOME=home, DISPLAY=display + ".0", QTWEBENGINE_DISABLE_SANDBOX="1",
+    # Screen 1, which the tests that read windows back from the screen share under one lock
+    # (tests/xserver/xserver.sh): on screen 0 the scripted viewer tests' windows, opened at
+    # any time, came on top of FreeCAD's live view while it was read.
+    environment.update(HOME=home, DISPLAY=display + ".1", QTWEBENGINE_DISABLE_SANDBOX="1",
                        IVSHADOW_FREECAD_RESULT=result, IVSHADOW_FREECAD_WORK=work,
                        IVSHADOW_FREECAD_PREFIX=prefix,
                        # FreeCAD imports the macro and macro_common.py as modules: no

@@ -8,8 +8,9 @@
 #   xserver.sh stop DIR    stops what `start` started: the window managers, then the server
 # The server has four screens: :N.0 (IVSHADOW_TEST_SCREEN, 1280x1024 by default) for the
 # scripted viewer tests, and :N.1 1280x1024, :N.2 1024x768 and :N.3 1920x1080 for the tests
-# that look at the interactive window as users see it (ViewerWindowTest.cpp), where no other
-# test's window may come on top; screens of several sizes without a server each. Openbox
+# that look at the interactive window as users see it (ViewerWindowTest.cpp) or read windows
+# back from the screen (the FreeCAD and headlight tests), one at a time (RESOURCE_LOCK
+# interactive_screens), where no other test's window may come on top; screens of several sizes without a server each. Openbox
 # manages one screen per process, hence one per screen; with it, windows get a frame and a
 # place as on a desktop.
 # The server and its clients run detached from CTest's pipes, so CTest does not wait on them.
