@@ -115,6 +115,22 @@ def green(colour):
     return g > 150 and g > r + 80 and g > b + 80
 
 
+def leave_edit(view, shadows, picture, what, refit=False):
+    # Edit mode left: shadows are still on, and the box still casts its dark shadow where the
+    # light puts it, against a lit point of the plane beside it.
+    Gui.ActiveDocument.resetEdit()
+    Gui.updateGui()
+    if refit:
+        view.viewIsometric()
+        view.fitAll()
+    after = save(view, picture, SIZE)
+    box_shadow, lit = pixel_of(view, (36, 5, 0), SIZE), pixel_of(view, (36, -40, 0), SIZE)
+    check(what,
+          Gui.ActiveDocument.getInEdit() is None and shadows.is_enabled(view) and
+          grey(rgb(after, box_shadow)) < 0.25 * grey(rgb(after, lit)),
+          shadow=rgb(after, box_shadow), lit=rgb(after, lit))
+
+
 def sketch_editing(document, view, shadows):
     import Part
     # The sketcher draws the edited sketch's edges in its own colour (View's EditedEdgeColor):
@@ -140,16 +156,8 @@ def sketch_editing(document, view, shadows):
     check("sketch in edit mode with shadows on: its lines drawn",
           in_edit and not missing and shadows.is_enabled(view), in_edit=in_edit,
           missing=missing)
-    Gui.ActiveDocument.resetEdit()
-    Gui.updateGui()
-    view.viewIsometric()
-    view.fitAll()
-    after = save(view, "sketch_left", SIZE)
-    box_shadow, lit = pixel_of(view, (36, 5, 0), SIZE), pixel_of(view, (36, -40, 0), SIZE)
-    check("sketch edit left, shadows still on and cast",
-          Gui.ActiveDocument.getInEdit() is None and shadows.is_enabled(view) and
-          grey(rgb(after, box_shadow)) < 0.25 * grey(rgb(after, lit)),
-          shadow=rgb(after, box_shadow), lit=rgb(after, lit))
+    leave_edit(view, shadows, "sketch_left", "sketch edit left, shadows still on and cast",
+               refit=True)
     document.removeObject("Sketch")
     document.recompute()
 
@@ -180,14 +188,7 @@ def transform_dragger(document, view, shadows):
           in_edit and all(c >= c0 + 20 for c, c0 in zip(counts, counts_before)) and
           max(counts_before[1:]) < 5,
           in_edit=in_edit, red_green_blue=counts, before=counts_before)
-    Gui.ActiveDocument.resetEdit()
-    Gui.updateGui()
-    after = save(view, "dragger_left", SIZE)
-    box_shadow, lit = pixel_of(view, (36, 5, 0), SIZE), pixel_of(view, (36, -40, 0), SIZE)
-    check("transform edit left, shadows still on and cast",
-          Gui.ActiveDocument.getInEdit() is None and shadows.is_enabled(view) and
-          grey(rgb(after, box_shadow)) < 0.25 * grey(rgb(after, lit)),
-          shadow=rgb(after, box_shadow), lit=rgb(after, lit))
+    leave_edit(view, shadows, "dragger_left", "transform edit left, shadows still on and cast")
 
 
 def per_document(shadows):
