@@ -1,5 +1,7 @@
 #include "cli/ViewerProcess.h"
 
+#include "cli/ChildProcesses.h"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -12,11 +14,12 @@ namespace ivshadow {
 namespace {
 
 std::string viewerBesideThisProgram() {
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   // Installed and built alike, the two programs lie in one folder (bin/).
-  return (error ? std::filesystem::path("ivshadow-viewer") : self.parent_path() / "ivshadow-viewer")
-      .string();
+  try {
+    return (std::filesystem::path(currentExecutable()).parent_path() / "ivshadow-viewer").string();
+  } catch (const std::exception&) {
+    return "ivshadow-viewer";
+  }
 }
 
 }  // namespace
