@@ -7,7 +7,10 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
+#include <utility>
 
 namespace ivshadow {
 namespace {
@@ -48,6 +51,8 @@ GLenum drawnAndRead() {
 
 bool KeptFrame::readBefore(const std::array<int, 4>& viewport) {
   readable_ = false;
+  colourRead_ = false;
+  depthRead_ = false;
   GlStateScope scope(GlStateScope::kFramebuffers);
   const auto drawn = GLuint(scope.drawFramebuffer());
   GLint samples = 0;
@@ -59,20 +64,103 @@ bool KeptFrame::readBefore(const std::array<int, 4>& viewport) {
   layout_.viewport = viewport;
   layout_.colourFormat = colourFormat(drawn, buffer);
   layout_.depthFormat = depthFormat(drawn);
-  const PixelTransfer depth = depthTransfer(layout_.depthFormat);
-  if (layout_.colourFormat == GL_NONE || depth.bytes == 0) return false;
-  const PixelTransfer colour = colourTransfer(layout_.colourFormat);
-  if (colour.bytes == 0) return false;
-  PixelStoreScope store;
-  now_.colour.resize(packedSize(viewport[2], viewport[3], colour.bytes));
-  now_.depth.resize(packedSize(viewport[2], viewport[3], depth.bytes));
-  glReadPixels(viewport[0], viewport[1], viewport[2], viewport[3], colour.format, colour.type,
-               now_.colour.data());
-  glReadPixels(viewport[0], viewport[1], viewport[2], viewport[3], depth.format, depth.type,
-               now_.depth.data());
+  if (layout_.colourFormat == GL_NONE || depthTransfer(layout_.depthFormat).bytes == 0 ||
+      colourTransfer(layout_.colourFormat).bytes == 0)
+    return false;
   readable_ = true;
-  depthAsTraced_ = now_.depth == tracedDepth_;
+  depthAsTraced_ = equalsFramebuffer(Buffer::Depth, tracedDepth_);
+  if (!depthAsTraced_) read(Buffer::Depth);
   return true;
+}
+
+PixelTransfer KeptFrame::transfer(Buffer buffer) const {
+  return buffer == Buffer::Colour ? colourTransfer(layout_.colourFormat)
+                                  : depthTransfer(layout_.depthFormat);
+}
+
+void KeptFrame::readRows(Buffer buffer, int first, int rows, unsigned char* into) const {
+  GlStateScope scope(GlStateScope::kFramebuffers);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(scope.drawFramebuffer()));
+  PixelStoreScope store;
+  const PixelTransfer pixels = transfer(buffer);
+  const std::array<int, 4>& v = layout_.viewport;
+  glReadPixels(v[0], v[1] + first, v[2], rows, pixels.format, pixels.type, into);
+}
+
+void KeptFrame::read(Buffer buffer) {
+  const std::array<int, 4>& v = layout_.viewport;
+  std::vector<unsigned char>& into = buffer == Buffer::Colour ? now_.colour : now_.depth;
+  into.resize(packedSize(v[2], v[3], transfer(buffer).bytes));
+  readRows(buffer, 0, v[3], into.data());
+  (buffer == Buffer::Colour ? colourRead_ : depthRead_) = true;
+}
+
+bool KeptFrame::equalsFramebuffer(Buffer buffer, const std::vector<unsigned char>& bytes) {
+  bool equal =
+      bytes.size() == packedSize(layout_.viewport[2], layout_.viewport[3], transfer(buffer).bytes);
+  // A difference stops the reading.
+  if (equal)
+    forEachBand(buffer, bytes, [&](int, const unsigned char* read, const unsigned char* other) {
+      equal = std::memcmp(read, other, rowBytes(buffer)) == 0;
+      return equal;
+    });
+  return equal;
+}
+
+template <typename RowVisitor>
+void KeptFrame::forEachBand(Buffer buffer, const std::vector<unsigned char>& bytes,
+                            RowVisitor&& visit) {
+  const std::array<int, 4>& v = layout_.viewport;
+  const std::size_t row = packedSize(v[2], 1, transfer(buffer).bytes);
+  // Band by band through a buffer the cache holds: the framebuffer is read once and only the
+  // copy compared with comes from memory.
+  const int band = int(std::max<std::size_t>(1, kBandBytes / row));
+  band_.resize(row * std::size_t(band));
+  for (int first = 0; first < v[3]; first += band) {
+    const int rows = std::min(band, v[3] - first);
+    readRows(buffer, first, rows, band_.data());
+    for (int r = 0; r < rows; ++r)
+      if (!visit(first + r, band_.data() + row * std::size_t(r),
+                 bytes.data() + row * std::size_t(first + r)))
+        return;
+  }
+}
+
+std::size_t KeptFrame::rowBytes(Buffer buffer) const {
+  // The pixels alone: glReadPixels leaves a row's padding as it was.
+  return std::size_t(layout_.viewport[2]) * std::size_t(transfer(buffer).bytes);
+}
+
+void KeptFrame::findChanged() {
+  const int width = layout_.viewport[2];
+  changed_ = {width, layout_.viewport[3], 0, 0};
+  for (const Buffer buffer : {Buffer::Colour, Buffer::Depth}) {
+    const std::size_t pixel = std::size_t(transfer(buffer).bytes);
+    const std::size_t used = rowBytes(buffer);
+    forEachBand(buffer, buffer == Buffer::Colour ? now_.colour : now_.depth,
+                [&](int y, const unsigned char* after, const unsigned char* before) {
+                  if (std::memcmp(after, before, used) == 0) return true;
+                  int first = 0, last = width - 1;
+                  while (std::memcmp(after + pixel * std::size_t(first),
+                                     before + pixel * std::size_t(first), pixel) == 0)
+                    ++first;
+                  while (std::memcmp(after + pixel * std::size_t(last),
+                                     before + pixel * std::size_t(last), pixel) == 0)
+                    --last;
+                  changed_ = {std::min(changed_[0], first), std::min(changed_[1], y),
+                              std::max(changed_[2], last + 1), std::max(changed_[3], y + 1)};
+                  return true;
+                });
+  }
+}
+
+void KeptFrame::readAll() {
+  if (!colourRead_) read(Buffer::Colour);
+  // Unread, the depth is the one traced at.
+  if (!depthRead_) {
+    now_.depth = tracedDepth_;
+    depthRead_ = true;
+  }
 }
 
 bool KeptFrame::depthAsTraced() const {
@@ -80,10 +168,10 @@ bool KeptFrame::depthAsTraced() const {
 }
 
 void KeptFrame::markTraced() {
-  if (readable_)
-    tracedDepth_ = now_.depth;
-  else
+  if (!readable_)
     tracedDepth_.clear();
+  else if (depthRead_)
+    tracedDepth_ = now_.depth;
   depthAsTraced_ = readable_;
   forget();
 }
@@ -93,18 +181,25 @@ void KeptFrame::forget() {
 }
 
 bool KeptFrame::restore() {
-  if (!readable_ || !valid_ || !(layout_ == keptLayout_)) return false;
-  // Two depths equal to the one traced at are equal without a second comparison.
-  const bool sameDepth = (depthAsTraced_ && keptAtTracedDepth_) || now_.depth == keptBefore_.depth;
-  if (!sameDepth || now_.colour != keptBefore_.colour) return false;
-  GlStateScope scope(GlStateScope::kFramebuffers);
-  blit(framebuffer_.get(), GLuint(scope.drawFramebuffer()), false);
-  return true;
+  if (!readable_) return false;
+  if (valid_ && layout_ == keptLayout_) {
+    // Two depths equal to the one traced at are equal without a second comparison.
+    const std::vector<unsigned char>& depth = depthRead_ ? now_.depth : tracedDepth_;
+    const bool sameDepth = (depthAsTraced_ && keptAtTracedDepth_) || depth == keptBefore_.depth;
+    if (sameDepth && equalsFramebuffer(Buffer::Colour, keptBefore_.colour)) {
+      GlStateScope scope(GlStateScope::kFramebuffers);
+      blit(framebuffer_.get(), GLuint(scope.drawFramebuffer()), false);
+      return true;
+    }
+  }
+  // The caller composites and keep() keeps the frame with what it was composed over.
+  readAll();
+  return false;
 }
 
 void KeptFrame::keep() {
   valid_ = false;
-  if (!readable_) return;
+  if (!readable_ || !colourRead_ || !depthRead_) return;
   const std::array<int, 4>& viewport = layout_.viewport;
   if (!(layout_ == keptLayout_) || !framebuffer_) {
     // A layout GL could not hold is not tried again every frame.
@@ -127,9 +222,11 @@ void KeptFrame::keep() {
     framebuffer_ = std::move(framebuffer);
     keptLayout_ = layout_;
   }
+  findChanged();
   GlStateScope scope(GlStateScope::kFramebuffers);
   blit(GLuint(scope.drawFramebuffer()), framebuffer_.get(), true);
-  keptBefore_ = now_;
+  std::swap(keptBefore_, now_);
+  colourRead_ = depthRead_ = false;
   keptAtTracedDepth_ = depthAsTraced_;
   valid_ = true;
 }
@@ -141,12 +238,16 @@ void KeptFrame::giveUp() {
 }
 
 void KeptFrame::blit(unsigned int from, unsigned int to, bool toKept) const {
+  // Only what the picture changed: elsewhere the framebuffer is what the kept frame was
+  // composed over, which restore() found equal to it.
+  if (changed_[0] >= changed_[2] || changed_[1] >= changed_[3]) return;
   // A blit is clipped by the scissor test an application may have left on.
   GlStateScope tests(GlStateScope::kFragmentTests);
   tests.disableFragmentTests();
   const std::array<int, 4>& v = layout_.viewport;
-  const std::array<int, 4> drawn{v[0], v[1], v[0] + v[2], v[1] + v[3]};
-  const std::array<int, 4> kept{0, 0, v[2], v[3]};
+  const std::array<int, 4> drawn{v[0] + changed_[0], v[1] + changed_[1], v[0] + changed_[2],
+                                 v[1] + changed_[3]};
+  const std::array<int, 4>& kept = changed_;
   const std::array<int, 4>& source = toKept ? drawn : kept;
   const std::array<int, 4>& target = toKept ? kept : drawn;
   GLbitfield mask = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT;

@@ -1,9 +1,11 @@
 #pragma once
 
+#include "gl/FramebufferFormats.h"
 #include "gl/GlHandles.h"
 #include "ivshadow/Export.h"
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -12,17 +14,20 @@ namespace ivshadow {
 // A traced group's frame, kept for the frames that change nothing, in one context. Each frame
 // reads what GL drew before the picture as it is stored (colour and depth, unconverted: a plain
 // copy) and compares it with what the kept frame was composed over; while they are equal the
-// framebuffer the picture left is put back by one blit instead of compositing the picture
-// again. On llvmpipe the composite runs a fragment program over every pixel of the viewport,
-// which costs more than plain Coin's whole frame of a small scene; the read, the comparison and
-// the blit are copies. The same read tells whether the depth is still the one the picture was
-// traced at, without converting it to floats.
-// Only a single-sampled framebuffer drawing into the one buffer it reads, with every colour
-// channel writable, is kept; for any other readBefore() says no and the caller composites.
+// framebuffer the picture left is put back by one blit (of the box where the picture changed
+// what GL drew) instead of compositing the picture again. On llvmpipe the composite runs a fragment
+// program over every pixel of the viewport, which costs more than plain Coin's whole frame of a
+// small scene; the read, the comparison and the blit are copies. The reads go band by band through
+// a buffer the cache holds, compared as they come: only a frame that differs is read whole into
+// memory, to be kept. The same reads tell whether the depth is still the one the picture was traced
+// at, without converting it to floats. Only a single-sampled framebuffer drawing into the one
+// buffer it reads, with every colour channel writable, is kept; for any other readBefore() says no
+// and the caller composites.
 class IVSHADOW_INTERNAL KeptFrame {
  public:
   // Reads the draw framebuffer over `viewport` (x, y, width, height) as stored: what GL drew
-  // before the picture this frame. False when this framebuffer cannot be kept.
+  // before the picture this frame (its depth now; its colour when restore() compares it, so
+  // nothing may draw in between). False when this framebuffer cannot be kept.
   bool readBefore(const std::array<int, 4>& viewport);
   // Whether the depth readBefore() read is the one the picture was traced at (markTraced()).
   bool depthAsTraced() const;
@@ -53,19 +58,45 @@ class IVSHADOW_INTERNAL KeptFrame {
     }
   };
 
+  enum class Buffer { Colour, Depth };
+  // The rows read at once when comparing: well inside a core's L2 cache.
+  static constexpr std::size_t kBandBytes = 256 * 1024;
+
+  PixelTransfer transfer(Buffer buffer) const;
+  // Reads `rows` rows of the viewport from its row `first` on, packed, into `into`.
+  void readRows(Buffer buffer, int first, int rows, unsigned char* into) const;
+  // Reads the whole viewport of `buffer` into now_.
+  void read(Buffer buffer);
+  // Whether the framebuffer's `buffer` over the viewport is `bytes`, as read().
+  bool equalsFramebuffer(Buffer buffer, const std::vector<unsigned char>& bytes);
+  // Calls visit(y, read, bytes' row y) for each row y of the viewport read from the
+  // framebuffer's `buffer`, until it returns false.
+  template <typename RowVisitor>
+  void forEachBand(Buffer buffer, const std::vector<unsigned char>& bytes, RowVisitor&& visit);
+  std::size_t rowBytes(Buffer buffer) const;
+  // Sets changed_ to the box where the framebuffer differs from now_.
+  void findChanged();
+  // Completes now_: the colour read, the depth read or known to be the one traced at.
+  void readAll();
   // Lets go of a copy GL could not hold, and remembers its layout.
   void giveUp();
-  // Blits the viewport between the draw framebuffer and the copy, colour, depth and stencil.
+  // Blits changed_ between the draw framebuffer and the copy, colour, depth and stencil.
   void blit(unsigned int from, unsigned int to, bool toKept) const;
 
   bool readable_ = false;  // this frame's readBefore() read
   Layout layout_;          // this frame's
-  Stored now_;             // read this frame
+  Stored now_;             // read this frame, where colourRead_ and depthRead_ say
+  bool colourRead_ = false;
+  bool depthRead_ = false;  // else the depth is tracedDepth_ when depthAsTraced_
+  std::vector<unsigned char> band_;
   std::vector<unsigned char> tracedDepth_;
   bool depthAsTraced_ = false;  // now_.depth == tracedDepth_
   bool valid_ = false;          // a frame is kept
   Layout keptLayout_;
-  Stored keptBefore_;               // what the kept frame was composed over
+  Stored keptBefore_;  // what the kept frame was composed over
+  // Where the kept frame differs from keptBefore_: x0, y0, x1, y1 in the viewport, x1 and y1
+  // past the end; empty when x0 >= x1. The blits copy it alone.
+  std::array<int, 4> changed_{};
   bool keptAtTracedDepth_ = false;  // keptBefore_.depth == tracedDepth_
   GlFramebuffer framebuffer_;
   GlRenderbuffer colour_;

@@ -8,13 +8,17 @@
 #include "tests/gl/ShadowScene.h"
 
 #include <Inventor/SbColor.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/nodes/SoCallback.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <epoxy/gl.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -109,6 +113,122 @@ TEST(KeptFrame, AStillFrameIsPutBackByABlitAndIsTheCompositesPicture) {
   renderer->render(root);
   EXPECT_TRUE(samePixels(renderer->read(), first)) << "black again";
   EXPECT_EQ(collectDeepShadowStatistics(root).tracerFrames, 1) << "nothing was traced again";
+  renderer.reset();
+  root->unref();
+}
+
+// One pixel of what GL draws before the group, changed by a scissored clear: its colour, or
+// its depth alone (colour writes off).
+struct Poke {
+  int x = 0;
+  int y = 0;
+  bool depthOnly = false;
+};
+
+void pokePixel(void* data, SoAction* action) {
+  const auto& poke = *static_cast<const std::optional<Poke>*>(data);
+  if (!poke || !action->isOfType(SoGLRenderAction::getClassTypeId())) return;
+  glPushAttrib(GL_SCISSOR_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(poke->x, poke->y, 1, 1);
+  if (poke->depthOnly) {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glClearDepth(0.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+  } else {
+    glClearColor(0.2f, 0.6f, 1.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  glPopAttrib();
+}
+
+// A small glass cube in front of a small opaque sphere, traced, in a view most of which the
+// group leaves as GL drew it; a callback before the group pokes one pixel when asked.
+SoSeparator* pokedScene(std::optional<Poke>* poke) {
+  SoSeparator* scene = readIv(R"(#Inventor V2.1 ascii
+    OrthographicCamera { position 0 0 5 height 4 nearDistance 1 farDistance 9 }
+    TransparentShadowGroup {
+      renderer TRACER
+      DirectionalLight { direction -0.3 -0.5 -1 }
+      Material { diffuseColor 0.8 0.8 0.8 }
+      Sphere { radius 0.6 }
+      Translation { translation 0.4 0.3 1 }
+      Material { diffuseColor 0 0.4 1 transparency 0.5 }
+      Cube { width 0.8 height 0.8 depth 0.8 }
+    })");
+  auto* root = new SoSeparator;
+  root->ref();
+  auto* callback = new SoCallback;
+  callback->setCallback(pokePixel, poke);
+  root->addChild(callback);
+  root->addChild(scene);
+  scene->unref();
+  return root;
+}
+
+// 640 x 480: several of KeptFrame's bands of 256 KiB (102 rows of colour), so that a change in
+// the first, a middle and the last band, and on a band's edge, is each seen.
+constexpr int kPokeWidth = 640;
+constexpr int kPokeHeight = 480;
+
+// The first frame of the poked scene on a fresh renderer: the picture composited once over
+// what GL drew, with nothing kept.
+Image firstPokedFrame(const std::optional<Poke>& poke) {
+  std::optional<Poke> fixed = poke;
+  SoSeparator* root = pokedScene(&fixed);
+  std::string error;
+  auto renderer = CheckedRenderer::create(kPokeWidth, kPokeHeight, error);
+  EXPECT_TRUE(renderer) << error;
+  Image image;
+  if (renderer) {
+    renderer->render(root);
+    image = renderer->read();
+  }
+  root->unref();
+  return image;
+}
+
+TEST(KeptFrame, OnePixelChangedBeforeTheGroupAnywhereCompositesAgain) {
+  std::optional<Poke> poke;
+  SoSeparator* root = pokedScene(&poke);
+  std::string error;
+  auto renderer = CheckedRenderer::create(kPokeWidth, kPokeHeight, error);
+  ASSERT_TRUE(renderer) << error;
+  renderer->render(root);
+  renderer->render(root);  // keeps the frame
+  const Image unpoked = renderer->read();
+  const std::vector<float> unpokedDepth = depthOf(*renderer);
+  const std::vector<Poke> pokes = {
+      {0, 0, false},    {639, 479, false}, {320, 101, false}, {320, 102, false}, {5, 240, false},
+      {320, 240, true}, {0, 479, true},    {639, 0, true},    {400, 300, false}, {330, 250, false},
+  };
+  GlCallCounter calls;
+  for (const Poke& where : pokes) {
+    const std::string name = "pixel " + std::to_string(where.x) + ", " + std::to_string(where.y) +
+                             (where.depthOnly ? ", its depth" : ", its colour");
+    poke = where;
+    calls.reset();
+    renderer->render(root);
+    EXPECT_EQ(calls.draws(), 1) << name << ": composited again";
+    const Image poked = renderer->read();
+    EXPECT_TRUE(samePixels(poked, firstPokedFrame(poke))) << name;
+    poke.reset();
+    calls.reset();
+    renderer->render(root);
+    EXPECT_EQ(calls.draws(), 1) << name << " put back: composited again";
+    // A changed depth is traced again, and the frame after that (this one) is part of a
+    // motion, traced at movingResolution: the still frame after it is the full picture.
+    if (!where.depthOnly) EXPECT_TRUE(samePixels(renderer->read(), unpoked)) << name << " put back";
+    renderer->render(root);
+    EXPECT_TRUE(samePixels(renderer->read(), unpoked)) << name << " put back, still";
+    EXPECT_EQ(depthOf(*renderer), unpokedDepth) << name << " put back, still";
+  }
+  renderer->render(root);
+  calls.reset();
+  renderer->render(root);
+  EXPECT_EQ(calls.draws(), 0) << "still";
+  EXPECT_EQ(calls.blits(), 1) << "still";
+  EXPECT_TRUE(samePixels(renderer->read(), unpoked)) << "still";
   renderer.reset();
   root->unref();
 }
