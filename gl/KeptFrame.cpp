@@ -99,9 +99,10 @@ bool KeptFrame::equalsFramebuffer(Buffer buffer, const std::vector<unsigned char
   bool equal =
       bytes.size() == packedSize(layout_.viewport[2], layout_.viewport[3], transfer(buffer).bytes);
   // A difference stops the reading.
+  const std::size_t used = rowBytes(buffer);
   if (equal)
     forEachBand(buffer, bytes, [&](int, const unsigned char* read, const unsigned char* other) {
-      equal = std::memcmp(read, other, rowBytes(buffer)) == 0;
+      equal = std::memcmp(read, other, used) == 0;
       return equal;
     });
   return equal;
