@@ -22,5 +22,12 @@ struct CameraRayContext : RTCIntersectContext {
 // surface a camera ray meets into its CameraRayContext, passing over it.
 void cameraFilter(const RTCFilterFunctionNArguments* args);
 
+// The coverage of a triangle of corner alphas `alphas` (textured: Sampled), as cameraFilter
+// takes it. A point's alpha is w a0 + u a1 + v a2 in floats, with Embree's barycentrics within
+// a few units of rounding of [0, 1]: it stays within a relative 1e-6 of the corners' range, so
+// a range clear of the thresholds by 1e-4 decides every point as its interpolated alpha would.
+// Corners all exactly 0 interpolate to 0.
+Coverage coverageOf(const float alphas[3], bool textured);
+
 }  // namespace detail
 }  // namespace ivshadow

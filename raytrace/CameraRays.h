@@ -36,18 +36,39 @@ class IVSHADOW_INTERNAL CameraRays {
              int viewportHeight = 0);
 
   CameraRay ray(int x, int y) const;
+  // The rays of `count` neighbouring pixels of row y from column x on, into `out`: ray(x + i,
+  // y) each, computed inline (an exported member is called through the PLT, a call a ray).
+  void rays(int x, int y, int count, CameraRay* out) const;
   // The ray through normalised device coordinates (nx, ny).
   CameraRay rayAt(float nx, float ny) const;
   // Where a ray ending at window depth `limit` ends: its parameter (1 and above: the far plane).
-  float end(const CameraRay& ray, float limit) const;
+  // Inline, as windowDepth and offsetDepth without an offset: each is asked once a pixel, and
+  // an exported member is otherwise called through the PLT.
+  float end(const CameraRay& ray, float limit) const {
+    if (!(limit < 1.0f)) return ray.last;  // the far plane clips as in GL
+    return endBefore(ray, limit);
+  }
   // The window depth of the point at parameter `t` along a ray.
-  float windowDepth(const CameraRay& ray, float t) const;
+  float windowDepth(const CameraRay& ray, float t) const {
+    const glm::vec3 p = ray.origin + t * ray.direction;
+    // The z of SbDPMatrix::multVecMatrix alone, in its order: one division where the point
+    // needs three.
+    const Rows& m = worldToClip_;
+    const double x = p.x, y = p.y, z = p.z;
+    const double w = x * m[0][3] + y * m[1][3] + z * m[2][3] + m[3][3];
+    const double depth = (x * m[0][2] + y * m[1][2] + z * m[2][2] + m[3][2]) / w;
+    const float window = float(0.5 * depth + 0.5);
+    return window < 0.0f ? 0.0f : window > 1.0f ? 1.0f : window;
+  }
   // The window depth at parameter `t` of a ray meeting a face of geometric normal `normal`,
   // offset as GL offsets the face under SoPolygonOffset in `buffer` (`factor` times its depth
   // slope plus `units` times the buffer's resolution; both 0: none), so that lines drawn on it
   // after the picture stay in front of it (a cube's lower edges vanished under TRACER).
   float offsetDepth(const CameraRay& ray, float t, const glm::vec3& normal, float factor,
-                    float units, const DepthBuffer& buffer) const;
+                    float units, const DepthBuffer& buffer) const {
+    if (factor == 0.0f && units == 0.0f) return windowDepth(ray, t);
+    return offsetDepthOf(ray, t, normal, factor, units, buffer);
+  }
   // Where the next pixel's rays, across and up, meet the plane through `point` with normal
   // `normal`, less `point`: the pixel's footprint on the surface (ray differentials), from
   // which GL's texture level of detail follows. Infinite where a neighbour's ray runs along
@@ -56,7 +77,11 @@ class IVSHADOW_INTERNAL CameraRays {
                                      const glm::vec3& normal) const;
 
  private:
-  void clip(CameraRay& ray) const;
+  // end() before the far plane.
+  float endBefore(const CameraRay& ray, float limit) const;
+  // offsetDepth() with an offset.
+  float offsetDepthOf(const CameraRay& ray, float t, const glm::vec3& normal, float factor,
+                      float units, const DepthBuffer& buffer) const;
   // How fast the window depth of the plane through `point` with normal `normal` changes from
   // `ray`'s viewport pixel to the next, across or up, the larger (GL's m in glPolygonOffset);
   // 1, the whole depth range, where the plane is seen edge-on.

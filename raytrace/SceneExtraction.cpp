@@ -378,6 +378,8 @@ void triangle(void* user, SoCallbackAction* action, const SoPrimitiveVertex* v1,
     data.positions.push_back(world[i]);
   }
   out.geometricNormal = glm::cross(world[1] - world[0], world[2] - world[0]);
+  const float alphas[3] = {out.colour[0].a, out.colour[1].a, out.colour[2].a};
+  out.coverage = detail::coverageOf(alphas, out.texture >= 0);
   data.triangles.push_back(out);
 }
 

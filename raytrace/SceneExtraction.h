@@ -85,6 +85,12 @@ struct Material {
   }
 };
 
+// What a triangle's colour alone makes of every point of it, decided once it is read
+// (CameraFilter.h's coverageOf) rather than for every hit a camera ray meets: Sampled where a
+// texture takes part or the corners' alphas come near a threshold, and each point's interpolated
+// alpha decides.
+enum class Coverage : std::uint8_t { Sampled, Transparent, Opaque, Clear };
+
 struct Triangle {
   glm::vec3 normal[3];
   glm::vec4 colour[3];
@@ -105,6 +111,7 @@ struct Triangle {
   // Lit per pixel, as a group's or a peeling separator's shading program lights it (else per
   // vertex, as Coin's fixed-function GL does): inside a group or a SoPeelingSeparator.
   bool perPixel = false;
+  Coverage coverage = Coverage::Sampled;
   std::uint32_t shape = 0;
 };
 

@@ -6,6 +6,7 @@
 #include "raytrace/CasterScene.h"
 #include "raytrace/CastingLight.h"
 #include "raytrace/EmbreeHandles.h"
+#include "raytrace/HitOrder.h"
 #include "raytrace/LightEquation.h"
 #include "raytrace/ParallelRows.h"
 #include "raytrace/RayRange.h"
@@ -38,9 +39,11 @@ namespace ivshadow {
 namespace {
 
 using detail::CameraRayContext;
+using detail::dropFrom;
 using detail::Extraction;
 using detail::Group;
 using detail::imageOf;
+using detail::inDepthOrder;
 using detail::Light;
 using detail::LightType;
 using detail::Material;
@@ -137,9 +140,10 @@ class Tracer {
       const Triangle& tri = data_.triangles[hit.primitive];
       if (metBefore(hits, i)) continue;
       const glm::vec3 position = ray.origin + hit.t * ray.direction;
-      const PendingShade& shade =
-          prepare(tri, hit, position, ray.direction,
-                  levelOfDetail(data_, cameraRays_, ray, tri, position), rays, row);
+      // Most surfaces have no texture: no call for its level of detail.
+      const float lod =
+          tri.texture >= 0 ? levelOfDetail(data_, cameraRays_, ray, tri, position) : 0.0f;
+      const PendingShade& shade = prepare(tri, hit, position, ray.direction, lod, rays, row);
       transmitted *= 1.0f - shade.opacity;
       if (transmitted <= 0.0f) break;
     }
@@ -175,7 +179,11 @@ class Tracer {
                        std::vector<Hit>* hits, float* depths,
                        void (*intersect)(const int*, RTCScene, RTCIntersectContext*,
                                          Packet*)) const {
-    Packet packet{};
+    // Lanes past `count` are zeroed, as Embree loads whole vectors; a full packet (every one
+    // but a row's last) has every field Embree reads written below, and clearing its kilobyte
+    // for every packet showed in a profile of the moving camera's trace.
+    Packet packet;
+    if (count < Width) packet = Packet{};
     alignas(64) int valid[Width] = {};  // Embree reads the mask as one vector
     CameraRayContext context;
     rtcInitIntersectContext(&context);
@@ -192,9 +200,12 @@ class Tracer {
       packet.ray.dir_z[i] = rays[i].direction.z;
       packet.ray.tnear[i] = rays[i].first;
       packet.ray.tfar[i] = cameraRays_.end(rays[i], limits[i]);
+      packet.ray.time[i] = 0.0f;
       packet.ray.mask[i] = 0xFFFFFFFFu;
       packet.ray.id[i] = unsigned(i);
+      packet.ray.flags[i] = 0u;
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
       valid[i] = embreeTakesRay(rays[i].origin, rays[i].direction) &&
                          packet.ray.tnear[i] <= packet.ray.tfar[i]
                      ? -1
@@ -202,23 +213,23 @@ class Tracer {
     }
     intersect(valid, scene_, &context, &packet);
     for (int i = 0; i < count; ++i) {
+      std::vector<Hit>& found = hits[i];
       const bool opaque = packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
-      inDepthOrder(hits[i], opaque,
-                   Hit{packet.ray.tfar[i], packet.hit.primID[i], packet.hit.u[i], packet.hit.v[i]});
-      depths[i] = opaque ? opaqueDepth(rays[i], hits[i].back()) : limits[i];
+      const float nearest = packet.ray.tfar[i];
+      if (opaque) dropFrom(found, nearest);
+      inDepthOrder(found);
+      if (!opaque) {
+        depths[i] = limits[i];
+        continue;
+      }
+      // Written in place, as in cameraFilter.
+      Hit& hit = found.emplace_back();
+      hit.t = nearest;
+      hit.primitive = packet.hit.primID[i];
+      hit.u = packet.hit.u[i];
+      hit.v = packet.hit.v[i];
+      depths[i] = opaqueDepth(rays[i], hit);
     }
-  }
-
-  // The transparent surfaces a ray collected, put in exact depth order (coincident ones in the
-  // order Coin traversed them) and ended at the opaque surface `nearest` where `opaque`.
-  static void inDepthOrder(std::vector<Hit>& hits, bool opaque, const Hit& nearest) {
-    hits.erase(std::remove_if(hits.begin(), hits.end(),
-                              [&](const Hit& h) { return opaque && h.t >= nearest.t; }),
-               hits.end());
-    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
-      return a.t != b.t ? a.t < b.t : a.primitive < b.primitive;
-    });
-    if (opaque) hits.push_back(nearest);
   }
 
   // Every surface along origin + t direction, tnear < t < tfar, into `hits` in exact depth
@@ -530,7 +541,7 @@ void shadeSurfaces(const Tracer& tracer, int y, int width, const float* limits, 
   for (int x = 0; x < width; x += kMaxPacket) {
     const int count = std::min(kMaxPacket, width - x);
     CameraRay cameraRays[kMaxPacket];
-    for (int i = 0; i < count; ++i) cameraRays[i] = tracer.cameraRays().ray(x + i, y);
+    tracer.cameraRays().rays(x, y, count, cameraRays);
     if (reuse) {
       for (int i = 0; i < count; ++i) {
         const std::size_t at = std::size_t(x + i);
