@@ -277,47 +277,57 @@ class Tracer {
     shade.rgb = glm::vec3(sample.colour);
     shade.alpha = sample.colour.a;
     shade.texel = sample.texel;
-    if (tri.lit) {
-      bool front = glm::dot(tri.geometricNormal, rayDirection) < 0.0f;
-      if (tri.clockwise) front = !front;
-      const float side = tri.twoSided && !front ? -1.0f : 1.0f;
-      const float w = 1.0f - hit.u - hit.v;
-      if (tri.perPixel) {
-        const glm::vec3 normal = w * tri.normal[0] + hit.u * tri.normal[1] + hit.v * tri.normal[2];
-        shade.rgb = lighting(tri, side * normal, position, glm::vec3(sample.colour), rays, row);
-        shade.clampLit = true;
-      } else {
-        // Coin's fixed-function GL: each corner's light, clamped there (nothing casts outside
-        // groups).
-        const float weights[3] = {w, hit.u, hit.v};
-        shade.rgb = glm::vec3(0.0f);
-        for (std::size_t i = 0; i < 3; ++i) {
-          const glm::vec3& corner =
-              data_.positions[std::size_t(&tri - data_.triangles.data()) * 3 + i];
-          shade.rgb += weights[i] * glm::clamp(lighting(tri, side * tri.normal[i], corner,
-                                                        glm::vec3(tri.colour[i]), rays, row),
-                                               0.0f, 1.0f);
-        }
-      }
-    }
+    if (tri.lit) lightSurface(tri, hit, position, rayDirection, sample, rays, row, shade);
     // The texture's models take opacity from the colour's and the texel's alphas alone.
     const float alpha =
         texturedColour(glm::vec4(0.0f, 0.0f, 0.0f, shade.alpha), shade.texel, shade.image).a;
     shade.opacity = isOpaque(alpha) ? 1.0f : glm::clamp(alpha, 0.0f, 1.0f);
     shade.material = tri.material;
     const Material& material = data_.materials[std::size_t(tri.material)];
-    if (material.fogType != 0) {
-      SbVec3f eye;
-      viewing_.multVecMatrix(SbVec3f(position.x, position.y, position.z), eye);
-      const float z = std::fabs(eye[2]);
-      const float fog =
-          material.fogType == 1   ? (material.fogEnd - z) / (material.fogEnd - material.fogStart)
-          : material.fogType == 2 ? std::exp(-material.fogDensity * z)
-                                  : std::exp(-material.fogDensity * material.fogDensity * z * z);
-      shade.fog = glm::clamp(fog, 0.0f, 1.0f);
-    }
+    if (material.fogType != 0) shade.fog = fogWeight(material, position);
     shade.termsEnd = std::uint32_t(row.terms.size());
     return shade;
+  }
+
+  // prepare()'s lighting of a lit surface into shade.rgb. Apart, not inlined: the call of
+  // prepare() with it, its registers saved and put back for every surface, was about a fifth
+  // of a moving camera's shading through unlit glass.
+  [[gnu::noinline]] void lightSurface(const Triangle& tri, const Hit& hit,
+                                      const glm::vec3& position, const glm::vec3& rayDirection,
+                                      const SurfaceSample& sample, RayCounts& rays, RowShading& row,
+                                      PendingShade& shade) const {
+    bool front = glm::dot(tri.geometricNormal, rayDirection) < 0.0f;
+    if (tri.clockwise) front = !front;
+    const float side = tri.twoSided && !front ? -1.0f : 1.0f;
+    const float w = 1.0f - hit.u - hit.v;
+    if (tri.perPixel) {
+      const glm::vec3 normal = w * tri.normal[0] + hit.u * tri.normal[1] + hit.v * tri.normal[2];
+      shade.rgb = lighting(tri, side * normal, position, glm::vec3(sample.colour), rays, row);
+      shade.clampLit = true;
+      return;
+    }
+    // Coin's fixed-function GL: each corner's light, clamped there (nothing casts outside
+    // groups).
+    const float weights[3] = {w, hit.u, hit.v};
+    shade.rgb = glm::vec3(0.0f);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const glm::vec3& corner = data_.positions[std::size_t(&tri - data_.triangles.data()) * 3 + i];
+      shade.rgb += weights[i] * glm::clamp(lighting(tri, side * tri.normal[i], corner,
+                                                    glm::vec3(tri.colour[i]), rays, row),
+                                           0.0f, 1.0f);
+    }
+  }
+
+  // The weight of a surface's own colour at `position` against its material's fog.
+  [[gnu::noinline]] float fogWeight(const Material& material, const glm::vec3& position) const {
+    SbVec3f eye;
+    viewing_.multVecMatrix(SbVec3f(position.x, position.y, position.z), eye);
+    const float z = std::fabs(eye[2]);
+    const float fog =
+        material.fogType == 1   ? (material.fogEnd - z) / (material.fogEnd - material.fogStart)
+        : material.fogType == 2 ? std::exp(-material.fogDensity * z)
+                                : std::exp(-material.fogDensity * material.fogDensity * z * z);
+    return glm::clamp(fog, 0.0f, 1.0f);
   }
 
   // A surface's colour once its shadow rays (its terms from `termsBegin` on) are answered:
