@@ -515,4 +515,27 @@ bool SceneTracer::updateLights(const SoPath* path) {
   return true;
 }
 
+// What the scene read holds.
+bool SceneTracer::viewDependent() const {
+  return data_->extraction.fogFollowsView || data_->extraction.texCoordsFollowView;
+}
+bool SceneTracer::haveCamera() const {
+  return data_->extraction.haveCamera;
+}
+const SbMatrix& SceneTracer::viewing() const {
+  return data_->extraction.viewing;
+}
+const SbMatrix& SceneTracer::projection() const {
+  return data_->extraction.projection;
+}
+std::size_t SceneTracer::triangles() const {
+  return data_->extraction.triangles.size();
+}
+const std::vector<std::string>& SceneTracer::untracedShapes() const {
+  return data_->extraction.untracedShapes;
+}
+const std::vector<std::vector<int>>& SceneTracer::untracedPaths() const {
+  return data_->extraction.untracedPaths;
+}
+
 }  // namespace ivshadow

@@ -517,10 +517,6 @@ class Tracer {
 
 }  // namespace
 
-bool SceneTracer::viewDependent() const {
-  return data_->extraction.fogFollowsView || data_->extraction.texCoordsFollowView;
-}
-
 // One worker's working memory: kept from trace to trace, as a frame's rows otherwise grew their
 // vectors from nothing again, and on cache lines of its own, as neighbouring workers wrote
 // into the same lines (the vectors' ends).
@@ -624,25 +620,6 @@ std::unique_ptr<SceneTracer> SceneTracer::fromPath(const SoPath* path, int width
       new SceneTracer(extract(width, height, [path](SoCallbackAction& action) {
         action.apply(const_cast<SoPath*>(path));
       })));
-}
-
-bool SceneTracer::haveCamera() const {
-  return data_->extraction.haveCamera;
-}
-const SbMatrix& SceneTracer::viewing() const {
-  return data_->extraction.viewing;
-}
-const SbMatrix& SceneTracer::projection() const {
-  return data_->extraction.projection;
-}
-std::size_t SceneTracer::triangles() const {
-  return data_->extraction.triangles.size();
-}
-const std::vector<std::string>& SceneTracer::untracedShapes() const {
-  return data_->extraction.untracedShapes;
-}
-const std::vector<std::vector<int>>& SceneTracer::untracedPaths() const {
-  return data_->extraction.untracedPaths;
 }
 
 bool SceneTracer::trace(const TraceOptions& options, TracedPixels& out) const {
