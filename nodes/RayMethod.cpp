@@ -116,6 +116,11 @@ std::string RayMethod::capture(SoGLRenderAction* action, const GroupContents& co
   RayShadowPass& rays = *pass_;
   std::vector<SurfaceLayer>& layers = surfaces_;
   std::size_t layerCount = 0;
+  // When the capture's state pops, Coin's depth element sends the depth function it believes
+  // in force (LEQUAL unless a node set one), which need not be GL's: FreeCAD draws with
+  // GL_LESS set directly, and draws a selected face's highlight before drawing the whole shape
+  // again, which LEQUAL let over it. GL's depth state is put back as the capture found it.
+  const GlStateScope depth(GlStateScope::kDepth);
   state->push();
   // Transparent shapes drawn at once and unblended, where the capture program sees them.
   overrideTransparencyType(state, SoGLRenderAction::NONE);

@@ -1,5 +1,6 @@
 #include "nodes/ShadowGroupElement.h"
 
+#include "nodes/MaterialSyncElement.h"
 #include "nodes/TexGenWatchElement.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -15,6 +16,8 @@ void ShadowGroupElement::initClass() {
   SO_ENABLE(SoGLRenderAction, ShadowGroupElement);
   // The shapes below a group or a peeling separator need it (TexGenWatchElement.h).
   TexGenWatchElement::initClass();
+  // So does the material they are drawn with (MaterialSyncElement.h).
+  MaterialSyncElement::initClass();
 }
 
 ShadowGroupElement::~ShadowGroupElement() = default;

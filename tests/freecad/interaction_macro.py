@@ -162,10 +162,36 @@ def run():
     # With renderer RASTER GL draws the faces too, FreeCAD's highlight of a face with them:
     # the selected top face turns green, the pre-selected one yellow.
     shadows.enable(view, light_direction=LIGHT, renderer="RASTER")
+    # The box's two visible sides, at their middles: x = 30 and y = 0.
+    visible_sides = [pixel_of(view, (30, 15, 15), size), pixel_of(view, (15, 0, 15), size)]
+    raster_plain = live("live_unselected_raster")
     Gui.Selection.addSelection(document.Box, "Face6")
     raster_selected = live("live_selected_raster")
     check("selection highlight drawn (face, RASTER)", greenish(rgb(raster_selected, top)),
           face=rgb(raster_selected, top))
+    # Issue 38: FreeCAD draws the selected face with the selection colour as its emissive colour,
+    # then the box's other faces in the same node; the group's programs kept the green for
+    # them (Mesa, nodes/MaterialSyncElement.h), and the sides read (36, 214, 36). They must
+    # look as they do with nothing selected: the same picture drawn again, within the 3 levels
+    # the test allows any picture drawn twice.
+    def unchanged(picture, pixels):
+        return all(max(abs(a - b) for a, b in zip(rgb(picture, p), rgb(raster_plain, p))) <= 3
+                   for p in pixels)
+
+    check("selection highlight only on the selected face (RASTER)",
+          unchanged(raster_selected, visible_sides) and
+          not any(greenish(rgb(raster_selected, p)) for p in visible_sides),
+          sides=[rgb(raster_selected, p) for p in visible_sides],
+          unselected=[rgb(raster_plain, p) for p in visible_sides])
+    Gui.Selection.clearSelection()
+    # A face the view does not show (Face1, x = 0, behind the box) selected: FreeCAD draws it
+    # green behind the others, and every visible face keeps its colour.
+    Gui.Selection.addSelection(document.Box, "Face1")
+    raster_hidden = live("live_hidden_face_selected_raster")
+    check("a hidden face selected leaves the visible ones unchanged (RASTER)",
+          unchanged(raster_hidden, visible_sides + [top]),
+          faces=[rgb(raster_hidden, p) for p in visible_sides + [top]],
+          unselected=[rgb(raster_plain, p) for p in visible_sides + [top]])
     Gui.Selection.clearSelection()
     mouse(widget, "move", logical(widget, top))
     raster_preselected = live("live_preselected_raster")
