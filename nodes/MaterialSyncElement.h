@@ -13,15 +13,16 @@ namespace ivshadow {
 // takes such a call, made while the previous primitive's vertices are still buffered, as a
 // per-vertex attribute that only its fixed-function pipeline reads (gl/CurrentMaterial.h): the
 // programs kept the material of before. FreeCAD's SoBrepFaceSet draws a selected face with the
-// selection colour as its emissive colour, pops the state and draws the other faces in the
-// same node, so under the group every face of the shape came out green; two shapes with
+// selection colour as its emissive colour, pops the state and draws the whole shape again in
+// the same node, so under the group every face of the shape came out green; two shapes with
 // materials of their own, drawn one after the other, can meet it too. Coin gives no hook per
 // shape, so this element takes the place of Coin's SoGLLazyElement (SoType::overrideType, as
 // TexGenWatchElement): it behaves as Coin's and, whenever a node sets those parts of the
-// material or a pop restores them while the plugin's programs shade the shapes, sends them at
-// once and has GL take them as current (takeMaterialAsCurrent), so that the shape's own send
-// finds GL up to date. A render cache being recorded meanwhile is invalidated: its replay
-// would send the material without the flush. Elsewhere, and on a GL that keeps the material
+// material or a pop restores them while the plugin's programs shade the shapes, has GL draw
+// what it buffered (flushBufferedVertices) and sends them at once, into an empty buffered
+// format that the next primitive takes as current; the shape's own send then finds GL up to
+// date. A render cache being recorded meanwhile is invalidated: its replay would send the
+// material without the flush. Elsewhere, and on a GL that keeps the material
 // current by itself, it only compares the material. Registered by
 // ShadowGroupElement::initClass; an action's state made before keeps Coin's element until the
 // action's next apply (Coin makes the state anew once elements were enabled since, as the
