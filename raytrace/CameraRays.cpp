@@ -69,38 +69,54 @@ struct Frustum {
   double reach;
 };
 
-// GL draws a point whose clip coordinates have w > 0 and -w <= z <= w. Along the ray they are
+// GL draws a point whose clip coordinates have w > 0 and -w <= z <= w. Along a ray they are
 // linear in t: each condition keeps an interval of it. Any camera's near plane gives [0, 1];
 // a perspective camera with a negative nearDistance keeps nothing in front of it, as GL (and
-// so Coin) draws nothing.
-[[gnu::always_inline]] inline void clip(const Rows& worldToClip, CameraRay& ray) {
-  const glm::vec3 end = ray.origin + ray.direction;
-  // Only z and w take part.
-  const glm::dvec2 a = zw(worldToClip, ray.origin.x, ray.origin.y, ray.origin.z);
-  const glm::dvec2 b = zw(worldToClip, end.x, end.y, end.z);
-  double first = 0.0, last = 1.0;
-  // value(t) = p + t (q - p) >= 0, within a rounding slack of the values' size. The bound's
-  // quotient moves `first` only where p < -slack (it is at most 0 otherwise) and `last` only
-  // where q < -slack (at least 1 otherwise): a ray between the near and far planes, every
-  // camera ray of most pictures, divides nothing.
-  const auto keep = [&](double p, double q) {
-    const double slack = 1e-6 * (std::fabs(p) + std::fabs(q));
-    if (q - p > 0.0) {
-      if (p < -slack) first = std::max(first, (-slack - p) / (q - p));
-    } else if (q - p < 0.0) {
-      if (q < -slack) last = std::min(last, (-slack - p) / (q - p));
-    } else if (p < -slack) {
-      last = -1.0;
-    }
-  };
-  keep(a[1], b[1]);
-  keep(a[1] + a[0], b[1] + b[0]);
-  keep(a[1] - a[0], b[1] - b[0]);
-  ray.first = float(first);
-  ray.last = float(last);
+// so Coin) draws nothing. The `count` rays (at most kMostClipped) are clipped together, each
+// bound chosen without a branch, so that the compiler computes neighbouring rays' in one
+// vector: one ray at a time, with a branch a bound, this was half the rays' time.
+constexpr int kMostClipped = 16;
+[[gnu::always_inline]] inline void clip(const Rows& m, CameraRay* rays, int count) {
+  // Only z and w take part: those of the ray's start and end.
+  double az[kMostClipped], aw[kMostClipped], bz[kMostClipped], bw[kMostClipped];
+  for (int i = 0; i < count; ++i) {
+    const glm::vec3 start = rays[i].origin;
+    const glm::vec3 end = rays[i].origin + rays[i].direction;
+    const glm::dvec2 a = zw(m, start.x, start.y, start.z);
+    const glm::dvec2 b = zw(m, end.x, end.y, end.z);
+    az[i] = a[0];
+    aw[i] = a[1];
+    bz[i] = b[0];
+    bw[i] = b[1];
+  }
+  float firsts[kMostClipped], lasts[kMostClipped];
+  for (int i = 0; i < count; ++i) {
+    double first = 0.0, last = 1.0;
+    // value(t) = p + t (q - p) >= 0, within a rounding slack of the values' size: where it
+    // rises, t from where it crosses -slack on; where it falls, t up to there; where it is
+    // flat and below, nothing.
+    const auto keep = [&](double p, double q) {
+      const double slack = 1e-6 * (std::fabs(p) + std::fabs(q));
+      const double rise = q - p;
+      const double crossing = (-slack - p) / rise;
+      const bool below = p < -slack;
+      first = rise > 0.0 && below && first < crossing ? crossing : first;
+      last = rise < 0.0 && q < -slack && crossing < last ? crossing : last;
+      last = !(rise > 0.0) && !(rise < 0.0) && below ? -1.0 : last;
+    };
+    keep(aw[i], bw[i]);
+    keep(aw[i] + az[i], bw[i] + bz[i]);
+    keep(aw[i] - az[i], bw[i] - bz[i]);
+    firsts[i] = float(first);
+    lasts[i] = float(last);
+  }
+  for (int i = 0; i < count; ++i) {
+    rays[i].first = firsts[i];
+    rays[i].last = lasts[i];
+  }
 }
 
-// A pixel's ray from the near plane towards the far one, clipped as GL clips (CameraRays::rayAt).
+// A pixel's ray from the near plane towards the far one, before clip() (CameraRays::rayAt).
 // Here, not in the class: an exported member is called through the PLT and never inlined,
 // and a picture's rows call this once a pixel.
 [[gnu::always_inline]] inline CameraRay rayThrough(const Frustum& frustum, float nx, float ny) {
@@ -132,7 +148,6 @@ struct Frustum {
   }
   ray.origin = glm::vec3(origin);
   ray.direction = glm::vec3(end - origin);
-  clip(frustum.worldToClip, ray);
   return ray;
 }
 
@@ -165,12 +180,18 @@ CameraRay CameraRays::ray(int x, int y) const {
 void CameraRays::rays(int x, int y, int count, CameraRay* out) const {
   const Frustum frustum{clipToWorld_, worldToClip_, eye_, reach_};
   const float ny = 1.0f - (float(y) + 0.5f) / float(height_) * 2.0f;
-  for (int i = 0; i < count; ++i)
-    out[i] = rayThrough(frustum, (float(x + i) + 0.5f) / float(width_) * 2.0f - 1.0f, ny);
+  for (int from = 0; from < count; from += kMostClipped) {
+    const int clipped = std::min(kMostClipped, count - from);
+    for (int i = from; i < from + clipped; ++i)
+      out[i] = rayThrough(frustum, (float(x + i) + 0.5f) / float(width_) * 2.0f - 1.0f, ny);
+    clip(worldToClip_, out + from, clipped);
+  }
 }
 
 CameraRay CameraRays::rayAt(float nx, float ny) const {
-  return rayThrough(Frustum{clipToWorld_, worldToClip_, eye_, reach_}, nx, ny);
+  CameraRay ray = rayThrough(Frustum{clipToWorld_, worldToClip_, eye_, reach_}, nx, ny);
+  clip(worldToClip_, &ray, 1);
+  return ray;
 }
 
 float CameraRays::endBefore(const CameraRay& ray, float limit) const {
