@@ -83,7 +83,8 @@ DEFAULTS = {
 _TRANSPARENCY = {"Exact": "PEELED", "FreeCAD": "COIN_BLENDING"}
 _LIGHT_TYPES = {"Directional": "DeepShadowDirectionalLight", "Point": "DeepShadowLight"}
 
-_NAMES = {"dragger": "IvShadowLightDragger", "group": "IvShadowGroup", "light": "IvShadowLight", "ground": "IvShadowGround",
+_NAMES = {"dragger": "IvShadowLightDragger", "lamp_dragger": "IvShadowLampDragger",
+          "group": "IvShadowGroup", "light": "IvShadowLight", "ground": "IvShadowGround",
           "model": "IvShadowModel", "host_lights": "IvShadowHostLights",
           "highlight": "IvShadowHighlight"}
 
@@ -289,6 +290,17 @@ class _Shadows:
         self.turning = False
         self.dragger_sensor = coin.SoFieldSensor(self._dragger_turned, None)
         self.dragger_sensor.setPriority(0)
+        # A point light's dragger (Coin's SoPointLightDragger, moved along its three axes):
+        # its place is the lamp's. Coin's dragger is about 2 units across; a scale sizes it
+        # after the model, so its translation is the lamp's place divided by that scale.
+        self.lamp_dragger_root = coin.SoSeparator()
+        self.lamp_dragger_root.setName(_NAMES["lamp_dragger"])
+        self.lamp_dragger_scale = coin.SoScale()
+        self.lamp_dragger = coin.SoPointLightDragger()
+        self.lamp_dragger_root.addChild(self.lamp_dragger_scale)
+        self.lamp_dragger_root.addChild(self.lamp_dragger)
+        self.lamp_dragger_sensor = coin.SoFieldSensor(self._lamp_dragged, None)
+        self.lamp_dragger_sensor.setPriority(0)
 
     # -- putting the group in and taking it out -------------------------------------------------
 
@@ -326,15 +338,20 @@ class _Shadows:
         _observer.watch()
         self.highlight.update()
 
+    def sensors(self):
+        """The sensors this object attaches, to be stopped with it."""
+        return (self.selection_sensor, self.model_sensor, self.top_sensor, self.dragger_sensor,
+                self.lamp_dragger_sensor)
+
     def remove(self):
-        for sensor in (self.selection_sensor, self.model_sensor, self.top_sensor,
-                       self.dragger_sensor):
+        for sensor in self.sensors():
             sensor.detach()
         self.highlight.stop()
         selection = self.selection
-        index = selection.findChild(self.dragger_root)
-        if index >= 0:
-            selection.removeChild(index)
+        for root in (self.dragger_root, self.lamp_dragger_root):
+            index = selection.findChild(root)
+            if index >= 0:
+                selection.removeChild(index)
         index = selection.findChild(self.group)
         if index >= 0:
             selection.removeChild(index)
@@ -504,19 +521,46 @@ class _Shadows:
         return tuple(c - d * distance for c, d in zip(centre, self.direction))
 
     def _place_light(self):
-        self.light.location.setValue(coin.SbVec3f(*self._light_place()))
+        place = self._light_place()
+        self.light.location.setValue(coin.SbVec3f(*place))
+        self._move_lamp_dragger(place)
 
     def _show_dragger(self):
-        index = self.selection.findChild(self.dragger_root)
-        # The dragger turns a directional light; a point light is placed by the preferences.
-        shown = self.settings["dragger"] and not self._is_point()
-        if shown and index < 0:
-            self.selection.insertChild(self.dragger_root,
-                                       self.selection.findChild(self.host_lights) + 1)
-            self.dragger_sensor.attach(self.dragger.rotation)
-        elif not shown and index >= 0:
-            self.dragger_sensor.detach()
-            self.selection.removeChild(index)
+        # The directional light's dragger turns it, the point light's moves it.
+        for root, sensor, field, shown in (
+                (self.dragger_root, self.dragger_sensor, self.dragger.rotation,
+                 self.settings["dragger"] and not self._is_point()),
+                (self.lamp_dragger_root, self.lamp_dragger_sensor, self.lamp_dragger.translation,
+                 self.settings["dragger"] and self._is_point())):
+            index = self.selection.findChild(root)
+            if shown and index < 0:
+                self.selection.insertChild(root, self.selection.findChild(self.host_lights) + 1)
+                sensor.attach(field)
+            elif not shown and index >= 0:
+                sensor.detach()
+                self.selection.removeChild(index)
+
+    def _move_lamp_dragger(self, place):
+        """The point light's dragger where the lamp is (not the other way round)."""
+        scale = self.lamp_dragger_scale.scaleFactor.getValue()[0]
+        self.turning = True
+        try:
+            self.lamp_dragger.translation.setValue(coin.SbVec3f(*(c / scale for c in place)))
+        finally:
+            self.turning = False
+
+    def _lamp_dragged(self, data, sensor):
+        # The user moved the lamp's dragger: the lamp follows, and the ground with its shadow;
+        # the place is kept as if enable(light_location=...) had named it.
+        if self.turning or not self._is_point():
+            return
+        scale = self.lamp_dragger_scale.scaleFactor.getValue()[0]
+        moved = self.lamp_dragger.translation.getValue().getValue()
+        self.location = tuple(float(c) * scale for c in moved)
+        self.light.location.setValue(coin.SbVec3f(*self.location))
+        if self.bounds is not None:
+            self._place_ground(self.bounds)
+        _store(self.document, self.direction, self.settings, self.location)
 
     def _turn_dragger(self):
         """The dragger's rotation from the light's direction (not the other way round)."""
@@ -546,6 +590,9 @@ class _Shadows:
             coin.SbVec3f((x0 + x1) / 2, (y0 + y1) / 2, z1 + 0.2 * extent))
         scale = 0.1 * extent
         self.dragger_place.scaleFactor.setValue(coin.SbVec3f(scale, scale, scale))
+        self.lamp_dragger_scale.scaleFactor.setValue(coin.SbVec3f(scale, scale, scale))
+        if self._is_point():
+            self._move_lamp_dragger(self._light_place())
 
     def _place_ground(self, bounds):
         x0, y0, z0, x1, y1, z1 = bounds
@@ -1065,8 +1112,7 @@ class _DocumentObserver:
             if state.document == name:
                 # The view goes with the document; only the sensors must stop (they would
                 # otherwise wake on nodes FreeCAD is about to destroy).
-                for sensor in (state.selection_sensor, state.model_sensor, state.top_sensor,
-                               state.dragger_sensor):
+                for sensor in state.sensors():
                     sensor.detach()
                 state.highlight.stop()
                 del _states[key]

@@ -1,6 +1,6 @@
 """FreeCAD macro of the add-on's interaction test (run by freecad_test.py inside FreeCAD 0.20's
 GUI): the live view against saveImage, picking, selection and pre-selection with shadows on,
-deleting and restoring an object, the light's dragger. The scene and the light are those of
+deleting and restoring an object, the lights' draggers. The scene and the light are those of
 shadows_macro.py (macro_common.make_scene); the renderer is AUTO, which on this machine's
 llvmpipe traces on the CPU.
 """
@@ -329,6 +329,41 @@ def run():
     shadows.enable(view, dragger=False)
     search.apply(view.getSceneGraph())
     check("dragger removed when turned off", search.getPath() is None)
+
+    # A point light's dragger (Coin's SoPointLightDragger, after a scale that sizes it): its
+    # place, the scale times its translation, is the lamp's. Moved as a drag writes its
+    # translation, to right above the box's centre, (15, 15, 120): the lamp follows, and so
+    # does the box's shadow. From the geometry: the segment from the plane point (33, 15, 0) to
+    # the lamp meets the box's top z = 30 at x = 28.5, inside it (in shadow); the one from
+    # (60, 15, 0) passes x = 30 at height 80, above the box, and no part is near it (lit).
+    shadows.enable(view, light_location=(15, 80, 80), dragger=True)
+    search.setName(coin.SbName("IvShadowLampDragger"))
+    search.apply(view.getSceneGraph())
+    path = search.getPath()
+    root = path.getTail() if path is not None else None
+    scale = root.getChild(0).scaleFactor.getValue()[0] if root is not None else None
+    lamp_dragger = root.getChild(1) if root is not None else None
+    place = [c * scale for c in lamp_dragger.translation.getValue().getValue()] \
+        if lamp_dragger is not None else None
+    # Float precision at the lamp's distance, about 100.
+    check("point light's dragger at the lamp",
+          place is not None and all(abs(a - b) < 1e-3 for a, b in zip(place, (15, 80, 80))),
+          place=place)
+    lamp_dragger.translation.setValue(coin.SbVec3f(15 / scale, 15 / scale, 120 / scale))
+    lamp = shadows.group(view).getChild(0).location.getValue().getValue()
+    moved = save(view, "saved_lamp_dragged", size)
+    in_shadow = rgb(moved, pixel_of(view, (33, 15, 0), size))
+    lit = rgb(moved, pixel_of(view, (60, 15, 0), size))
+    stored = shadows.stored_settings(document).get("light_location")
+    # The shadow under a quarter of the lit point, as in the other shadow checks.
+    check("moving the point light's dragger moves the lamp and its shadow",
+          all(abs(a - b) < 1e-3 for a, b in zip(lamp, (15, 15, 120))) and
+          grey(in_shadow) < 0.25 * grey(lit) and
+          stored is not None and all(abs(a - b) < 1e-3 for a, b in zip(stored, (15, 15, 120))),
+          lamp=list(lamp), shadow=in_shadow, lit=lit, stored=stored)
+    shadows.enable(view, light_direction=LIGHT, dragger=False)
+    search.apply(view.getSceneGraph())
+    check("point light's dragger removed when turned off", search.getPath() is None)
 
     # -- transparency: exact or FreeCAD's own look, from the preferences -------------------
     saved = shadows.settings_from_preferences()
