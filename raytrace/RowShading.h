@@ -42,6 +42,10 @@ struct RowShading {
   std::vector<CasterScene::Query> queries;
   std::vector<const CasterScene*> queryCasters;  // whose casters each query asks
   std::vector<glm::vec3> answers;
+  // Each pixel's composite (premultiplied rgb, transmittance) where it asked no shadow ray:
+  // made as its surfaces were shaded, which are then not kept in `shades`.
+  std::vector<glm::vec4> composites;
+  std::vector<std::uint8_t> composited;  // 1 where `composites` holds the pixel's
   // Answers every query of the row (into `answers`), each group's casters its own, in packets.
   void traceShadows();
   // Whether the row asks the shadow rays `keptQueries` asked, of the same casters: their
@@ -56,6 +60,8 @@ struct RowShading {
     terms.clear();
     queries.clear();
     queryCasters.clear();
+    composites.clear();
+    composited.clear();
   }
 
  private:

@@ -63,13 +63,6 @@ struct RayCounts {
   std::size_t bounce = 0;
 };
 
-// One pixel's composite (TracedPixels): premultiplied colour, transmittance, window depth.
-struct PixelResult {
-  glm::vec3 colour{0.0f};
-  float transmitted = 1.0f;
-  float depth = 1.0f;
-};
-
 class Tracer {
  public:
   Tracer(const Extraction& data, RTCScene scene, int packetWidth, const SbMatrix& viewing,
@@ -131,9 +124,13 @@ class Tracer {
   }
 
   // The `count` surfaces `hits` met along `ray`, front to back, shaded up to their shadows
-  // into `row` as one more pixel, as far as light gets through them.
+  // into `row` as one more pixel, as far as light gets through them. A pixel that asks no
+  // shadow ray is composited at once and its surfaces dropped, not kept in the row for
+  // resolve() to read back.
   void gather(const CameraRay& ray, const Hit* hits, std::size_t count, float depth,
               RayCounts& rays, RowShading& row) const {
+    const std::size_t begin = row.shades.size();
+    const std::size_t termsBefore = row.terms.size();
     float transmitted = 1.0f;
     for (std::size_t i = 0; i < count; ++i) {
       const Hit& hit = hits[i];
@@ -147,26 +144,37 @@ class Tracer {
       transmitted *= 1.0f - shade.opacity;
       if (transmitted <= 0.0f) break;
     }
+    const bool waits = row.terms.size() != termsBefore;
+    row.composites.push_back(waits ? glm::vec4(0.0f) : composite(row, begin, row.shades.size()));
+    row.composited.push_back(waits ? 0 : 1);
+    if (!waits) row.shades.resize(begin);
     row.pixelEnds.push_back(std::uint32_t(row.shades.size()));
     row.depths.push_back(depth);
   }
 
-  // Pixel `pixel` of `row`, its shadow rays answered: its surfaces finished and composited.
-  PixelResult resolve(const RowShading& row, std::size_t pixel) const {
-    PixelResult result;
-    result.depth = row.depths[pixel];
-    const std::size_t begin = pixel > 0 ? row.pixelEnds[pixel - 1] : 0;
-    for (std::size_t i = begin; i < row.pixelEnds[pixel]; ++i) {
-      const PendingShade& shade = row.shades[i];
-      const glm::vec3 colour = finish(shade, row, i > 0 ? row.shades[i - 1].termsEnd : 0u);
-      result.colour += result.transmitted * shade.opacity * colour;
-      result.transmitted *= 1.0f - shade.opacity;
-    }
-    result.transmitted = std::max(result.transmitted, 0.0f);
-    return result;
+  // Pixel `pixel` of `row`, its shadow rays answered: its surfaces finished and composited
+  // (TracedPixels: premultiplied rgb, the transmittance left).
+  glm::vec4 resolve(const RowShading& row, std::size_t pixel) const {
+    return row.composited[pixel] != 0
+               ? row.composites[pixel]
+               : composite(row, pixel > 0 ? row.pixelEnds[pixel - 1] : 0, row.pixelEnds[pixel]);
   }
 
  private:
+  // row.shades[begin, end) finished (their shadow rays answered, if any) and composited front
+  // to back: premultiplied rgb, and the transmittance left.
+  glm::vec4 composite(const RowShading& row, std::size_t begin, std::size_t end) const {
+    glm::vec3 colour(0.0f);
+    float transmitted = 1.0f;
+    for (std::size_t i = begin; i < end; ++i) {
+      const PendingShade& shade = row.shades[i];
+      colour +=
+          transmitted * shade.opacity * finish(shade, row, i > 0 ? row.shades[i - 1].termsEnd : 0u);
+      transmitted *= 1.0f - shade.opacity;
+    }
+    return glm::vec4(colour, std::max(transmitted, 0.0f));
+  }
+
   // The window depth GL tests what it draws after the picture against (CameraRays).
   float opaqueDepth(const CameraRay& ray, const Hit& hit) const {
     const Triangle& tri = data_.triangles[hit.primitive];
@@ -594,13 +602,13 @@ void answerShadows(bool reuse, SurfacesMet::Row* keptRow, WorkerMemory& own) {
 void writeRow(const Tracer& tracer, const RowShading& shades, int y, TracedPixels& out) {
   const std::size_t row = std::size_t(y) * std::size_t(out.width);
   for (int x = 0; x < out.width; ++x) {
-    const PixelResult p = tracer.resolve(shades, std::size_t(x));
+    const glm::vec4 p = tracer.resolve(shades, std::size_t(x));
     float* rgba = &out.rgba[(row + std::size_t(x)) * 4];
-    rgba[0] = p.colour.r;
-    rgba[1] = p.colour.g;
-    rgba[2] = p.colour.b;
-    rgba[3] = p.transmitted;
-    out.depth[row + std::size_t(x)] = p.depth;
+    rgba[0] = p.r;
+    rgba[1] = p.g;
+    rgba[2] = p.b;
+    rgba[3] = p.a;
+    out.depth[row + std::size_t(x)] = shades.depths[std::size_t(x)];
   }
 }
 
