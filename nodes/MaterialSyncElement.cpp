@@ -77,10 +77,12 @@ bool MaterialSyncElement::materialDiffers(const CoinState& other) const {
 
 void MaterialSyncElement::sync() const {
   // Actions that draw with GL but never enabled the plugin's element draw no shape with its
-  // programs.
+  // programs. The program is read without recording the plugin's element in a render cache
+  // being built: this also runs while the state pops, and recording it there made FreeCAD's
+  // saveImage draw nothing of the scene (freecad.addon_editing, its point light's picture).
   if (state_ == nullptr ||
       !state_->isElementEnabled(ShadowGroupElement::getClassStackIndex()) ||
-      ShadowGroupElement::program(state_) < 0 || !materialLagsBehindGlMaterial())
+      ShadowGroupElement::programUncached(state_) < 0 || !materialLagsBehindGlMaterial())
     return;
   // A render cache's replay would send the material without the flush: none records it.
   if (state_->isCacheOpen()) SoCacheElement::invalidate(state_);

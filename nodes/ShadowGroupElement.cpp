@@ -86,6 +86,10 @@ int ShadowGroupElement::program(SoState* state) {
   return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->program_;
 }
 
+int ShadowGroupElement::programUncached(SoState* state) {
+  return static_cast<const ShadowGroupElement*>(state->getConstElement(classStackIndex))->program_;
+}
+
 GroupShading* ShadowGroupElement::activeGroup(SoState* state) {
   return static_cast<const ShadowGroupElement*>(getConstElement(state, classStackIndex))->group_;
 }

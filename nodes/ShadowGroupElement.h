@@ -45,6 +45,10 @@ class IVSHADOW_INTERNAL ShadowGroupElement : public SoElement {
   // ScreenAlignedShapes draws text, images and markers by it.
   static void setProgram(SoState* state, int variant);
   static int program(SoState* state);
+  // The same, read without recording the element in a render cache being built: for another
+  // element that asks while the state pops (MaterialSyncElement), where recording it made
+  // FreeCAD's saveImage draw nothing of the scene.
+  static int programUncached(SoState* state);
 
  protected:
   ~ShadowGroupElement() override;
