@@ -1,6 +1,8 @@
 """The add-on's GUI, run by FreeCAD once its main window is up: the command IvShadow_Toggle,
-a toolbar shown in every workbench, an entry in the View menu and the preferences page."""
+a toolbar shown in every workbench, an entry in the View menu, the preferences page, and
+shadows turned on again in a document saved with them on."""
 
+import json
 import os
 
 import FreeCAD as App
@@ -77,6 +79,36 @@ def _add_to_view_menu(*_):
         return
 
 
+class _ReopenObserver:
+    """Shadows on again in a document that had them on when it was saved (the key "enabled"
+    of its settings, which ivshadow.freecad keeps in the document's Meta map under "IvShadow"):
+    FreeCAD gives an opened document back its camera and display modes, and a user who saved
+    a model with its shadows expects them back as well. Reading the Meta map needs nothing of
+    the plugin; it is loaded only for such a document."""
+
+    def slotCreatedDocument(self, document):
+        # FreeCAD 0.20's observers are told of a document when it is made, before an opened
+        # one is read (there is no slot for the end of that): the Meta map is looked at once
+        # FreeCAD has finished opening it and made its 3D view.
+        from PySide2 import QtCore
+        QtCore.QTimer.singleShot(0, lambda name=document.Name: _show_shadows(name))
+
+
+def _show_shadows(document_name):
+    try:
+        document = App.getDocument(document_name)
+        on = json.loads(document.Meta.get("IvShadow", "{}")).get("enabled") is True
+        view = Gui.getDocument(document_name).ActiveView
+    except Exception:  # closed meanwhile (FreeCAD raises on an unknown name), or no settings
+        return
+    if on and view is not None and hasattr(view, "getSceneGraph"):
+        shadows = _shadows()
+        if not shadows.is_enabled(view):
+            shadows.enable(view)
+
+
+_reopen_observer = _ReopenObserver()
+App.addDocumentObserver(_reopen_observer)
 Gui.addCommand("IvShadow_Toggle", ToggleCommand())
 _add_global_toolbar()
 try:

@@ -1143,11 +1143,28 @@ def _store(document_name, direction, settings, location):
               for key, value in settings.items() if key in DEFAULTS}
     stored["light_direction"] = list(direction)
     stored["light_location"] = list(location) if location is not None else None
+    # Shadows are on: a document saved now and opened again gets them back (init_gui.py).
+    stored["enabled"] = True
+    _write_meta(document, stored)
+
+
+def _write_meta(document, stored):
     text = json.dumps(stored, sort_keys=True)
     meta = document.Meta
     if meta.get(META_KEY) != text:
         meta[META_KEY] = text
         document.Meta = meta
+
+
+def _store_disabled(document_name):
+    try:
+        document = App.getDocument(document_name)
+    except NameError:  # closed meanwhile
+        return
+    stored = stored_settings(document)
+    if stored.get("enabled"):
+        stored["enabled"] = False
+        _write_meta(document, stored)
 
 
 def _resolve(light_direction, ground, settings, light_location=None, stored=None):
@@ -1225,11 +1242,13 @@ def enable(view=None, *, light_direction=None, ground=None, light_location=None,
 
 def disable(view=None):
     """FreeCAD's own picture in `view` again: the model back where FreeCAD keeps it, its
-    headlight as it was. Nothing happens in a view without shadows."""
+    headlight as it was, and the document's settings saying shadows are off (saved now, it
+    opens without them). Nothing happens in a view without shadows."""
     view = _active_view(view)
     state = _states.pop(_address(view.getSceneGraph()), None)
     if state is not None:
         state.remove()
+        _store_disabled(state.document)
 
 
 def is_enabled(view=None):

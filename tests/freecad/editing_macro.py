@@ -193,9 +193,9 @@ def transform_dragger(document, view, shadows):
 
 def per_document(shadows):
     # The settings go with the document (its Meta map, saved in the file): a document shown
-    # with the lamp and saved, closed and opened again, gets the lamp from enable() with no
-    # argument, although the preferences say a directional light; a new document gets the
-    # preferences' light.
+    # with the lamp and saved, closed and opened again, has its shadows on again and gets the
+    # lamp from enable() with no argument, although the preferences say a directional light;
+    # saved with shadows off it opens without them; a new document gets the preferences' light.
     import os
     from macro_common import WORK
     document, view = make_scene("PerDocument")
@@ -207,7 +207,10 @@ def per_document(shadows):
     App.closeDocument(document.Name)
     preferences = shadows.settings_from_preferences()
     document = App.openDocument(path)
+    Gui.updateGui()  # the add-on turns them on once FreeCAD has finished opening it
     view = Gui.getDocument(document.Name).ActiveView
+    check("per document: a document saved with shadows on opens with them on",
+          shadows.is_enabled(view))
     shadows.enable(view)
     light = shadows.group(view).getChild(0)
     location = list(light.location.getValue().getValue()) \
@@ -216,7 +219,15 @@ def per_document(shadows):
           preferences["light_type"] == "Directional" and stored.get("light_type") == "Point" and
           location is not None and all(abs(a - b) < 1e-4 for a, b in zip(location, LAMP)),
           preferences=preferences["light_type"], stored=stored, location=location)
+    # Saved with them off, it opens without them.
     shadows.disable(view)
+    document.save()
+    App.closeDocument(document.Name)
+    document = App.openDocument(path)
+    Gui.updateGui()
+    view = Gui.getDocument(document.Name).ActiveView
+    check("per document: a document saved with shadows off opens without them",
+          not shadows.is_enabled(view), stored=shadows.stored_settings(document))
     App.closeDocument(document.Name)
     document, view = make_scene("Fresh")
     shadows.enable(view)
