@@ -113,6 +113,7 @@ nlohmann::json renderStatistics(const RenderOptions& options, const OffscreenRen
   stats["passes"]["bounce_place_ms"] = shadows.bouncePlaceMs;
   stats["passes"]["bounce_map_ms"] = shadows.bounceMapMs;
   stats["bounce_bytes"] = shadows.bounceBytes;
+  stats["renderer"] = shadows.renderer;
   stats["tracer_scenes"] = shadows.tracerScenes;
   stats["tracer_frames"] = shadows.tracerFrames;
   stats["tracer_size"] = {shadows.tracerWidth, shadows.tracerHeight};

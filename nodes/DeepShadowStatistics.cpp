@@ -4,6 +4,8 @@
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "nodes/NodesOfType.h"
 
+#include <Inventor/nodes/SoNode.h>
+
 #include <algorithm>
 
 namespace ivshadow {
@@ -22,6 +24,10 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
   DeepShadowStatistics total;
   forEachNodeOfType<SoTransparentShadowGroup>(root, [&](const SoTransparentShadowGroup& group) {
     const DeepShadowStatistics& stats = group.getStatistics();
+    if (total.renderer.empty())
+      total.renderer = stats.renderer;
+    else if (!stats.renderer.empty() && stats.renderer != total.renderer)
+      total.renderer = "MIXED";
     total.lights.insert(total.lights.end(), stats.lights.begin(), stats.lights.end());
     total.lastBuildMs += stats.lastBuildMs;
     total.totalBuildMs += stats.totalBuildMs;
@@ -62,3 +68,16 @@ DeepShadowStatistics collectDeepShadowStatistics(SoNode* root) {
 }
 
 }  // namespace ivshadow
+
+const char* ivshadow_renderer_in_use(SoNode* root) {
+  if (root == nullptr) return "";
+  // A search action refs and unrefs the node it is applied to: a node nothing holds yet (as
+  // pivy's createInstance() gives) would be deleted under the caller.
+  root->ref();
+  const std::string renderer = ivshadow::collectDeepShadowStatistics(root).renderer;
+  root->unrefNoDelete();
+  // Literals: the caller keeps no storage of the plugin's.
+  for (const char* name : {"TRACER", "RASTER", "MIXED"})
+    if (renderer == name) return name;
+  return "";
+}

@@ -559,14 +559,23 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
   // with the rest.
   if (ShadowGroupElement::peeling(state)) {
     peelStatistics_.passes = 0;
+    statistics_.renderer.clear();
     return false;
   }
   // Inside an enclosing group's capture (its RAYS lights' surfaces), likewise: this group's
   // own passes wrote its colours into the capture targets, and the enclosing group's shadows
   // fell on nothing below it (the floor around a nested group's glass stayed lit).
-  if (ShadowGroupElement::capturing(state)) return false;
+  if (ShadowGroupElement::capturing(state)) {
+    statistics_.renderer.clear();
+    return false;
+  }
   // Traced, the group needs none of the GL path's programs or maps.
-  if (traced(action) && renderTraced(action)) return true;
+  if (traced(action) && renderTraced(action)) {
+    statistics_.renderer = "TRACER";
+    return true;
+  }
+  // Set once GL has drawn the children shaded; a failure below draws them plain.
+  statistics_.renderer.clear();
   IdleFields::sayIfSet(*static_cast<SoTransparentShadowGroup*>(owner_), "movingResolution",
                        "GL draws the children here, every frame in full (only a traced group "
                        "reduces its frames)");
@@ -603,6 +612,7 @@ bool TransparentShadowGroupImpl::render(SoGLRenderAction* action, bool inPath, b
     shading_.apply();
   }
   drawShaded(action, inPath, peel, context, rayCount > 0, bounced);
+  statistics_.renderer = "RASTER";
   return true;
 }
 

@@ -35,7 +35,7 @@ import FreeCAD as App
 import ivshadow  # noqa: F401  (loads the plugin and registers the nodes with Coin)
 from pivy import coin
 
-__all__ = ["enable", "disable", "is_enabled", "group", "refresh", "settings_from_preferences",
+__all__ = ["enable", "disable", "is_enabled", "group", "renderer_in_use", "refresh", "settings_from_preferences",
            "save_preferences", "stored_settings", "highlight_colours", "PRESETS", "PARAMETERS",
            "DEFAULTS", "META_KEY"]
 
@@ -1270,3 +1270,11 @@ def group(view=None):
     """The TransparentShadowGroup of `view`, or None: its fields and statistics."""
     state = _states.get(_address(_active_view(view).getSceneGraph()))
     return state.group if state else None
+
+
+def renderer_in_use(view=None):
+    """How `view` (the active 3D view when None) drew its shadows in its last frame, the
+    renderer setting's AUTO resolved: "TRACER" (traced on the CPU: a machine without a GPU) or
+    "RASTER" (GL's shading on a GPU); None without shadows or before their first frame."""
+    shadow_group = group(view)
+    return ivshadow.renderer_in_use(shadow_group) if shadow_group is not None else None

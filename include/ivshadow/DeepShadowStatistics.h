@@ -46,6 +46,11 @@ struct DeepShadowLightStatistics {
 };
 
 struct DeepShadowStatistics {
+  // How the last render drew the group's children, `renderer AUTO` resolved: "TRACER" (traced
+  // whole on the CPU) or "RASTER" (GL's shading with the lights' methods); "" before the group
+  // rendered, or while an enclosing group or separator draws its children. Summed over groups
+  // (collectDeepShadowStatistics): their one value, or "MIXED".
+  std::string renderer;
   std::vector<DeepShadowLightStatistics> lights;
   // GPU time (GL_TIMESTAMP queries) of the last map build, the last shading of the children
   // and the last capture of RAYS surfaces. On llvmpipe the GPU is the CPU rasteriser.
@@ -113,3 +118,8 @@ IVSHADOW_API bool passTiming();
 IVSHADOW_API DeepShadowStatistics collectDeepShadowStatistics(SoNode* root);
 
 }  // namespace ivshadow
+
+// For hosts that reach the plugin through a C interface (Python's ctypes, as FreeCAD's add-on
+// does with a pivy node's address): collectDeepShadowStatistics(root).renderer, as a string
+// that lives as long as the program ("" when `root` holds no group or none rendered yet).
+extern "C" IVSHADOW_API const char* ivshadow_renderer_in_use(SoNode* root);

@@ -33,7 +33,7 @@ import time
 from . import _paths
 from . import _worker
 
-__all__ = ["IvShadowError", "render", "reference", "executable", "library"]
+__all__ = ["IvShadowError", "render", "reference", "executable", "library", "renderer_in_use"]
 
 
 class IvShadowError(Exception):
@@ -69,10 +69,23 @@ def _load_nodes():
     plugin = ctypes.CDLL(library(), mode=ctypes.RTLD_GLOBAL)
     # ivshadow::init(), exported by the plugin (include/ivshadow/IvShadowInit.h).
     plugin["_ZN8ivshadow4initEv"]()
-    return coin
+    # include/ivshadow/DeepShadowStatistics.h: the renderer the groups under a node drew with.
+    plugin.ivshadow_renderer_in_use.argtypes = [ctypes.c_void_p]
+    plugin.ivshadow_renderer_in_use.restype = ctypes.c_char_p
+    return coin, plugin
 
 
-_coin = _load_nodes()
+_coin, _plugin = _load_nodes()
+
+
+def renderer_in_use(node):
+    """How the TransparentShadowGroups under the pivy `node` (or the group itself) drew their
+    children in the last frame rendered in this process, `renderer AUTO` resolved: "TRACER"
+    (traced on the CPU), "RASTER" (GL's shading), "MIXED" (groups differ), or None when no
+    group has drawn yet."""
+    # pivy's wrapper holds the node's C++ address.
+    name = _plugin.ivshadow_renderer_in_use(int(node.this)).decode()
+    return name or None
 
 
 def _size_text(size):

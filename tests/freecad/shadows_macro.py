@@ -57,6 +57,10 @@ def run():
     shadows.enable(view, light_direction=LIGHT)
     check("enabled", shadows.is_enabled(view))
     on = save(view, "freecad_shadows")
+    # What AUTO chose: under Xvfb GL is Mesa's llvmpipe, a software rasteriser, where the group
+    # traces (nodes/AutoTracerChoice.h).
+    check("renderer in use (AUTO)", shadows.renderer_in_use(view) == "TRACER",
+          renderer=shadows.renderer_in_use(view))
 
     # Points of the plane's top (z = 0), from the geometry:
     # - box shadow: from (36, 5, 0) along -L = (-0.4, 0.3, 1) the ray reaches x = 30 at
@@ -100,6 +104,8 @@ def run():
     # edge where none is drawn.
     shadows.enable(view, light_direction=LIGHT, renderer="RASTER")
     raster = save(view, "freecad_shadows_raster")
+    check("renderer in use (RASTER)", shadows.renderer_in_use(view) == "RASTER",
+          renderer=shadows.renderer_in_use(view))
     sides = [rgb(raster, (edge[0] - 6, edge[1])), rgb(raster, (edge[0] + 6, edge[1]))]
     check("no hidden edge through the box (RASTER)",
           grey(rgb(raster, edge)) > min(grey(side) for side in sides) - 25,
@@ -157,6 +163,8 @@ def run():
 
     shadows.disable(view)
     check("disabled", not shadows.is_enabled(view))
+    check("no renderer in use without shadows", shadows.renderer_in_use(view) is None,
+          renderer=shadows.renderer_in_use(view))
     after = save(view, "freecad_after")
     # The same GL drawing of the same scene graph as before enable(): 3 levels allow for
     # nothing but rounding in the driver.

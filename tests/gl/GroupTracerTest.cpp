@@ -335,6 +335,37 @@ TEST(TracedGroup, AutoTracesOnASoftwareRasteriserAndSaysSo) {
       r.messagesWith({software ? "renderer AUTO uses TRACER on" : "renderer AUTO uses RASTER on"}),
       1);
   EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerFrames, software ? 1 : 0);
+  // What a host reads to show the choice (FreeCAD's add-on, through its C entry point).
+  EXPECT_STREQ(ivshadow_renderer_in_use(r.root), software ? "TRACER" : "RASTER");
+}
+
+// The renderer in use is the one that drew the last frame: none before it, each group's own,
+// MIXED where groups differ.
+TEST(TracedGroup, TheRendererInUseIsTheOneThatDrewTheLastFrame) {
+  for (const std::string renderer : {"TRACER", "RASTER"}) {
+    ShadowScene scene = ShadowScene{};
+    scene.renderer = renderer;
+    scene.filters = {kRedGlass};
+    Rendering r(scene, true);
+    ASSERT_TRUE(r.renderer);
+    EXPECT_STREQ(ivshadow_renderer_in_use(r.root), "") << renderer << ": before the first frame";
+    r.frame();
+    EXPECT_STREQ(ivshadow_renderer_in_use(r.root), renderer.c_str());
+    EXPECT_EQ(collectDeepShadowStatistics(r.root).renderer, renderer);
+    EXPECT_EQ(collectDeepShadowStatistics(r.root).tracerFrames, renderer == "TRACER" ? 1 : 0);
+  }
+  SoSeparator* root = readIv(R"(#Inventor V2.1 ascii
+    OrthographicCamera { position 0 0 5 height 4 }
+    TransparentShadowGroup { renderer TRACER DirectionalLight { } Cube { } }
+    TransparentShadowGroup { renderer RASTER DirectionalLight { } Sphere { } })");
+  std::string error;
+  auto renderer = CheckedRenderer::create(64, 64, error);
+  ASSERT_TRUE(renderer) << error;
+  renderer->render(root);
+  EXPECT_STREQ(ivshadow_renderer_in_use(root), "MIXED");
+  EXPECT_STREQ(ivshadow_renderer_in_use(nullptr), "");
+  renderer.reset();
+  root->unref();
 }
 
 // The shapes the tracer leaves to GL are drawn by a second render action, which traverses the

@@ -83,6 +83,9 @@ def main():
     group = coin.SoType.fromName(coin.SbName("TransparentShadowGroup")).createInstance()
     if group is None or group.getTypeId().getName().getString() != "TransparentShadowGroup":
         fail("SoType.fromName('TransparentShadowGroup').createInstance() gave %r" % group)
+    # The plugin's C entry point through pivy's node: a group that never drew reads None.
+    if ivshadow.renderer_in_use(group) is not None:
+        fail("renderer_in_use() of a group never rendered: %r" % ivshadow.renderer_in_use(group))
     light = coin.SoType.fromName(coin.SbName("DeepShadowLight")).createInstance()
     light.getField("maxLayers").set("2")
     if light.getField("maxLayers").get() != "2":
