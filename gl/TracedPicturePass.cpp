@@ -5,15 +5,22 @@
 #include "gl/GlAllocationCheck.h"
 #include "gl/GlStateScope.h"
 #include "gl/PixelStoreScope.h"
+#include "gl/ShaderConstants.h"
 
 #include <epoxy/gl.h>
 
 namespace ivshadow {
 namespace {
 
-// The picture's units: Coin's bindings there are put back after the draw.
+// The picture's image units, of those GlStateScope puts back (ShaderConstants.h).
 constexpr int kColourUnit = 0;
 constexpr int kDepthUnit = 1;
+static_assert(kColourUnit < kImageUnits && kDepthUnit < kImageUnits);
+
+std::string unitDefines() {
+  return "#define TRACED_COLOUR_UNIT " + std::to_string(kColourUnit) +
+         "\n#define TRACED_DEPTH_UNIT " + std::to_string(kDepthUnit) + "\n";
+}
 
 }  // namespace
 
@@ -28,11 +35,11 @@ std::unique_ptr<TracedPicturePass> TracedPicturePass::create(std::string& whyNot
   if (!supported(whyNot)) return nullptr;
   std::unique_ptr<TracedPicturePass> pass(new TracedPicturePass);
   pass->program_ = GlProgram::link(composeShader(glsl::kPeelCompositeVert),
-                                   composeShader(glsl::kTracedPictureFrag), whyNot);
+                                   composeShader(glsl::kTracedPictureFrag, unitDefines()), whyNot);
   if (!pass->program_) return nullptr;
-  pass->stretchedProgram_ =
-      GlProgram::link(composeShader(glsl::kPeelCompositeVert),
-                      composeShader(glsl::kTracedPictureFrag, "#define STRETCHED\n"), whyNot);
+  pass->stretchedProgram_ = GlProgram::link(
+      composeShader(glsl::kPeelCompositeVert),
+      composeShader(glsl::kTracedPictureFrag, unitDefines() + "#define STRETCHED\n"), whyNot);
   if (!pass->stretchedProgram_) return nullptr;
   pass->emptyVertexArray_ = createVertexArray();
   return pass;
@@ -133,9 +140,8 @@ void TracedPicturePass::drawDepth(const std::array<int, 4>& viewport) const {
 
 void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   GlStateScope scope(GlStateScope::kProgram | GlStateScope::kVertexArray |
-                         GlStateScope::kBlendFunction | GlStateScope::kDepth |
-                         GlStateScope::kFragmentTests,
-                     {{kColourUnit, kDepthUnit}, {GL_TEXTURE_2D}});
+                     GlStateScope::kBlendFunction | GlStateScope::kDepth |
+                     GlStateScope::kFragmentTests | GlStateScope::kImageBindings);
   scope.disableFragmentTests();
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
@@ -151,12 +157,10 @@ void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   glDepthRange(0.0, 1.0);
   const GlProgram& program = stretched ? stretchedProgram_ : program_;
   glUseProgram(program.name());
-  program.setInt("uColour", kColourUnit);
-  program.setInt("uDepth", kDepthUnit);
   glUniform2i(program.location("uOrigin"), viewport[0], viewport[1]);
   glUniform2i(program.location("uSize"), viewport[2], viewport[3]);
-  glBindTextureUnit(GLuint(kColourUnit), colour_.get());
-  glBindTextureUnit(GLuint(kDepthUnit), depth_.get());
+  glBindImageTexture(GLuint(kColourUnit), colour_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(GLuint(kDepthUnit), depth_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
   glBindVertexArray(emptyVertexArray_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
