@@ -42,7 +42,7 @@ std::string drawUntracedOver(SoNode* root, const SbColor& background, ReferenceR
     error = pass->upload(image.width, image.height, result.tracedRgba.data(),
                          result.tracedDepth.data());
     if (!error.empty()) return;
-    pass->draw({0, 0, image.width, image.height});
+    pass->draw({0, 0, image.width, image.height}, {0, 0, image.width, image.height});
     SoPathList paths;
     for (const std::vector<int>& indices : result.untracedPaths) {
       auto* path = new SoPath(root);

@@ -49,7 +49,7 @@ GLenum drawnAndRead() {
 
 }  // namespace
 
-bool KeptFrame::readBefore(const std::array<int, 4>& viewport) {
+bool KeptFrame::readBefore(const std::array<int, 4>& viewport, const std::array<int, 4>& region) {
   readable_ = false;
   colourRead_ = false;
   depthRead_ = false;
@@ -62,13 +62,17 @@ bool KeptFrame::readBefore(const std::array<int, 4>& viewport) {
   const GLenum buffer = drawnAndRead();
   if (buffer == GL_NONE) return false;
   layout_.viewport = viewport;
+  region_ = {std::clamp(region[0], 0, viewport[2]), std::clamp(region[1], 0, viewport[3]),
+             std::clamp(region[2], 0, viewport[2]), std::clamp(region[3], 0, viewport[3])};
+  region_[2] = std::max(region_[2], region_[0]);
+  region_[3] = std::max(region_[3], region_[1]);
   layout_.colourFormat = colourFormat(drawn, buffer);
   layout_.depthFormat = depthFormat(drawn);
   if (layout_.colourFormat == GL_NONE || depthTransfer(layout_.depthFormat).bytes == 0 ||
       colourTransfer(layout_.colourFormat).bytes == 0)
     return false;
   readable_ = true;
-  depthAsTraced_ = equalsFramebuffer(Buffer::Depth, tracedDepth_);
+  depthAsTraced_ = tracedRegion_ == region_ && equalsFramebuffer(Buffer::Depth, tracedDepth_);
   if (!depthAsTraced_) read(Buffer::Depth);
   return true;
 }
@@ -84,20 +88,19 @@ void KeptFrame::readRows(Buffer buffer, int first, int rows, unsigned char* into
   PixelStoreScope store;
   const PixelTransfer pixels = transfer(buffer);
   const std::array<int, 4>& v = layout_.viewport;
-  glReadPixels(v[0], v[1] + first, v[2], rows, pixels.format, pixels.type, into);
+  glReadPixels(v[0] + region_[0], v[1] + region_[1] + first, width(), rows, pixels.format,
+               pixels.type, into);
 }
 
 void KeptFrame::read(Buffer buffer) {
-  const std::array<int, 4>& v = layout_.viewport;
   std::vector<unsigned char>& into = buffer == Buffer::Colour ? now_.colour : now_.depth;
-  into.resize(packedSize(v[2], v[3], transfer(buffer).bytes));
-  readRows(buffer, 0, v[3], into.data());
+  into.resize(packedSize(width(), height(), transfer(buffer).bytes));
+  if (!into.empty()) readRows(buffer, 0, height(), into.data());
   (buffer == Buffer::Colour ? colourRead_ : depthRead_) = true;
 }
 
 bool KeptFrame::equalsFramebuffer(Buffer buffer, const std::vector<unsigned char>& bytes) {
-  bool equal =
-      bytes.size() == packedSize(layout_.viewport[2], layout_.viewport[3], transfer(buffer).bytes);
+  bool equal = bytes.size() == packedSize(width(), height(), transfer(buffer).bytes);
   // A difference stops the reading.
   const std::size_t used = rowBytes(buffer);
   if (equal)
@@ -111,14 +114,14 @@ bool KeptFrame::equalsFramebuffer(Buffer buffer, const std::vector<unsigned char
 template <typename RowVisitor>
 void KeptFrame::forEachBand(Buffer buffer, const std::vector<unsigned char>& bytes,
                             RowVisitor&& visit) {
-  const std::array<int, 4>& v = layout_.viewport;
-  const std::size_t row = packedSize(v[2], 1, transfer(buffer).bytes);
+  const std::size_t row = packedSize(width(), 1, transfer(buffer).bytes);
+  if (row == 0) return;
   // Band by band through a buffer the cache holds: the framebuffer is read once and only the
   // copy compared with comes from memory.
   const int band = int(std::max<std::size_t>(1, kBandBytes / row));
   band_.resize(row * std::size_t(band));
-  for (int first = 0; first < v[3]; first += band) {
-    const int rows = std::min(band, v[3] - first);
+  for (int first = 0; first < height(); first += band) {
+    const int rows = std::min(band, height() - first);
     readRows(buffer, first, rows, band_.data());
     for (int r = 0; r < rows; ++r)
       if (!visit(first + r, band_.data() + row * std::size_t(r),
@@ -129,12 +132,20 @@ void KeptFrame::forEachBand(Buffer buffer, const std::vector<unsigned char>& byt
 
 std::size_t KeptFrame::rowBytes(Buffer buffer) const {
   // The pixels alone: glReadPixels leaves a row's padding as it was.
-  return std::size_t(layout_.viewport[2]) * std::size_t(transfer(buffer).bytes);
+  return std::size_t(width()) * std::size_t(transfer(buffer).bytes);
+}
+
+int KeptFrame::width() const {
+  return region_[2] - region_[0];
+}
+
+int KeptFrame::height() const {
+  return region_[3] - region_[1];
 }
 
 void KeptFrame::findChanged() {
-  const int width = layout_.viewport[2];
-  changed_ = {width, layout_.viewport[3], 0, 0};
+  const int width = this->width();
+  changed_ = {width, height(), 0, 0};
   for (const Buffer buffer : {Buffer::Colour, Buffer::Depth}) {
     const std::size_t pixel = std::size_t(transfer(buffer).bytes);
     const std::size_t used = rowBytes(buffer);
@@ -153,6 +164,9 @@ void KeptFrame::findChanged() {
                   return true;
                 });
   }
+  // From the region's corner to the viewport's.
+  changed_ = {changed_[0] + region_[0], changed_[1] + region_[1], changed_[2] + region_[0],
+              changed_[3] + region_[1]};
 }
 
 void KeptFrame::readAll() {
@@ -168,12 +182,29 @@ bool KeptFrame::depthAsTraced() const {
   return readable_ && depthAsTraced_;
 }
 
-void KeptFrame::markTraced() {
-  if (!readable_)
+void KeptFrame::markTraced(const std::array<int, 4>& region) {
+  const bool inside = readable_ && region[0] >= region_[0] && region[1] >= region_[1] &&
+                      region[2] <= region_[2] && region[3] <= region_[3] &&
+                      region[0] <= region[2] && region[1] <= region[3];
+  if (inside) {
+    // Unread, the depth is the one traced at before, over the same region.
+    const std::vector<unsigned char>& read = depthRead_ ? now_.depth : tracedDepth_;
+    const std::size_t pixel = std::size_t(transfer(Buffer::Depth).bytes);
+    const std::size_t from = packedSize(width(), 1, int(pixel));
+    const std::size_t to = packedSize(region[2] - region[0], 1, int(pixel));
+    std::vector<unsigned char> cropped(to * std::size_t(region[3] - region[1]), 0);
+    for (int y = region[1]; y < region[3]; ++y)
+      std::memcpy(cropped.data() + to * std::size_t(y - region[1]),
+                  read.data() + from * std::size_t(y - region_[1]) +
+                      pixel * std::size_t(region[0] - region_[0]),
+                  pixel * std::size_t(region[2] - region[0]));
+    tracedDepth_.swap(cropped);
+    tracedRegion_ = region;
+  } else {
     tracedDepth_.clear();
-  else if (depthRead_)
-    tracedDepth_ = now_.depth;
-  depthAsTraced_ = readable_;
+    tracedRegion_ = {};
+  }
+  depthAsTraced_ = inside && region == region_;
   forget();
 }
 
@@ -183,7 +214,7 @@ void KeptFrame::forget() {
 
 bool KeptFrame::restore() {
   if (!readable_) return false;
-  if (valid_ && layout_ == keptLayout_) {
+  if (valid_ && layout_ == keptLayout_ && region_ == keptRegion_) {
     // Two depths equal to the one traced at are equal without a second comparison.
     const std::vector<unsigned char>& depth = depthRead_ ? now_.depth : tracedDepth_;
     const bool sameDepth = (depthAsTraced_ && keptAtTracedDepth_) || depth == keptBefore_.depth;
@@ -229,6 +260,7 @@ void KeptFrame::keep() {
   std::swap(keptBefore_, now_);
   colourRead_ = depthRead_ = false;
   keptAtTracedDepth_ = depthAsTraced_;
+  keptRegion_ = region_;
   valid_ = true;
 }
 

@@ -20,19 +20,25 @@ namespace ivshadow {
 // small scene; the read, the comparison and the blit are copies. The reads go band by band through
 // a buffer the cache holds, compared as they come: only a frame that differs is read whole into
 // memory, to be kept. The same reads tell whether the depth is still the one the picture was traced
-// at, without converting it to floats. Only a single-sampled framebuffer drawing into the one
+// at, without converting it to floats. Only the region the picture may change is read (the box
+// around the traced triangles as its camera sees them): elsewhere the picture leaves whatever GL
+// drew. Only a single-sampled framebuffer drawing into the one
 // buffer it reads, with every colour channel writable, is kept; for any other readBefore() says no
 // and the caller composites.
 class IVSHADOW_INTERNAL KeptFrame {
  public:
-  // Reads the draw framebuffer over `viewport` (x, y, width, height) as stored: what GL drew
-  // before the picture this frame (its depth now; its colour when restore() compares it, so
-  // nothing may draw in between). False when this framebuffer cannot be kept.
-  bool readBefore(const std::array<int, 4>& viewport);
+  // Reads the draw framebuffer over `region` of `viewport` (x, y, width, height) as stored:
+  // what GL drew before the picture this frame (its depth now; its colour when restore()
+  // compares it, so nothing may draw in between). `region` ({x0, y0, x1, y1} from the
+  // viewport's corner, x1 and y1 past the end) holds every pixel the picture may change: the
+  // one markTraced() was given while the picture is the same, else the whole viewport. False
+  // when this framebuffer cannot be kept.
+  bool readBefore(const std::array<int, 4>& viewport, const std::array<int, 4>& region);
   // Whether the depth readBefore() read is the one the picture was traced at (markTraced()).
   bool depthAsTraced() const;
-  // The picture was traced at the depth readBefore() read this frame.
-  void markTraced();
+  // The picture was traced at the depth readBefore() read this frame, and changes pixels in
+  // `region` alone (within readBefore()'s).
+  void markTraced(const std::array<int, 4>& region);
   // Puts back the frame kept when what this frame's readBefore() read equals what it was
   // composed over, over the same viewport; false (nothing drawn) otherwise.
   bool restore();
@@ -74,6 +80,9 @@ class IVSHADOW_INTERNAL KeptFrame {
   template <typename RowVisitor>
   void forEachBand(Buffer buffer, const std::vector<unsigned char>& bytes, RowVisitor&& visit);
   std::size_t rowBytes(Buffer buffer) const;
+  // The region's size.
+  int width() const;
+  int height() const;
   // Sets changed_ to the box where the framebuffer differs from now_.
   void findChanged();
   // Completes now_: the colour read, the depth read or known to be the one traced at.
@@ -83,17 +92,20 @@ class IVSHADOW_INTERNAL KeptFrame {
   // Blits changed_ between the draw framebuffer and the copy, colour, depth and stencil.
   void blit(unsigned int from, unsigned int to, bool toKept) const;
 
-  bool readable_ = false;  // this frame's readBefore() read
-  Layout layout_;          // this frame's
-  Stored now_;             // read this frame, where colourRead_ and depthRead_ say
+  bool readable_ = false;        // this frame's readBefore() read
+  Layout layout_;                // this frame's
+  std::array<int, 4> region_{};  // this frame's, in the viewport
+  Stored now_;                   // read this frame, where colourRead_ and depthRead_ say
   bool colourRead_ = false;
   bool depthRead_ = false;  // else the depth is tracedDepth_ when depthAsTraced_
   std::vector<unsigned char> band_;
-  std::vector<unsigned char> tracedDepth_;
+  std::vector<unsigned char> tracedDepth_;  // over tracedRegion_
+  std::array<int, 4> tracedRegion_{};
   bool depthAsTraced_ = false;  // now_.depth == tracedDepth_
   bool valid_ = false;          // a frame is kept
   Layout keptLayout_;
-  Stored keptBefore_;  // what the kept frame was composed over
+  Stored keptBefore_;  // what the kept frame was composed over, over keptRegion_
+  std::array<int, 4> keptRegion_{};
   // Where the kept frame differs from keptBefore_: x0, y0, x1, y1 in the viewport, x1 and y1
   // past the end; empty when x0 >= x1. The blits copy it alone.
   std::array<int, 4> changed_{};

@@ -132,17 +132,26 @@ std::string TracedPicturePass::upload(int width, int height, const float* rgba,
   return {};
 }
 
-void TracedPicturePass::drawDepth(const std::array<int, 4>& viewport) const {
+void TracedPicturePass::drawDepth(const std::array<int, 4>& viewport,
+                                  const std::array<int, 4>& region) const {
   GlStateScope scope(GlStateScope::kColourMask, {});
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  draw(viewport);
+  draw(viewport, region);
 }
 
-void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
+void TracedPicturePass::draw(const std::array<int, 4>& viewport,
+                             const std::array<int, 4>& region) const {
+  if (region[0] >= region[2] || region[1] >= region[3]) return;
+  // The scissor box is not among what GlStateScope keeps.
+  GLint scissorBox[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
   GlStateScope scope(GlStateScope::kProgram | GlStateScope::kVertexArray |
                      GlStateScope::kBlendFunction | GlStateScope::kDepth |
                      GlStateScope::kFragmentTests | GlStateScope::kImageBindings);
   scope.disableFragmentTests();
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(viewport[0] + region[0], viewport[1] + region[1], region[2] - region[0],
+            region[3] - region[1]);
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   // dst = src.rgb + dst * src.a, keeping the framebuffer's alpha.
@@ -163,6 +172,7 @@ void TracedPicturePass::draw(const std::array<int, 4>& viewport) const {
   glBindImageTexture(GLuint(kDepthUnit), depth_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
   glBindVertexArray(emptyVertexArray_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
 }
 
 }  // namespace ivshadow

@@ -38,11 +38,14 @@ class IVSHADOW_INTERNAL TracedPicturePass {
   // Draws the picture uploaded last over `viewport`, whatever state Coin left, and puts the
   // state back. A picture smaller than the viewport (a frame traced at a lower resolution
   // while the scene moves) is stretched over it: its depth the nearest pixel's, its colour
-  // interpolated among the pixels at that depth (traced_picture.frag).
-  void draw(const std::array<int, 4>& viewport) const;
-  // The picture's depth alone, written again over `viewport` (colours untouched): what the
-  // framebuffer's depth held after draw(), for GL to test against once more.
-  void drawDepth(const std::array<int, 4>& viewport) const;
+  // interpolated among the pixels at that depth (traced_picture.frag). Only the pixels of
+  // `region` ({x0, y0, x1, y1} from the viewport's corner) are drawn: outside it the picture
+  // holds no surface, and its depth there (what GL drew when it was traced) may be older than
+  // the framebuffer's.
+  void draw(const std::array<int, 4>& viewport, const std::array<int, 4>& region) const;
+  // The picture's depth alone, written again over `region` of `viewport` (colours untouched):
+  // what the framebuffer's depth held after draw(), for GL to test against once more.
+  void drawDepth(const std::array<int, 4>& viewport, const std::array<int, 4>& region) const;
 
  private:
   TracedPicturePass() = default;

@@ -10,6 +10,7 @@
 #include "scene/CoinRef.h"
 #include "scene/EnvironmentValues.h"
 #include "scene/SceneTriangles.h"
+#include "scene/ScreenBox.h"
 #include "scene/WarnOnce.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -138,6 +139,7 @@ void GroupTracer::updateScene(SoGLRenderAction* action, const GroupContents& con
   readSize_ = size;
   readPathLength_ = toGroup->getLength();
   ++shapesVersion_;
+  bounds_ = scene_->bounds();
   castersVersion_ = contents.castersVersion();
   mapsVersion_ = contents.mapsVersion();
   viewVersion_ = contents.viewVersion();
@@ -199,7 +201,7 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const bool cameraInside = contents.hasCamera() && scene_->haveCamera();
   view.viewing = cameraInside ? &scene_->viewing() : &SoViewingMatrixElement::get(state);
   view.projection = cameraInside ? &scene_->projection() : &SoProjectionMatrixElement::get(state);
-  const bool depthAsTraced = readWhatGlDrew(*context, view.viewport);
+  const bool depthAsTraced = readWhatGlDrew(*context, view);
   // The same camera rays through the same shapes: they meet the surfaces kept.
   const bool sameView = context->shapes == shapesVersion_ && context->viewing == *view.viewing &&
                         context->projection == *view.projection &&
@@ -223,9 +225,18 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   return true;
 }
 
-bool GroupTracer::readWhatGlDrew(Context& context, const std::array<int, 4>& viewport) {
+bool GroupTracer::readWhatGlDrew(Context& context, const View& view) {
+  const std::array<int, 4>& viewport = view.viewport;
+  // Where the picture of this view changes nothing, what GL drew does not matter to it: the
+  // region of the picture traced when this is its view (a trace of another view or of other
+  // shapes reads it all). A reduced picture is stretched: read it all too.
+  const bool pictureView =
+      context.scene != 0 && context.shapes == shapesVersion_ && context.viewing == *view.viewing &&
+      context.projection == *view.projection && context.viewport == viewport && !context.reduced;
+  const std::array<int, 4> region =
+      pictureView ? context.region : std::array<int, 4>{0, 0, viewport[2], viewport[3]};
   // As stored: while its depth is the one traced at, the depths need no reading as floats.
-  context.frame.readBefore(viewport);
+  context.frame.readBefore(viewport, region);
   if (context.frame.depthAsTraced()) return true;
   if (const std::string error = context.pass->readDepth(viewport, context.depthNow);
       !error.empty() && firstWarning(owner_, "depth read: " + error))
@@ -283,7 +294,13 @@ bool GroupTracer::tracePicture(Context& context, const View& view, const Motion&
   context.projection = *view.projection;
   context.viewport = viewport;
   if (!motion.depthAsTraced) context.depthTraced.swap(context.depthNow);
-  context.frame.markTraced();
+  // A stretched picture's pixel spreads over 1 / scale of the viewport's, and takes the
+  // bilinear mean of its neighbours': the margin holds both.
+  const int spread = int(std::ceil(float(viewport[2]) / float(options.width))) +
+                     int(std::ceil(float(viewport[3]) / float(options.height)));
+  context.region =
+      screenBox(bounds_, *view.viewing, *view.projection, viewport[2], viewport[3], 2 + spread);
+  context.frame.markTraced(context.region);
   context.reduced = reduced;
   if (reduced) {
     if (refineSensor_.isScheduled()) refineSensor_.unschedule();
@@ -307,7 +324,7 @@ void GroupTracer::present(SoGLRenderAction* action, Context& context,
   // A frame that traced keeps nothing: a single frame (a batch render) or a motion would only
   // pay for the copy.
   if (traced || !context.frame.restore()) {
-    context.pass->draw(viewport);
+    context.pass->draw(viewport, context.region);
     if (!traced) context.frame.keep();
   }
   SoState* state = action->getState();
@@ -316,6 +333,7 @@ void GroupTracer::present(SoGLRenderAction* action, Context& context,
   if (!scene_->untracedPaths().empty()) {
     drawingUntraced_ = &context;
     untracedViewport_ = viewport;
+    untracedRegion_ = context.region;
     drawUntraced(action);
     drawingUntraced_ = nullptr;
   }
@@ -323,7 +341,7 @@ void GroupTracer::present(SoGLRenderAction* action, Context& context,
 
 void GroupTracer::restoreDepth(SoGLRenderAction* action) {
   if (drawingUntraced_ == nullptr) return;
-  drawingUntraced_->pass->drawDepth(untracedViewport_);
+  drawingUntraced_->pass->drawDepth(untracedViewport_, untracedRegion_);
   drawingUntraced_ = nullptr;
   SoState* state = action->getState();
   SoGLLazyElement::getInstance(state)->reset(state, SoLazyElement::ALL_MASK);

@@ -4,6 +4,7 @@
 #include "nodes/PerContext.h"
 #include "raytrace/SceneTracer.h"
 
+#include <Inventor/SbBox3f.h>
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbVec2s.h>
 #include <Inventor/sensors/SoAlarmSensor.h>
@@ -75,7 +76,10 @@ class GroupTracer {
     std::vector<float> depthNow;      // read this frame, when not the one traced at
     std::vector<float> depthReduced;  // depthNow at a reduced picture's pixels
     bool reduced = false;             // the picture kept was traced at movingResolution
-    bool tracedLastFrame = false;     // the previous frame traced for a change (a motion)
+    // The pixels the picture may change, {x0, y0, x1, y1} in the viewport: the box around the
+    // triangles as its camera sees them (scene/ScreenBox.h). Elsewhere it leaves what GL drew.
+    std::array<int, 4> region{};
+    bool tracedLastFrame = false;  // the previous frame traced for a change (a motion)
     // The surfaces the picture's camera rays met: composited again when only the lights
     // changed.
     SurfacesMet surfaces;
@@ -99,9 +103,10 @@ class GroupTracer {
   // The picture's resources in the current context; null, with one warning, when the context
   // cannot draw a traced picture.
   Context* contextFor(SoState* state);
-  // Reads what GL drew before the group over `viewport`: true when its depth is the one the
-  // picture was traced at (context.depthTraced), else the depth is read into context.depthNow.
-  bool readWhatGlDrew(Context& context, const std::array<int, 4>& viewport);
+  // Reads what GL drew before the group over `view`'s viewport (where the picture, if traced
+  // for this view, may change it): true when its depth is the one the picture was traced at
+  // (context.depthTraced), else the depth is read into context.depthNow.
+  bool readWhatGlDrew(Context& context, const View& view);
   // Traces the picture for `view` and uploads it; false, with one warning, when GL cannot hold
   // it.
   bool tracePicture(Context& context, const View& view, const Motion& motion,
@@ -129,7 +134,9 @@ class GroupTracer {
   // While drawUntraced runs: the picture to write the depth of again, and where.
   const Context* drawingUntraced_ = nullptr;
   std::array<int, 4> untracedViewport_{};
+  std::array<int, 4> untracedRegion_{};
   std::unique_ptr<SceneTracer> scene_;
+  SbBox3f bounds_;                   // scene_'s triangles, in the world
   std::uint64_t sceneVersion_ = 0;   // counts the reads
   std::uint64_t shapesVersion_ = 0;  // counts the reads of the shapes (not of lights alone)
   std::uint64_t castersVersion_ = ~std::uint64_t(0);

@@ -531,6 +531,11 @@ const SbMatrix& SceneTracer::projection() const {
 std::size_t SceneTracer::triangles() const {
   return data_->extraction.triangles.size();
 }
+SbBox3f SceneTracer::bounds() const {
+  SbBox3f box;
+  for (const glm::vec3& p : data_->extraction.positions) box.extendBy(SbVec3f(p.x, p.y, p.z));
+  return box;
+}
 const std::vector<std::string>& SceneTracer::untracedShapes() const {
   return data_->extraction.untracedShapes;
 }

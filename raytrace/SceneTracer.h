@@ -4,6 +4,7 @@
 #include "raytrace/CasterScene.h"
 #include "scene/ShadowTypes.h"
 
+#include <Inventor/SbBox3f.h>
 #include <Inventor/SbMatrix.h>
 
 #include <atomic>
@@ -120,6 +121,8 @@ class IVSHADOW_INTERNAL SceneTracer {
   const SbMatrix& viewing() const;
   const SbMatrix& projection() const;
   std::size_t triangles() const;
+  // The box around the triangles, in the world.
+  SbBox3f bounds() const;
   // The shapes drawn with lines, points or screen-aligned pixels, which are not traced: as
   // described for a message, and as the child indices of their paths from the root traced (for
   // GL to draw them; index 0, the root's, unused).

@@ -10,6 +10,7 @@
 #include <Inventor/SbColor.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/nodes/SoCallback.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <epoxy/gl.h>
 
@@ -123,6 +124,9 @@ struct Poke {
   int x = 0;
   int y = 0;
   bool depthOnly = false;
+  // Within the box around the group's triangles as the camera sees them (the pixels its
+  // picture may change), worked out below from the scene.
+  bool inside = true;
 };
 
 void pokePixel(void* data, SoAction* action) {
@@ -142,16 +146,19 @@ void pokePixel(void* data, SoAction* action) {
   glPopAttrib();
 }
 
-// A small glass cube in front of a small opaque sphere, traced, in a view most of which the
-// group leaves as GL drew it; a callback before the group pokes one pixel when asked.
+// A glass cube in front of an opaque sphere of radius 1.9, traced; a callback before the group
+// pokes one pixel when asked. The camera shows 4 units across 480 rows, 120 pixels a unit, the
+// origin at pixel (320, 240): the triangles' box spans pixels 92 .. 548 across and 12 .. 468
+// up, and the region the picture may change is that, 4 pixels wider on each side (the margin
+// of nodes/GroupTracer.cpp at full resolution).
 SoSeparator* pokedScene(std::optional<Poke>* poke) {
   SoSeparator* scene = readIv(R"(#Inventor V2.1 ascii
     OrthographicCamera { position 0 0 5 height 4 nearDistance 1 farDistance 9 }
     TransparentShadowGroup {
       renderer TRACER
-      DirectionalLight { direction -0.3 -0.5 -1 }
+      DEF Sun DirectionalLight { direction -0.3 -0.5 -1 }
       Material { diffuseColor 0.8 0.8 0.8 }
-      Sphere { radius 0.6 }
+      Sphere { radius 1.9 }
       Translation { translation 0.4 0.3 1 }
       Material { diffuseColor 0 0.4 1 transparency 0.5 }
       Cube { width 0.8 height 0.8 depth 0.8 }
@@ -166,8 +173,9 @@ SoSeparator* pokedScene(std::optional<Poke>* poke) {
   return root;
 }
 
-// 640 x 480: several of KeptFrame's bands of 256 KiB (102 rows of colour), so that a change in
-// the first, a middle and the last band, and on a band's edge, is each seen.
+// 640 x 480: the region is several of KeptFrame's bands of 256 KiB (141 rows of its 464 pixels),
+// so that a change in the first, a middle and the last band, and about a band's edge, is each
+// seen.
 constexpr int kPokeWidth = 640;
 constexpr int kPokeHeight = 480;
 
@@ -188,7 +196,7 @@ Image firstPokedFrame(const std::optional<Poke>& poke) {
   return image;
 }
 
-TEST(KeptFrame, OnePixelChangedBeforeTheGroupAnywhereCompositesAgain) {
+TEST(KeptFrame, OnePixelChangedBeforeTheGroupWhereThePictureMayChangeCompositesAgain) {
   std::optional<Poke> poke;
   SoSeparator* root = pokedScene(&poke);
   std::string error;
@@ -199,8 +207,10 @@ TEST(KeptFrame, OnePixelChangedBeforeTheGroupAnywhereCompositesAgain) {
   const Image unpoked = renderer->read();
   const std::vector<float> unpokedDepth = depthOf(*renderer);
   const std::vector<Poke> pokes = {
-      {0, 0, false},    {639, 479, false}, {320, 101, false}, {320, 102, false}, {5, 240, false},
-      {320, 240, true}, {0, 479, true},    {639, 0, true},    {400, 300, false}, {330, 250, false},
+      {320, 10, false},         {320, 470, false},       {300, 149, false},
+      {300, 150, false},        {330, 250, false},       {90, 240, false},
+      {320, 240, true},         {90, 240, true},         {0, 0, false, false},
+      {639, 479, false, false}, {20, 240, false, false}, {600, 300, true, false},
   };
   GlCallCounter calls;
   for (const Poke& where : pokes) {
@@ -209,19 +219,22 @@ TEST(KeptFrame, OnePixelChangedBeforeTheGroupAnywhereCompositesAgain) {
     poke = where;
     calls.reset();
     renderer->render(root);
-    EXPECT_EQ(calls.draws(), 1) << name << ": composited again";
+    // Outside the region the picture leaves what GL drew, whatever it is: put back as kept.
+    EXPECT_EQ(calls.draws(), where.inside ? 1 : 0) << name << ": composited again";
     const Image poked = renderer->read();
     EXPECT_TRUE(samePixels(poked, firstPokedFrame(poke))) << name;
     poke.reset();
     calls.reset();
     renderer->render(root);
-    EXPECT_EQ(calls.draws(), 1) << name << " put back: composited again";
+    EXPECT_EQ(calls.draws(), where.inside ? 1 : 0) << name << " put back: composited again";
     // A changed depth is traced again, and the frame after that (this one) is part of a
     // motion, traced at movingResolution: the still frame after it is the full picture.
     if (!where.depthOnly) EXPECT_TRUE(samePixels(renderer->read(), unpoked)) << name << " put back";
     renderer->render(root);
     EXPECT_TRUE(samePixels(renderer->read(), unpoked)) << name << " put back, still";
     EXPECT_EQ(depthOf(*renderer), unpokedDepth) << name << " put back, still";
+    // After a depth traced again that still frame refined the picture: the next one keeps it.
+    renderer->render(root);
   }
   renderer->render(root);
   calls.reset();
@@ -229,6 +242,19 @@ TEST(KeptFrame, OnePixelChangedBeforeTheGroupAnywhereCompositesAgain) {
   EXPECT_EQ(calls.draws(), 0) << "still";
   EXPECT_EQ(calls.blits(), 1) << "still";
   EXPECT_TRUE(samePixels(renderer->read(), unpoked)) << "still";
+
+  // A depth changed outside the region is not traced again; a moved light then traces the
+  // picture at the depth it was traced at before, and its composite must leave the depth GL
+  // drew outside the region: the poke's, 0, not the cleared depth the picture holds there.
+  poke = Poke{600, 300, true, false};
+  renderer->render(root);
+  auto* sun = static_cast<SoDirectionalLight*>(SoNode::getByName("Sun"));
+  ASSERT_NE(sun, nullptr);
+  sun->direction.setValue(0.3f, -0.5f, -1.0f);
+  const int tracedBefore = collectDeepShadowStatistics(root).tracerFrames;
+  renderer->render(root);
+  EXPECT_EQ(collectDeepShadowStatistics(root).tracerFrames, tracedBefore + 1) << "traced";
+  EXPECT_EQ(depthOf(*renderer)[std::size_t(300 * kPokeWidth + 600)], 0.0f);
   renderer.reset();
   root->unref();
 }
