@@ -1,6 +1,7 @@
 #include "nodes/DepthPeeling.h"
 
 #include "gl/FragmentListPass.h"
+#include "gl/GlStateScope.h"
 #include "gl/PeelPass.h"
 #include "gl/ShaderConstants.h"
 #include "ivshadow/DeepShadowStatistics.h"
@@ -78,6 +79,12 @@ bool drawFragmentLists(SoGLRenderAction* action, PeelPass& pass, GroupShading& s
   const SbViewportRegion& region = SoViewportRegionElement::get(state);
   const SbVec2s origin = region.getViewportOriginPixels();
   const SbVec2s size = region.getViewportSizePixels();
+  // When the list pass's state pops, Coin's depth element sends the depth function it believes
+  // in force (LEQUAL unless a node set one), which need not be GL's: FreeCAD draws with GL_LESS
+  // set directly, and its nodes after the group draw a highlight before the whole shape again,
+  // which LEQUAL let over it. GL's depth state is put back as the pass found it, as a RAYS
+  // capture does (the peel passes' targets, PeelPass::end, put it back likewise).
+  const GlStateScope depth(GlStateScope::kDepth);
   state->push();
   setPeelPassState(state);
   FragmentListPass::Outcome outcome = FragmentListPass::Outcome::TooLarge;
@@ -193,6 +200,8 @@ std::string peelSubgraph(SoGLRenderAction* action, PeelPass& pass, GroupShading&
       ++passes;
       if (passes >= cap || (options.earlyTermination && !deeper)) break;
     }
+    // The pop first: its depth element sends Coin's depth function, and the targets' scope
+    // that end() closes then puts back GL's own (FreeCAD's GL_LESS, see drawFragmentLists).
     state->pop();
     pass.end(passes);
   }

@@ -61,7 +61,8 @@ int peelingQueries(const PeelStatistics& peeling, bool dual) {
   if (peeling.listPasses > 0) {
     queries += peeling.listPasses *
                (1 + scopeQueries(S::kFramebuffers | S::kStorageBuffers | S::kImageBindings));
-    queries += 2;  // the PixelStoreScope
+    queries += 2;                        // the PixelStoreScope
+    queries += scopeQueries(S::kDepth);  // GL's depth state, put back after the list pass
     queries += scopeQueries(S::kFramebuffers | S::kViewport | S::kProgram | S::kVertexArray |
                             S::kStorageBuffers | S::kImageBindings | S::kBlendFunction | S::kDepth |
                             S::kFragmentTests);
