@@ -143,7 +143,7 @@ def sketch_editing(document, view, shadows):
     document.recompute()
     Gui.updateGui()
     Gui.ActiveDocument.setEdit("Sketch")
-    picture = live("sketch_editing", settle=1.5)
+    picture = live("sketch_editing")
     in_edit = Gui.ActiveDocument.getInEdit() is not None
     size = (picture.width(), picture.height())
     # Points along the line, in the camera the sketcher chose; the line is a pixel or two wide,
@@ -155,7 +155,7 @@ def sketch_editing(document, view, shadows):
             missing.append(point)
     check("sketch in edit mode with shadows on: its lines drawn",
           in_edit and not missing and shadows.is_enabled(view), in_edit=in_edit,
-          missing=missing)
+          missing=missing, colours=[rgb(picture, point) for point in missing], size=size)
     leave_edit(view, shadows, "sketch_left", "sketch edit left, shadows still on and cast",
                refit=True)
     document.removeObject("Sketch")
@@ -181,7 +181,7 @@ def transform_dragger(document, view, shadows):
     origin = pixel_of(view, (0, 0, 0), size)
     counts_before = [count(before, origin, 80, strongly(c)) for c in range(3)]
     Gui.ActiveDocument.setEdit("Box", 1)
-    during = live("transform_dragger", settle=1.5)
+    during = live("transform_dragger")
     in_edit = Gui.ActiveDocument.getInEdit() is not None
     counts = [count(during, origin, 80, strongly(c)) for c in range(3)]
     check("transform dragger with shadows on: its red, green and blue axes drawn",

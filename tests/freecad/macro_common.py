@@ -87,24 +87,83 @@ def gl_widget():
             if widget.metaObject().className() == "QOpenGLWidget" and widget.isVisible()][0]
 
 
-def live(name, settle=1.0):
-    """What the screen shows of the active 3D view, read back from the X server (Xvfb holds the
-    pixels the GL widget's window got): FreeCAD's paint events, the redraws the add-on's
-    sensors schedule and the traced group's refinement a quarter of a second after a motion
-    all run first, for `settle` seconds. In physical pixels: the widget's size times its
-    device pixel ratio."""
+# live() reads the view once FreeCAD has drawn everything a change asked for: once the picture
+# on screen has stayed the same, with no paint of the view, through QUIET seconds and at least
+# QUIET_PASSES passes of the event loop. QUIET is more than twice the traced group's refinement
+# delay (kRefineDelaySeconds, 0.25 s: a frame traced during a motion is reduced, and refined by
+# the frame its alarm asks for a quarter of a second later), so that a refinement still to come
+# has been drawn. A fixed wait (it was 1 s, 1.5 s for edit modes) made what was read depend on
+# how fast the machine drew: a change may take several frames (opening a sketch turns the
+# camera, and the Sketcher workbench's toolbars then resize the view, which is drawn again; a
+# traced frame during a motion is reduced, then refined), each pass of the event loop may trace
+# one, and a read before the last one shows an earlier frame: read at once after setEdit, the
+# screen still held the frame before the edit, in the resized widget's rectangle.
+QUIET = 0.6
+QUIET_PASSES = 4
+# A view still changing after this long fails the check "live view steady" (a picture read
+# meanwhile would be any frame of the change).
+STEADY_TIMEOUT = 60.0
+
+
+def _grab(widget):
     from PySide2 import QtCore, QtGui
-    end = time.time() + settle
-    while time.time() < end:
-        Gui.updateGui()
-        time.sleep(0.05)
-    widget = gl_widget()
     origin = widget.mapToGlobal(QtCore.QPoint(0, 0))
     image = QtGui.QGuiApplication.primaryScreen().grabWindow(
         0, origin.x(), origin.y(), widget.width(), widget.height()).toImage()
-    image = image.convertToFormat(QtGui.QImage.Format_RGB32)
-    image.save(os.path.join(WORK, name + ".png"))
-    return image
+    return image.convertToFormat(QtGui.QImage.Format_RGB32)
+
+
+def _paint_counter():
+    """An event filter that counts the paint events of the widget it is installed on."""
+    from PySide2 import QtCore
+
+    class PaintCounter(QtCore.QObject):
+        def __init__(self):
+            super().__init__()
+            self.paints = 0
+
+        def eventFilter(self, watched, event):  # noqa: N802  (Qt's name)
+            if event.type() == QtCore.QEvent.Paint:
+                self.paints += 1
+            return False
+
+    return PaintCounter()
+
+
+def live(name):
+    """What the screen shows of the active 3D view, read back from the X server (Xvfb holds the
+    pixels the GL widget's window got), once it is steady (QUIET above): FreeCAD's paint events,
+    the redraws the add-on's sensors schedule, a resize and the traced group's refinement after
+    a motion have all been drawn. In physical pixels: the widget's size times its device pixel
+    ratio."""
+    widget = gl_widget()
+    counter = _paint_counter()
+    widget.installEventFilter(counter)
+    start = time.time()
+    try:
+        picture = None
+        quiet_since, quiet_passes = start, 0
+        while True:
+            paints = counter.paints
+            Gui.updateGui()
+            now_picture = _grab(widget)
+            now = time.time()
+            if counter.paints != paints or picture is None or now_picture != picture:
+                quiet_since, quiet_passes = now, 0
+            else:
+                quiet_passes += 1
+            picture = now_picture
+            if quiet_passes >= QUIET_PASSES and now - quiet_since >= QUIET:
+                break
+            if now - start > STEADY_TIMEOUT:
+                check("live view steady: " + name, False, seconds=now - start,
+                      paints=counter.paints)
+                break
+            time.sleep(0.05)
+    finally:
+        widget.removeEventFilter(counter)
+    picture.save(os.path.join(WORK, name + ".png"))
+    return picture
 
 
 def size_of(image):
