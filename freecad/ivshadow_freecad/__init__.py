@@ -454,6 +454,15 @@ class _Shadows:
         self.highlight.schedule()
 
     def _top_changed(self, data, sensor):
+        # Closing a document with shadows, FreeCAD deletes its view before the Gui document
+        # observer hears of it (slotDeletedDocument stops the sensors), and the scene graph's
+        # changes meanwhile wake this sensor: the view's wrapper then raises on any use.
+        try:
+            self.view.getViewer()
+        except RuntimeError:
+            for each in self.sensors():
+                each.detach()
+            return
         self._follow_camera()
 
     def _follow_camera(self):
