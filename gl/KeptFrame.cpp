@@ -72,7 +72,9 @@ bool KeptFrame::readBefore(const std::array<int, 4>& viewport, const std::array<
       colourTransfer(layout_.colourFormat).bytes == 0)
     return false;
   readable_ = true;
-  depthAsTraced_ = tracedRegion_ == region_ && equalsFramebuffer(Buffer::Depth, tracedDepth_);
+  // The same bytes over the same pixels of the same kind of buffer.
+  depthAsTraced_ = tracedLayout_ == layout_ && tracedRegion_ == region_ &&
+                   equalsFramebuffer(Buffer::Depth, tracedDepth_);
   if (!depthAsTraced_) read(Buffer::Depth);
   return true;
 }
@@ -200,6 +202,7 @@ void KeptFrame::markTraced(const std::array<int, 4>& region) {
                   pixel * std::size_t(region[2] - region[0]));
     tracedDepth_.swap(cropped);
     tracedRegion_ = region;
+    tracedLayout_ = layout_;
   } else {
     tracedDepth_.clear();
     tracedRegion_ = {};

@@ -101,6 +101,7 @@ class IVSHADOW_INTERNAL KeptFrame {
   std::vector<unsigned char> band_;
   std::vector<unsigned char> tracedDepth_;  // over tracedRegion_
   std::array<int, 4> tracedRegion_{};
+  Layout tracedLayout_;         // the viewport and formats tracedDepth_ was read in
   bool depthAsTraced_ = false;  // now_.depth == tracedDepth_
   bool valid_ = false;          // a frame is kept
   Layout keptLayout_;

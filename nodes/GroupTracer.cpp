@@ -201,7 +201,10 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   const bool cameraInside = contents.hasCamera() && scene_->haveCamera();
   view.viewing = cameraInside ? &scene_->viewing() : &SoViewingMatrixElement::get(state);
   view.projection = cameraInside ? &scene_->projection() : &SoProjectionMatrixElement::get(state);
-  const bool depthAsTraced = readWhatGlDrew(*context, view);
+  // A trace this frame may be reduced (a motion goes on): stretched, its pixels take depths
+  // from beyond the region of the picture before, where the depth it was traced at is old.
+  const bool mayReduce = context->tracedLastFrame && settings.movingResolution < 1.0f;
+  const bool depthAsTraced = readWhatGlDrew(*context, view, mayReduce);
   // The same camera rays through the same shapes: they meet the surfaces kept.
   const bool sameView = context->shapes == shapesVersion_ && context->viewing == *view.viewing &&
                         context->projection == *view.projection &&
@@ -225,14 +228,15 @@ bool GroupTracer::render(SoGLRenderAction* action, const GroupContents& contents
   return true;
 }
 
-bool GroupTracer::readWhatGlDrew(Context& context, const View& view) {
+bool GroupTracer::readWhatGlDrew(Context& context, const View& view, bool mayReduce) {
   const std::array<int, 4>& viewport = view.viewport;
   // Where the picture of this view changes nothing, what GL drew does not matter to it: the
   // region of the picture traced when this is its view (a trace of another view or of other
   // shapes reads it all). A reduced picture is stretched: read it all too.
-  const bool pictureView =
-      context.scene != 0 && context.shapes == shapesVersion_ && context.viewing == *view.viewing &&
-      context.projection == *view.projection && context.viewport == viewport && !context.reduced;
+  const bool pictureView = context.scene != 0 && context.shapes == shapesVersion_ &&
+                           context.viewing == *view.viewing &&
+                           context.projection == *view.projection && context.viewport == viewport &&
+                           !context.reduced && !mayReduce;
   const std::array<int, 4> region =
       pictureView ? context.region : std::array<int, 4>{0, 0, viewport[2], viewport[3]};
   // As stored: while its depth is the one traced at, the depths need no reading as floats.
@@ -298,8 +302,12 @@ bool GroupTracer::tracePicture(Context& context, const View& view, const Motion&
   // bilinear mean of its neighbours': the margin holds both.
   const int spread = int(std::ceil(float(viewport[2]) / float(options.width))) +
                      int(std::ceil(float(viewport[3]) / float(options.height)));
-  context.region =
-      screenBox(bounds_, *view.viewing, *view.projection, viewport[2], viewport[3], 2 + spread);
+  // The shapes GL draws after the picture are not in the box; before them the picture's depth
+  // is written again (restoreDepth), wherever GL may have cleared it: the whole viewport.
+  context.region = scene_->untracedPaths().empty()
+                       ? screenBox(bounds_, *view.viewing, *view.projection, viewport[2],
+                                   viewport[3], 2 + spread)
+                       : std::array<int, 4>{0, 0, viewport[2], viewport[3]};
   context.frame.markTraced(context.region);
   context.reduced = reduced;
   if (reduced) {

@@ -104,9 +104,10 @@ class GroupTracer {
   // cannot draw a traced picture.
   Context* contextFor(SoState* state);
   // Reads what GL drew before the group over `view`'s viewport (where the picture, if traced
-  // for this view, may change it): true when its depth is the one the picture was traced at
-  // (context.depthTraced), else the depth is read into context.depthNow.
-  bool readWhatGlDrew(Context& context, const View& view);
+  // for this view and not to be reduced, `mayReduce`, may change it): true when its depth is
+  // the one the picture was traced at (context.depthTraced), else the depth is read into
+  // context.depthNow.
+  bool readWhatGlDrew(Context& context, const View& view, bool mayReduce);
   // Traces the picture for `view` and uploads it; false, with one warning, when GL cannot hold
   // it.
   bool tracePicture(Context& context, const View& view, const Motion& motion,

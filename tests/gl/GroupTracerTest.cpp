@@ -19,6 +19,7 @@
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCallback.h>
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoLight.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoOrthographicCamera.h>
@@ -34,6 +35,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -407,6 +409,111 @@ TEST(TracedGroup, ALineBehindATracedSurfaceStaysHiddenWhenACallbackAboveClearsTh
   }
   // Beside the square the line is drawn.
   EXPECT_EQ(int(image.pixel(middle + 80, middle)[0]), 255) << "no line beside the square";
+}
+
+// The untraced shapes lie outside the box of the traced triangles: the depth written again
+// before them (a callback above cleared it in their pass) is the whole viewport's, so a quad GL
+// drew before the group, in front of the line and beside the square, still hides the line.
+TEST(TracedGroup, AnUntracedLineBesideTheTrianglesStaysBehindWhatGlDrewBefore) {
+  SoSeparator* root = readIv(
+      "#Inventor V2.1 ascii\nSeparator {\n"
+      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+      "  LightModel { model BASE_COLOR }\n"
+      "  Separator { BaseColor { rgb 1 0 0 }\n"
+      "    Coordinate3 { point [ 0.6 -0.2 0.8, 1 -0.2 0.8, 1 0.2 0.8, 0.6 0.2 0.8 ] }\n"
+      "    FaceSet { numVertices 4 } }\n"
+      "  TransparentShadowGroup { renderer TRACER\n"
+      "    BaseColor { rgb 0 0 1 }\n"
+      "    Coordinate3 { point [ -0.5 -0.5 0.5, 0.5 -0.5 0.5, 0.5 0.5 0.5, -0.5 0.5 0.5 ] }\n"
+      "    FaceSet { numVertices 4 }\n"
+      "    BaseColor { rgb 1 1 0 }\n"
+      "    Coordinate3 { point [ -1 0 0, 1 0 0 ] }\n"
+      "    LineSet { numVertices 2 }\n"
+      "  }\n}\n");
+  auto* clear = new SoCallback;
+  clear->setCallback(
+      [](void*, SoAction* action) {
+        if (action->isOfType(SoGLRenderAction::getClassTypeId())) glClear(GL_DEPTH_BUFFER_BIT);
+      },
+      nullptr);
+  root->insertChild(clear, 0);
+  std::string error;
+  auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
+  ASSERT_TRUE(renderer) << error;
+  for (int frame = 0; frame < 3; ++frame) {
+    renderer->render(root);
+    const Image image = renderer->read();
+    // 100 pixels per unit: the red quad covers x 0.6 .. 1 (pixels 180 .. 220) in front of the
+    // line; the line shows at x = 0.55, between the square and the quad.
+    const int middle = ShadowScene::kSize / 2;
+    const std::uint8_t* front = image.pixel(middle + 80, middle);
+    EXPECT_EQ(int(front[1]), 0) << "the line shows through the quad, frame " << frame;
+    EXPECT_EQ(int(front[0]), 255) << "frame " << frame;
+    EXPECT_EQ(int(image.pixel(middle + 55, middle)[1]), 255) << "no line, frame " << frame;
+  }
+  root->unref();
+}
+
+// A light moved twice: the second trace is reduced (movingResolution) and stretched over a
+// wider box than the picture before it, so it must be traced at the depth GL holds now there,
+// not the one read for an earlier frame: a pixel a callback had brought to the front before,
+// and no longer does, is not given that depth back.
+TEST(TracedGroup, AReducedTraceAfterAMovedLightTakesTheDepthGlHoldsNow) {
+  SoSeparator* root = readIv(R"(#Inventor V2.1 ascii
+    OrthographicCamera { position 0 0 5 height 4 nearDistance 1 farDistance 9 }
+    TransparentShadowGroup {
+      renderer TRACER
+      movingResolution 0.5
+      DEF Sun DirectionalLight { direction -0.3 -0.5 -1 }
+      Sphere { radius 1.9 }
+    })");
+  // The sphere's box covers pixels 92 .. 548 across (120 a unit at 640 x 480, the centre at
+  // 320); the region of a full picture reaches 4 pixels beyond, of a reduced one 6: pixels 86
+  // and 87 lie between. Rows 239 .. 241 hold a reduced pixel's sample whatever its phase.
+  constexpr int kWidth = 640, kHeight = 480, kX = 86, kY = 239;
+  static bool poke = true;
+  auto* near = new SoCallback;
+  near->setCallback(
+      [](void*, SoAction* action) {
+        if (!poke || !action->isOfType(SoGLRenderAction::getClassTypeId())) return;
+        glPushAttrib(GL_SCISSOR_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(kX, kY, 2, 3);
+        glClearDepth(0.0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glPopAttrib();
+      },
+      nullptr);
+  root->insertChild(near, 0);
+  std::string error;
+  auto renderer = CheckedRenderer::create(kWidth, kHeight, error);
+  ASSERT_TRUE(renderer) << error;
+  const auto depthAt = [&] {
+    renderer->read();  // binds its framebuffer for reading
+    float depth[6] = {-1.0f, -1.0f, -1.0f, -1.0f, -1.0f, -1.0f};
+    glReadPixels(kX, kY, 2, 3, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+    return *std::min_element(std::begin(depth), std::end(depth));
+  };
+  renderer->render(root);
+  renderer->render(root);
+  EXPECT_EQ(depthAt(), 0.0f) << "the callback's depth";
+  poke = false;
+  renderer->render(root);
+  EXPECT_EQ(depthAt(), 1.0f) << "cleared, as GL drew it";
+  auto* sun = static_cast<SoDirectionalLight*>(SoNode::getByName("Sun"));
+  ASSERT_NE(sun, nullptr);
+  const DeepShadowStatistics before = collectDeepShadowStatistics(root);
+  sun->direction.setValue(0.3f, -0.5f, -1.0f);
+  renderer->render(root);
+  EXPECT_EQ(depthAt(), 1.0f) << "a full trace after the light moved";
+  sun->direction.setValue(0.0f, -0.5f, -1.0f);
+  renderer->render(root);
+  const DeepShadowStatistics after = collectDeepShadowStatistics(root);
+  EXPECT_EQ(after.tracerFrames, before.tracerFrames + 2);
+  EXPECT_EQ(after.tracerReduced, 1) << "the second trace is reduced";
+  EXPECT_EQ(depthAt(), 1.0f) << "the reduced trace after it";
+  poke = true;
+  root->unref();
 }
 
 // A setting that cannot act says so, once per light and field, and only the ones the user set:

@@ -2,6 +2,7 @@
 // the picture left is put back by one blit instead of compositing the picture again, and it is
 // the composite's picture to the bit, colour and depth; a change of what GL drew before the
 // group composites the picture again, without tracing it.
+#include "gl/KeptFrame.h"
 #include "ivshadow/DeepShadowStatistics.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/GlCallCounter.h"
@@ -257,6 +258,25 @@ TEST(KeptFrame, OnePixelChangedBeforeTheGroupWhereThePictureMayChangeCompositesA
   EXPECT_EQ(depthOf(*renderer)[std::size_t(300 * kPokeWidth + 600)], 0.0f);
   renderer.reset();
   root->unref();
+}
+
+// The depth kept as the one traced at belongs to the viewport it was read in: a later viewport
+// whose whole equals the region read before, over a depth of the same bytes (a cleared
+// buffer), is another picture's.
+TEST(KeptFrame, TheDepthTracedAtBelongsToItsViewport) {
+  std::string error;
+  auto renderer = CheckedRenderer::create(64, 64, error);
+  ASSERT_TRUE(renderer) << error;
+  KeptFrame frame;
+  renderer->render([&](SoGLRenderAction&) {
+    glClear(GL_DEPTH_BUFFER_BIT);
+    ASSERT_TRUE(frame.readBefore({0, 0, 64, 64}, {0, 0, 64, 64}));
+    frame.markTraced({0, 0, 32, 32});
+    ASSERT_TRUE(frame.readBefore({0, 0, 64, 64}, {0, 0, 32, 32}));
+    EXPECT_TRUE(frame.depthAsTraced()) << "the same viewport, region and depth";
+    ASSERT_TRUE(frame.readBefore({0, 0, 32, 32}, {0, 0, 32, 32}));
+    EXPECT_FALSE(frame.depthAsTraced()) << "another viewport";
+  });
 }
 
 }  // namespace
