@@ -4,6 +4,7 @@
 // group composites the picture again, without tracing it.
 #include "gl/KeptFrame.h"
 #include "ivshadow/DeepShadowStatistics.h"
+#include "ivshadow/IvShadowInit.h"
 #include "tests/gl/CheckedRenderer.h"
 #include "tests/gl/GlCallCounter.h"
 #include "tests/gl/ShadowScene.h"
@@ -264,6 +265,7 @@ TEST(KeptFrame, OnePixelChangedBeforeTheGroupWhereThePictureMayChangeCompositesA
 // whose whole equals the region read before, over a depth of the same bytes (a cleared
 // buffer), is another picture's.
 TEST(KeptFrame, TheDepthTracedAtBelongsToItsViewport) {
+  init();  // Coin, before a renderer is made (the other tests read a scene first)
   std::string error;
   auto renderer = CheckedRenderer::create(64, 64, error);
   ASSERT_TRUE(renderer) << error;
