@@ -370,16 +370,17 @@ TEST(TracedGroup, TheRendererInUseIsTheOneThatDrewTheLastFrame) {
   root->unref();
 }
 
-// The shapes the tracer leaves to GL are drawn by a second render action, which traverses the
-// state nodes above the group again: an application's callback there that clears the depth
-// buffer (FreeCAD's saveImage clears it after its background) must not let a line behind the
-// traced square show through it.
-TEST(TracedGroup, ALineBehindATracedSurfaceStaysHiddenWhenACallbackAboveClearsTheDepth) {
+// A traced blue square (x, y in -0.5 .. 0.5, z 0.5) and an untraced yellow line (y = 0 from
+// x = -1 to 1, z 0), unlit, seen 2.4 units high; `before` is drawn by GL before the group; a
+// callback first in the root clears the depth buffer in every pass, as FreeCAD's saveImage
+// does after its background.
+SoSeparator* squareAndLineAfterADepthClear(const std::string& before) {
   SoSeparator* root = readIv(
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
+      "  LightModel { model BASE_COLOR }\n" +
+      before +
       "  TransparentShadowGroup { renderer TRACER\n"
-      "    LightModel { model BASE_COLOR }\n"
       "    BaseColor { rgb 0 0 1 }\n"
       "    Coordinate3 { point [ -0.5 -0.5 0.5, 0.5 -0.5 0.5, 0.5 0.5 0.5, -0.5 0.5 0.5 ] }\n"
       "    FaceSet { numVertices 4 }\n"
@@ -394,6 +395,15 @@ TEST(TracedGroup, ALineBehindATracedSurfaceStaysHiddenWhenACallbackAboveClearsTh
       },
       nullptr);
   root->insertChild(clear, 0);
+  return root;
+}
+
+// The shapes the tracer leaves to GL are drawn by a second render action, which traverses the
+// state nodes above the group again: an application's callback there that clears the depth
+// buffer (FreeCAD's saveImage clears it after its background) must not let a line behind the
+// traced square show through it.
+TEST(TracedGroup, ALineBehindATracedSurfaceStaysHiddenWhenACallbackAboveClearsTheDepth) {
+  SoSeparator* root = squareAndLineAfterADepthClear("");
   std::string error;
   auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;
@@ -415,28 +425,10 @@ TEST(TracedGroup, ALineBehindATracedSurfaceStaysHiddenWhenACallbackAboveClearsTh
 // before them (a callback above cleared it in their pass) is the whole viewport's, so a quad GL
 // drew before the group, in front of the line and beside the square, still hides the line.
 TEST(TracedGroup, AnUntracedLineBesideTheTrianglesStaysBehindWhatGlDrewBefore) {
-  SoSeparator* root = readIv(
-      "#Inventor V2.1 ascii\nSeparator {\n"
-      "  OrthographicCamera { position 0 0 5 nearDistance 1 farDistance 10 height 2.4 }\n"
-      "  LightModel { model BASE_COLOR }\n"
+  SoSeparator* root = squareAndLineAfterADepthClear(
       "  Separator { BaseColor { rgb 1 0 0 }\n"
       "    Coordinate3 { point [ 0.6 -0.2 0.8, 1 -0.2 0.8, 1 0.2 0.8, 0.6 0.2 0.8 ] }\n"
-      "    FaceSet { numVertices 4 } }\n"
-      "  TransparentShadowGroup { renderer TRACER\n"
-      "    BaseColor { rgb 0 0 1 }\n"
-      "    Coordinate3 { point [ -0.5 -0.5 0.5, 0.5 -0.5 0.5, 0.5 0.5 0.5, -0.5 0.5 0.5 ] }\n"
-      "    FaceSet { numVertices 4 }\n"
-      "    BaseColor { rgb 1 1 0 }\n"
-      "    Coordinate3 { point [ -1 0 0, 1 0 0 ] }\n"
-      "    LineSet { numVertices 2 }\n"
-      "  }\n}\n");
-  auto* clear = new SoCallback;
-  clear->setCallback(
-      [](void*, SoAction* action) {
-        if (action->isOfType(SoGLRenderAction::getClassTypeId())) glClear(GL_DEPTH_BUFFER_BIT);
-      },
-      nullptr);
-  root->insertChild(clear, 0);
+      "    FaceSet { numVertices 4 } }\n");
   std::string error;
   auto renderer = CheckedRenderer::create(ShadowScene::kSize, ShadowScene::kSize, error);
   ASSERT_TRUE(renderer) << error;

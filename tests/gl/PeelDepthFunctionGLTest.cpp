@@ -11,6 +11,7 @@
 #include "ivshadow/SoPeelingSeparator.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/CoinRef.h"
+#include "tests/gl/FreeCadViewRoot.h"
 #include "tests/gl/GlContextTest.h"
 
 #include <epoxy/gl.h>
@@ -22,7 +23,6 @@
 #include <Inventor/nodes/SoFaceSet.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoMaterial.h>
-#include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <array>
@@ -116,19 +116,7 @@ class PeelDepthFunctionCaseGLTest : public PeelDepthFunctionGLTest,
 
 TEST_P(PeelDepthFunctionCaseGLTest, GlDepthStateAfterThePeelingIsTheOneBefore) {
   const Peeler peeler = GetParam();
-  CoinRef<SoSeparator> root(new SoSeparator);
-  auto* camera = new SoOrthographicCamera;
-  camera->position.setValue(0, 0, 5);
-  camera->height = 2;
-  root->addChild(camera);
-  // As FreeCAD's view: GL_LESS set in GL, Coin's depth element left at its LEQUAL.
-  auto* lessDepth = new SoCallback;
-  lessDepth->setCallback(
-      [](void*, SoAction* action) {
-        if (action->isOfType(SoGLRenderAction::getClassTypeId())) glDepthFunc(GL_LESS);
-      },
-      nullptr);
-  root->addChild(lessDepth);
+  CoinRef<SoSeparator> root = freeCadViewRoot();
   SoGroup* peeling = peelingNode(peeler);
   addPeeledChildren(peeling);
   root->addChild(peeling);

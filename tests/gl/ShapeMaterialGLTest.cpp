@@ -15,6 +15,7 @@
 #include "ivshadow/SoDeepShadowLight.h"
 #include "ivshadow/SoTransparentShadowGroup.h"
 #include "scene/CoinRef.h"
+#include "tests/gl/FreeCadViewRoot.h"
 #include "tests/gl/GlContextTest.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -25,7 +26,6 @@
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoMaterial.h>
-#include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
@@ -86,19 +86,7 @@ SoCallback* selectedFaceShape(Faces& faces) {
 // A 2 x 2 view of two grey faces side by side, lit by a deep shadow light of `method` above
 // them, in a group drawing by GL.
 CoinRef<SoSeparator> scene(Pattern pattern, const char* method, Faces& faces) {
-  CoinRef<SoSeparator> root(new SoSeparator);
-  auto* camera = new SoOrthographicCamera;
-  camera->position.setValue(0, 0, 5);
-  camera->height = 2;
-  root->addChild(camera);
-  // FreeCAD's view sets GL_LESS itself, not through Coin's depth element.
-  auto* lessDepth = new SoCallback;
-  lessDepth->setCallback(
-      [](void*, SoAction* action) {
-        if (action->isOfType(SoGLRenderAction::getClassTypeId())) glDepthFunc(GL_LESS);
-      },
-      nullptr);
-  root->addChild(lessDepth);
+  CoinRef<SoSeparator> root = freeCadViewRoot();
   auto* group = new SoTransparentShadowGroup;
   group->renderer = SoTransparentShadowGroup::RASTER;
   auto* light = new SoDeepShadowLight;
@@ -109,8 +97,8 @@ CoinRef<SoSeparator> scene(Pattern pattern, const char* method, Faces& faces) {
   material->diffuseColor.setValue(0.5f, 0.5f, 0.5f);
   group->addChild(material);
   auto* coordinates = new SoCoordinate3;
-  const SbVec3f points[] = {{-1, -1, 0},      {0, -1, 0},      {0, 1, 0},       {-1, 1, 0},
-                            {0, -1, 0},       {1, -1, 0},      {1, 1, 0},       {0, 1, 0},
+  const SbVec3f points[] = {{-1, -1, 0},      {0, -1, 0},          {0, 1, 0},        {-1, 1, 0},
+                            {0, -1, 0},       {1, -1, 0},          {1, 1, 0},        {0, 1, 0},
                             {-1, 0.9f, 0.1f}, {-0.9f, 0.9f, 0.1f}, {-0.9f, 1, 0.1f}, {-1, 1, 0.1f}};
   coordinates->point.setValues(0, 12, points);
   group->addChild(coordinates);
