@@ -92,6 +92,12 @@ def bundled_rows(m):
              verdict(worst, 1.5))]
 
 
+def timed_error(m, kind, depth):
+    # The frames timed: a reduced frame's error is its own, not the refined one's.
+    counters = m.counters[f"Peel/{kind}/{depth}"]
+    return counters.get("moving_max_error", counters["max_error"])
+
+
 def peel_rows(m):
     # Peel/<kind>/<depth>: 1 SORTED_LAYERS_BLEND with as many passes as layers, 10 with Coin's
     # default 4 passes (the baseline: "4-pass"), 4 PeelingSeparator FRAGMENT_LISTS, 5
@@ -115,11 +121,7 @@ def peel_rows(m):
                 if r <= 1.0:
                     met.append(str(depth))
             against[baseline] = (cells, met)
-        worst = 0.0
-        for depth in depths:
-            counters = m.counters[f"Peel/{kind}/{depth}"]
-            # The frames timed: a reduced frame's error is its own, not the refined one's.
-            worst = max(worst, counters.get("moving_max_error", counters["max_error"]))
+        worst = max(timed_error(m, kind, depth) for depth in depths)
         # One 8-bit step is rounding (the exact CPU compositing is rounded once, the picture
         # once more); the medians of 3 add float noise below that.
         exact = worst <= 1.0 + 1e-6
@@ -152,8 +154,7 @@ def moving_rows(m):
             r = ratio(m[f"Peel/{kind}/{depth}"], m[f"Peel/10/{depth}"])
             ratios.append(f"{depth}: {r:.2f}x")
             worst_ratio = max(worst_ratio, r)
-            counters = m.counters[f"Peel/{kind}/{depth}"]
-            worst_error = max(worst_error, counters.get("moving_max_error", counters["max_error"]))
+            worst_error = max(worst_error, timed_error(m, kind, depth))
         cells.append(f"{label} " + ", ".join(ratios))
     # One 8-bit step is rounding, as in peel_rows.
     exact = worst_error <= 1.0 + 1e-6
